@@ -1,0 +1,35 @@
+# Helpers shared by every folder's CMakeLists.txt.
+
+# The project's own code builds with -Wall -Wextra -Werror (third-party headers come in as SYSTEM).
+function(lungar_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Werror)
+endfunction()
+
+if(LUNGAR_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# lungar_library(NAME FOLDER DEPS...): one static library from every .cpp under FOLDER,
+# except *_main.cpp (tool entry points) and *_fuzz.cpp (fuzz targets).
+function(lungar_library name folder)
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${folder}/*.cpp)
+  list(FILTER sources EXCLUDE REGEX ".*_(main|fuzz)\\.cpp$")
+  if(sources)
+    add_library(${name} STATIC ${sources})
+    target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/generated)
+    target_link_libraries(${name} PUBLIC ${ARGN})
+    lungar_warnings(${name})
+  else()  # a folder whose code has not landed yet: headers only
+    add_library(${name} INTERFACE)
+    target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/generated)
+    target_link_libraries(${name} INTERFACE ${ARGN})
+  endif()
+endfunction()
+
+# lungar_executable(NAME MAIN DEPS...): a command-line tool.
+function(lungar_executable name main)
+  add_executable(${name} ${main})
+  target_link_libraries(${name} PRIVATE ${ARGN})
+  lungar_warnings(${name})
+endfunction()

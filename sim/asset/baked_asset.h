@@ -1,0 +1,66 @@
+/// @file baked_asset.h
+/// @brief The in-memory form of a `.lungbake` asset: what `lungar-bake` produces and the runtime draws.
+///
+/// All lungs share one vertex array; each lung owns a contiguous range of it. Per vertex the asset holds the
+/// rest position, the outward unit normal, the lung it belongs to, and the SH coefficients of its transfer-matrix
+/// row, T^I_lm = sum_J T(I,J) A_J Y_lm(u_J) (DESIGN.md, eq. 7), in mm per (unit force SH) — the vertex shader
+/// computes D = dV * sum_lm T^I_lm f_lm and moves the vertex along its normal.
+///
+/// Vertices are stored in level-of-detail order: every prefix of a lung's range is an even subsample of its
+/// surface (render/ draws prefixes).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lungar::sim {
+
+/// Orientation angles of the paper's eq. (8)-(9): pi/2, pi, 3pi/2, 2pi about each of X, Y, Z.
+inline constexpr int kPaperAxes = 3;
+inline constexpr int kPaperAngles = 4;
+
+/// One lung of the asset.
+struct BakedLung {
+  std::string name;                      ///< "left" or "right" (LPS: +x is the patient's left)
+  std::array<float, 3> centre{};         ///< c, the SH centre, mm in the lung frame
+  std::uint32_t first_vertex = 0;        ///< range in BakedAsset's vertex arrays
+  std::uint32_t vertex_count = 0;
+  std::uint32_t first_index = 0;         ///< range in BakedAsset::triangles (3 indices a triangle)
+  std::uint32_t index_count = 0;
+  double rest_volume_ml = 0;             ///< enclosed volume at rest
+
+  /// Exact orientation mode (DESIGN.md): unnormalised force SH f(g) = p0 f0 + gamma sum_k g_k f_k, and the swept
+  /// volume of the displacement it produces, V(g) = p0 v0 + gamma g.v (mm^3); the runtime force is f(g) * 1000/V(g),
+  /// so that the displacement is in mm per mL of volume change.
+  std::vector<float> force_const;                 ///< f0, L^2 values
+  std::array<std::vector<float>, 3> force_grad;   ///< f_x, f_y, f_z, L^2 values each
+  double volume_const = 0;                        ///< v0
+  std::array<double, 3> volume_grad{};            ///< v
+
+  /// The paper's eq. (8)-(9): normalised force SH at rotations pi/2, pi, 3pi/2, 2pi about X, Y and Z of the
+  /// upright patient; index [axis * kPaperAngles + angle][lm].
+  std::vector<std::vector<float>> paper_force;
+};
+
+/// The whole asset.
+struct BakedAsset {
+  std::uint32_t bands = 4;               ///< L; the SH has L^2 coefficients per vertex
+  double p0 = 10.0;                      ///< force model p = p0 + gamma g.(x - c)
+  double gamma_per_mm = 0.025;
+  double decay_length_mm = 10.0;         ///< tether length l in the stiffness
+  std::vector<float> positions;          ///< 3 per vertex, mm, lung frame (LPS)
+  std::vector<float> normals;            ///< 3 per vertex, outward unit
+  std::vector<float> areas;              ///< 1 per vertex, mm^2 (a third of its triangles)
+  std::vector<std::uint8_t> lung_of_vertex;  ///< index into lungs
+  std::vector<float> sh_coeffs;          ///< L^2 per vertex: T^I_lm
+  std::vector<float> linear_coeffs;      ///< 4 per vertex: tau0, tau_x, tau_y, tau_z (exact linear basis)
+  std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
+  std::vector<BakedLung> lungs;
+
+  std::uint32_t coefficients() const { return bands * bands; }
+  std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(lung_of_vertex.size()); }
+};
+
+}  // namespace lungar::sim

@@ -1,0 +1,142 @@
+/// @file fiducial_registration.cpp
+/// @brief Umeyama rigid registration, stylus dwell detection and the fiducial file formats.
+#include "platform/registration/fiducial_registration.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+namespace lungar::platform {
+
+bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::vector<Eigen::Vector3d>& tracked,
+                        Registration& out, std::string& error) {
+  if (model.size() != tracked.size()) {
+    error = "fiducials: expected as many tracked points as model points, got " + std::to_string(tracked.size()) +
+            " tracked and " + std::to_string(model.size()) + " model points";
+    return false;
+  }
+  const auto n = static_cast<Eigen::Index>(model.size());
+  if (n < 3) {
+    error = "fiducials: expected at least 3 point pairs, got " + std::to_string(n);
+    return false;
+  }
+  Eigen::Matrix3Xd src(3, n), dst(3, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    src.col(k) = model[static_cast<std::size_t>(k)];
+    dst.col(k) = tracked[static_cast<std::size_t>(k)];
+  }
+  // Collinear (or coincident) model points leave the rotation about their line undetermined.
+  const Eigen::Matrix3Xd centred = src.colwise() - src.rowwise().mean();
+  const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred);
+  const Eigen::Vector3d sv = svd.singularValues();
+  if (sv(1) < 1e-6 * std::max(1.0, sv(0))) {
+    error = "fiducials: expected model points spanning a plane, got collinear points";
+    return false;
+  }
+  const Eigen::Matrix4d T = Eigen::umeyama(src, dst, false);
+  const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
+  out.rotation = Eigen::Quaterniond(R).normalized();
+  out.translation_mm = T.topRightCorner<3, 1>();
+  double sum2 = 0, worst = 0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const double e = (R * src.col(k) + out.translation_mm - dst.col(k)).norm();
+    sum2 += e * e;
+    worst = std::max(worst, e);
+  }
+  out.fre_rms_mm = std::sqrt(sum2 / static_cast<double>(n));
+  out.fre_max_mm = worst;
+  out.fiducials = static_cast<int>(n);
+  return true;
+}
+
+std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm,
+                                               double dwell_s) {
+  std::vector<Eigen::Vector3d> points;
+  std::size_t start = 0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  auto close_run = [&](std::size_t end) {  // samples [start, end) form a run
+    if (end > start && samples[end - 1].t_s - samples[start].t_s >= dwell_s) {
+      points.push_back(sum / static_cast<double>(end - start));
+    }
+  };
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (k > start) {
+      const Eigen::Vector3d mean = sum / static_cast<double>(k - start);
+      if ((samples[k].position_mm - mean).norm() > radius_mm) {
+        close_run(k);
+        start = k;
+        sum.setZero();
+      }
+    }
+    sum += samples[k].position_mm;
+  }
+  close_run(samples.size());
+  return points;
+}
+
+bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out, std::string& error) {
+  std::ifstream in(path);
+  if (!in) {
+    error = path + ": cannot open: expected a CSV of fiducial points (x, y, z in mm per line)";
+    return false;
+  }
+  out.clear();
+  std::string line;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    for (char& c : line) {
+      if (c == ',') c = ' ';
+    }
+    std::istringstream fields(line);
+    Eigen::Vector3d p;
+    std::string extra;
+    if (!(fields >> p.x() >> p.y() >> p.z()) || (fields >> extra) || !p.allFinite()) {
+      error = path + ":" + std::to_string(line_no) + ": expected three finite numbers x, y, z (mm), got '" + line + "'";
+      return false;
+    }
+    out.push_back(p);
+  }
+  return true;
+}
+
+bool write_registration_toml(const std::string& path, const Registration& r, std::string& error) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream o(tmp, std::ios::trunc);
+    if (!o) {
+      error = path + ": cannot write the registration";
+      return false;
+    }
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n"
+                  "[registration]\n"
+                  "translation_mm = [%.6f, %.6f, %.6f]\n"
+                  "rotation_wxyz = [%.9f, %.9f, %.9f, %.9f]\n",
+                  r.fiducials, r.fre_rms_mm, r.fre_max_mm, r.translation_mm.x(), r.translation_mm.y(),
+                  r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z());
+    o << buf;
+    o.flush();
+    if (!o) {
+      error = path + ": write failed";
+      std::filesystem::remove(tmp);
+      return false;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    error = path + ": cannot rename the temporary file: " + ec.message();
+    std::filesystem::remove(tmp);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,46 @@
+/// @file fiducial_registration.h
+/// @brief Registration of the lung model onto the patient simulator from paired fiducials (Umeyama's method).
+///
+/// The trainer touches known landmarks of the simulator with a tracked stylus; the same landmarks are known in
+/// the lung model's frame. The rigid transform model -> patient tracker that best maps one set onto the other
+/// (least squares, no scale) is the registration; its RMS residual is the fiducial registration error (FRE).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+namespace lungar::platform {
+
+struct Registration {
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< model -> patient tracker
+  Eigen::Vector3d translation_mm = Eigen::Vector3d::Zero();
+  double fre_rms_mm = 0;      ///< RMS fiducial registration error
+  double fre_max_mm = 0;      ///< the worst fiducial's error
+  int fiducials = 0;
+
+  Eigen::Vector3d apply(const Eigen::Vector3d& model_point) const { return rotation * model_point + translation_mm; }
+};
+
+/// Rigid least-squares fit of `model` onto `tracked` (row k pairs with row k). Needs at least 3 points that are not
+/// collinear; `error` says why otherwise.
+bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::vector<Eigen::Vector3d>& tracked,
+                        Registration& out, std::string& error);
+
+/// Stylus samples -> fiducial touches: each run of samples that stays within `radius_mm` of its running mean for at
+/// least `dwell_s` seconds is one touch, reported as the mean position, in time order.
+struct StylusSample {
+  double t_s = 0;
+  Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();
+};
+std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm = 1.5,
+                                               double dwell_s = 0.5);
+
+/// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed. `error` names file, line and field.
+bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out, std::string& error);
+
+/// Writes the registration as the [registration] section of a lungar config, via a temporary file and rename.
+bool write_registration_toml(const std::string& path, const Registration& r, std::string& error);
+
+}  // namespace lungar::platform

@@ -38,6 +38,19 @@ const char* to_string(TrackerSource v) {
 }
 const char* to_string(OrientationMode v) { return v == OrientationMode::Exact ? "exact" : "paper_interp"; }
 
+const char* to_string(FieldType v) {
+  switch (v) {
+    case FieldType::I16: return "i16";
+    case FieldType::I32: return "i32";
+    case FieldType::F32: return "f32";
+    case FieldType::Fixed16: return "fixed16";
+    case FieldType::Fixed32: return "fixed32";
+  }
+  return "?";
+}
+const char* to_string(Endian v) { return v == Endian::Little ? "little" : "big"; }
+const char* to_string(OrientationKind v) { return v == OrientationKind::Quaternion ? "quaternion" : "euler"; }
+
 std::string summarize(const Settings& s) {
   std::ostringstream o;
   o << "config " << s.source << ": output " << to_string(s.display.output) << ", view " << to_string(s.hmd.view)

@@ -7,7 +7,10 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace lungar::config {
 
@@ -83,17 +86,67 @@ struct HidSettings {
   std::uint16_t product_id = 0;  ///< 0: any
   std::string serial;
   std::string path;              ///< hidraw path; wins over ids when set
+  double read_timeout_ms = 10.0; ///< hid_read_timeout's wait, so the thread notices stop and staleness
+};
+
+/// How one number is stored in a report.
+enum class FieldType { I16, I32, F32, Fixed16, Fixed32 };
+enum class Endian { Little, Big };
+/// How a sensor's orientation is sent: a quaternion, or three Euler (Tait-Bryan) angles.
+enum class OrientationKind { Quaternion, Euler };
+
+/// One sensor inside a report; the role it feeds is the key it sits under ([trackers.head], ...).
+struct SensorSettings {
+  bool enabled = false;
+  int station = 0;  ///< value of the station byte that selects this sensor (station mode only)
+  int offset = 0;   ///< byte offset of this sensor's block (position, orientation) in the report
+};
+
+/// The byte layout of one HID input report. Offsets are bytes from the start of what hid_read returns
+/// (the report id byte included when report_id >= 0); field offsets are relative to the sensor block.
+struct ReportSettings {
+  int report_id = 1;       ///< first byte of every report; -1: the device does not number its reports
+  int length = 32;         ///< bytes per report, the id byte included
+  Endian endian = Endian::Little;
+  int station_offset = 1;  ///< byte that names the sensor; -1: every sensor at its fixed offset in each report
+  int time_offset = 2;     ///< device timestamp; -1: none (arrival time stands in)
+  int time_bits = 32;      ///< unsigned 16 or 32 bits, wraps around
+  double time_tick_us = 1.0;  ///< microseconds per timestamp tick
+  int position_offset = 0;
+  FieldType position_type = FieldType::I32;
+  int position_frac_bits = 0;    ///< fixed-point types: fractional bits
+  double position_scale = 0.01;  ///< mm per unit (after the fixed-point division)
+  std::string position_components = "x,y,z";  ///< what the device sends, in order, with its signs
+  OrientationKind orientation = OrientationKind::Quaternion;
+  int orientation_offset = 12;
+  FieldType orientation_type = FieldType::Fixed16;
+  int orientation_frac_bits = 14;
+  double orientation_scale = 1.0;  ///< quaternion units, or degrees for Euler angles, per unit
+  std::string orientation_components = "w,x,y,z";  ///< quaternion components or Euler axes, in sent order
+  std::string euler_sequence = "zyx";  ///< intrinsic Tait-Bryan order: "zyx" is R = Rz(a) Ry(b) Rx(c)
 };
 
 struct TrackerSettings {
   TrackerSource source = TrackerSource::Mock;
   std::string mock_trajectory = "upright_to_supine";  ///< static | upright_to_supine | head_orbit
   double mock_rate_hz = 62.5;
+  double mock_noise_mm = 0.0;       ///< Gaussian position noise of the mock, mm (1 sigma)
+  double mock_dropout = 0.0;        ///< probability that the mock drops a report
   std::string replay_file;
   bool replay_realtime = true;
+  bool replay_loop = false;         ///< start the log again at its end
   double stale_ms = 100.0;        ///< a pose older than this is marked stale
   double reopen_backoff_ms = 250.0;
+  double quat_norm_tolerance = 0.05;  ///< a decoded quaternion's |norm - 1| above this is malformed
+  std::array<double, 3> workspace_min_mm = {-3000.0, -3000.0, -3000.0};  ///< world frame
+  std::array<double, 3> workspace_max_mm = {3000.0, 3000.0, 3000.0};
+  std::string axis_remap = "x,y,z";  ///< world axes in terms of the tracker's: "x,-z,y" is world y = -tracker z
+  std::array<double, 3> world_offset_mm = {0.0, 0.0, 0.0};  ///< tracker origin in the world, mm
   HidSettings hid;
+  ReportSettings report;
+  SensorSettings head{true, 1, 6};
+  SensorSettings patient{true, 2, 6};
+  SensorSettings stylus{false, 3, 6};
 };
 
 struct RegistrationSettings {
@@ -118,6 +171,16 @@ struct Settings {
   std::string source = "<defaults>";
 };
 
+/// One entry of a component list such as "w,-x,-y,-z": the index of its letter in the alphabet given to
+/// parse_signed_axes() and its sign (+1 or -1).
+struct SignedAxis {
+  int index = 0;
+  int sign = 1;
+};
+/// Parses a comma-separated permutation of `letters` ("x,-z,y" over "xyz"), each letter once, optionally
+/// preceded by '-'; nullopt when the text is not such a permutation.
+std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, std::string_view letters);
+
 const char* to_string(Output);
 const char* to_string(View);
 const char* to_string(RenderMode);
@@ -125,5 +188,8 @@ const char* to_string(Deform);
 const char* to_string(StereoStrategy);
 const char* to_string(TrackerSource);
 const char* to_string(OrientationMode);
+const char* to_string(FieldType);
+const char* to_string(Endian);
+const char* to_string(OrientationKind);
 
 }  // namespace lungar::config

@@ -2,6 +2,7 @@
 /// @brief The schema of lungar's TOML config: which keys exist, their types, ranges and units.
 #include "config/settings_load.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -76,21 +77,151 @@ void read_breathing(TomlSection s, BreathingSettings& b) {
   s.finish();
 }
 
+std::size_t field_bytes(FieldType t) { return (t == FieldType::I16 || t == FieldType::Fixed16) ? 2 : 4; }
+
+void read_field_type(TomlSection& s, const std::string& key, FieldType& out) {
+  s.choice(key, out,
+           {{"i16", FieldType::I16}, {"i32", FieldType::I32}, {"f32", FieldType::F32},
+            {"fixed16", FieldType::Fixed16}, {"fixed32", FieldType::Fixed32}});
+}
+
+void read_frac_bits(TomlSection& s, const std::string& key, int& out, FieldType type) {
+  s.integer(key, out, 0, 31, "bits");
+  const int max = type == FieldType::Fixed16 ? 15 : type == FieldType::Fixed32 ? 31 : 0;
+  if (out > max) {
+    s.fail(key, "expected at most " + std::to_string(max) + " fractional bits for a " + to_string(type) +
+                    " field, got " + std::to_string(out));
+  }
+}
+
+void read_axes(TomlSection& s, const std::string& key, std::string& out, std::string_view letters,
+               const std::string& example) {
+  s.text(key, out);
+  if (!parse_signed_axes(out, letters)) {
+    s.fail(key, "expected each of " + std::string(letters) + " once, comma-separated, each optionally negated (e.g. \"" +
+                    example + "\"), got \"" + out + "\"");
+  }
+}
+
+void read_report(TomlSection s, ReportSettings& r) {
+  s.integer("report_id", r.report_id, -1, 255, "(-1: unnumbered reports)");
+  s.integer("length", r.length, 1, 1024, "bytes");
+  s.choice("endian", r.endian, {{"little", Endian::Little}, {"big", Endian::Big}});
+  s.integer("station_offset", r.station_offset, -1, 1023, "bytes (-1: no station byte)");
+  s.integer("time_offset", r.time_offset, -1, 1023, "bytes (-1: no device time)");
+  s.integer("time_bits", r.time_bits, 16, 32, "bits");
+  if (r.time_bits != 16 && r.time_bits != 32) {
+    s.fail("time_bits", "expected 16 or 32, got " + std::to_string(r.time_bits));
+  }
+  s.number("time_tick_us", r.time_tick_us, 1e-3, 1e6, "us");
+  s.integer("position_offset", r.position_offset, 0, 1023, "bytes");
+  read_field_type(s, "position_type", r.position_type);
+  read_frac_bits(s, "position_frac_bits", r.position_frac_bits, r.position_type);
+  s.number("position_scale", r.position_scale, -1e6, 1e6, "mm per unit");
+  if (r.position_scale == 0.0) s.fail("position_scale", "expected a non-zero scale, got 0");
+  read_axes(s, "position_components", r.position_components, "xyz", "x,-z,y");
+  s.choice("orientation", r.orientation,
+           {{"quaternion", OrientationKind::Quaternion}, {"euler", OrientationKind::Euler}});
+  s.integer("orientation_offset", r.orientation_offset, 0, 1023, "bytes");
+  read_field_type(s, "orientation_type", r.orientation_type);
+  read_frac_bits(s, "orientation_frac_bits", r.orientation_frac_bits, r.orientation_type);
+  s.number("orientation_scale", r.orientation_scale, -1e6, 1e6, "per unit");
+  if (r.orientation_scale == 0.0) s.fail("orientation_scale", "expected a non-zero scale, got 0");
+  if (r.orientation == OrientationKind::Quaternion) {
+    read_axes(s, "orientation_components", r.orientation_components, "wxyz", "x,y,z,w");
+  } else {
+    // Keep the default quaternion list from tripping the Euler check when only `orientation` changed.
+    if (r.orientation_components == ReportSettings{}.orientation_components) r.orientation_components = "z,y,x";
+    read_axes(s, "orientation_components", r.orientation_components, "xyz", "z,y,x");
+  }
+  s.text("euler_sequence", r.euler_sequence);
+  if (r.euler_sequence.size() != 3 || !parse_signed_axes(std::string{r.euler_sequence[0], ',', r.euler_sequence[1], ',',
+                                                                     r.euler_sequence[2]},
+                                                         "xyz")) {
+    s.fail("euler_sequence", "expected three distinct axes among x, y, z (e.g. \"zyx\"), got \"" + r.euler_sequence + "\"");
+  }
+  const int first = r.report_id >= 0 ? 1 : 0;  // byte 0 is the report id when reports are numbered
+  auto inside = [&](const std::string& key, int offset, std::size_t bytes) {
+    if (offset < first || offset + static_cast<int>(bytes) > r.length) {
+      s.fail(key, "expected " + std::to_string(bytes) + " byte(s) at offset " + std::to_string(offset) +
+                      " to lie within the report (bytes " + std::to_string(first) + " to " +
+                      std::to_string(r.length - 1) + ")");
+    }
+  };
+  if (r.station_offset >= 0) inside("station_offset", r.station_offset, 1);
+  if (r.time_offset >= 0) inside("time_offset", r.time_offset, static_cast<std::size_t>(r.time_bits / 8));
+  s.finish();
+}
+
+void read_sensor(TomlSection s, SensorSettings& d) {
+  s.boolean("enabled", d.enabled);
+  s.integer("station", d.station, 0, 255, "(station byte value)");
+  s.integer("offset", d.offset, 0, 1023, "bytes");
+  s.finish();
+}
+
 void read_trackers(TomlSection s, TrackerSettings& t) {
   s.choice("source", t.source,
            {{"mock", TrackerSource::Mock}, {"hid", TrackerSource::Hid}, {"replay", TrackerSource::Replay}});
   s.choice("mock_trajectory", t.mock_trajectory, {"static", "upright_to_supine", "head_orbit"});
   s.number("mock_rate_hz", t.mock_rate_hz, 1.0, 2000.0, "Hz");
+  s.number("mock_noise_mm", t.mock_noise_mm, 0.0, 100.0, "mm");
+  s.number("mock_dropout", t.mock_dropout, 0.0, 1.0, "(probability)");
   s.text("replay_file", t.replay_file);
   s.boolean("replay_realtime", t.replay_realtime);
+  s.boolean("replay_loop", t.replay_loop);
   s.number("stale_ms", t.stale_ms, 1.0, 10000.0, "ms");
   s.number("reopen_backoff_ms", t.reopen_backoff_ms, 1.0, 60000.0, "ms");
+  s.number("quat_norm_tolerance", t.quat_norm_tolerance, 1e-6, 0.5, "");
+  s.numbers("workspace_min_mm", t.workspace_min_mm, -1e5, 1e5, "mm");
+  s.numbers("workspace_max_mm", t.workspace_max_mm, -1e5, 1e5, "mm");
+  for (int k = 0; k < 3; ++k) {
+    if (!(t.workspace_min_mm[k] < t.workspace_max_mm[k])) {
+      s.fail("workspace_max_mm", "expected every component above workspace_min_mm's, got " +
+                                     std::to_string(t.workspace_max_mm[k]) + " <= " +
+                                     std::to_string(t.workspace_min_mm[k]) + " at index " + std::to_string(k));
+    }
+  }
+  read_axes(s, "axis_remap", t.axis_remap, "xyz", "x,-z,y");
+  s.numbers("world_offset_mm", t.world_offset_mm, -1e5, 1e5, "mm");
   TomlSection hid = s.section("hid");
   hid.integer("vendor_id", t.hid.vendor_id);
   hid.integer("product_id", t.hid.product_id);
   hid.text("serial", t.hid.serial);
   hid.text("path", t.hid.path);
+  hid.number("read_timeout_ms", t.hid.read_timeout_ms, 1.0, 1000.0, "ms");
   hid.finish();
+  read_report(s.section("report"), t.report);
+  const std::pair<const char*, SensorSettings*> sensors[] = {
+      {"head", &t.head}, {"patient", &t.patient}, {"stylus", &t.stylus}};
+  for (const auto& [name, sensor] : sensors) {
+    TomlSection sec = s.section(name);
+    read_sensor(sec, *sensor);
+    if (!sensor->enabled) continue;
+    const ReportSettings& r = t.report;
+    const int first = r.report_id >= 0 ? 1 : 0;
+    const int quat_n = r.orientation == OrientationKind::Quaternion ? 4 : 3;
+    const int end_pos = sensor->offset + r.position_offset + 3 * static_cast<int>(field_bytes(r.position_type));
+    const int end_rot =
+        sensor->offset + r.orientation_offset + quat_n * static_cast<int>(field_bytes(r.orientation_type));
+    if (sensor->offset < first || std::max(end_pos, end_rot) > r.length) {
+      sec.fail("offset", "expected the sensor's fields (bytes " + std::to_string(sensor->offset) + " to " +
+                             std::to_string(std::max(end_pos, end_rot) - 1) + ") to lie within the " +
+                             std::to_string(r.length) + "-byte report");
+    }
+    if (r.station_offset >= 0) {
+      for (const auto& [other_name, other] : sensors) {
+        if (other == sensor) break;
+        if (other->enabled && other->station == sensor->station) {
+          sec.fail("station", "expected a station different from trackers." + std::string(other_name) +
+                                  "'s, got " + std::to_string(sensor->station) + " for both");
+        }
+      }
+    }
+  }
+  if (!t.head.enabled && !t.patient.enabled && !t.stylus.enabled) {
+    s.fail("head", "expected at least one of trackers.head, trackers.patient, trackers.stylus enabled, got none");
+  }
   if (t.source == TrackerSource::Replay && t.replay_file.empty()) {
     s.fail("replay_file", "expected a .trk file when source = \"replay\", got nothing");
   }
@@ -147,6 +278,32 @@ LoadResult parse(const std::string& text, const std::string& name) {
 }
 
 }  // namespace
+
+std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, std::string_view letters) {
+  std::vector<SignedAxis> out;
+  std::vector<bool> seen(letters.size(), false);
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    std::string_view item = text.substr(pos, comma - pos);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    SignedAxis a;
+    if (!item.empty() && (item.front() == '-' || item.front() == '+')) {
+      a.sign = item.front() == '-' ? -1 : 1;
+      item.remove_prefix(1);
+    }
+    if (item.size() != 1) return std::nullopt;
+    const std::size_t index = letters.find(item.front());
+    if (index == std::string_view::npos || seen[index]) return std::nullopt;
+    seen[index] = true;
+    a.index = static_cast<int>(index);
+    out.push_back(a);
+    pos = comma + 1;
+  }
+  if (out.size() != letters.size()) return std::nullopt;
+  return out;
+}
 
 LoadResult load_settings_from_string(const std::string& toml_text, const std::string& name) {
   return parse(toml_text, name);

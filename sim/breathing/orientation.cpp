@@ -1,0 +1,118 @@
+/// @file orientation.cpp
+/// @brief Named patient poses and eased slerp between them.
+#include "sim/breathing/orientation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace lungar::sim {
+
+namespace {
+
+struct PoseName {
+  Pose pose;
+  std::string_view name;
+};
+constexpr PoseName kPoseNames[] = {{Pose::Upright, "upright"},
+                                   {Pose::Supine, "supine"},
+                                   {Pose::Prone, "prone"},
+                                   {Pose::LeftLateral, "left_lateral"},
+                                   {Pose::RightLateral, "right_lateral"}};
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::string_view to_string(Pose pose) {
+  for (const PoseName& p : kPoseNames) {
+    if (p.pose == pose) return p.name;
+  }
+  return "?";
+}
+
+std::optional<Pose> pose_from_name(std::string_view name) {
+  for (const PoseName& p : kPoseNames) {
+    if (p.name == name) return p.pose;
+  }
+  return std::nullopt;
+}
+
+Eigen::Quaterniond pose_rotation(Pose pose) {
+  constexpr double quarter = std::numbers::pi / 2.0;
+  using Eigen::AngleAxisd;
+  using Eigen::Vector3d;
+  switch (pose) {
+    case Pose::Upright: return Eigen::Quaterniond::Identity();
+    // About the left-right axis: -90 deg brings posterior (+y) down, +90 deg brings anterior down.
+    case Pose::Supine: return Eigen::Quaterniond(AngleAxisd(-quarter, Vector3d::UnitX()));
+    case Pose::Prone: return Eigen::Quaterniond(AngleAxisd(quarter, Vector3d::UnitX()));
+    // About the anterior-posterior axis: +90 deg brings the left side (+x) down.
+    case Pose::LeftLateral: return Eigen::Quaterniond(AngleAxisd(quarter, Vector3d::UnitY()));
+    case Pose::RightLateral: return Eigen::Quaterniond(AngleAxisd(-quarter, Vector3d::UnitY()));
+  }
+  return Eigen::Quaterniond::Identity();
+}
+
+Eigen::Vector3d gravity_in_lung(const Eigen::Quaterniond& q) {
+  return q.conjugate() * Eigen::Vector3d(0.0, 0.0, -1.0);
+}
+
+double tilt_from_upright_deg(const Eigen::Quaterniond& q) {
+  const double c = std::clamp(-gravity_in_lung(q).z(), -1.0, 1.0);
+  return std::acos(c) * 180.0 / std::numbers::pi;
+}
+
+OrientationTrack::Created OrientationTrack::create(const Eigen::Quaterniond& start, std::vector<Turn> turns) {
+  Created c;
+  std::stable_sort(turns.begin(), turns.end(), [](const Turn& a, const Turn& b) { return a.t_s < b.t_s; });
+  for (std::size_t k = 0; k < turns.size(); ++k) {
+    const Turn& t = turns[k];
+    if (!(std::isfinite(t.t_s) && t.t_s >= 0)) {
+      c.error = "turn at " + fmt(t.t_s) + " s: expected a start time >= 0 s";
+      return c;
+    }
+    if (!(std::isfinite(t.duration_s) && t.duration_s > 0)) {
+      c.error = "turn at " + fmt(t.t_s) + " s: expected a duration > 0 s, got " + fmt(t.duration_s);
+      return c;
+    }
+    if (std::abs(t.target.norm() - 1.0) > 1e-6) {
+      c.error = "turn at " + fmt(t.t_s) + " s: expected a unit quaternion as target";
+      return c;
+    }
+    if (k > 0 && turns[k - 1].t_s + turns[k - 1].duration_s > t.t_s) {
+      c.error = "turn at " + fmt(t.t_s) + " s: expected turns that do not overlap, but the turn at " +
+                fmt(turns[k - 1].t_s) + " s runs until " + fmt(turns[k - 1].t_s + turns[k - 1].duration_s) + " s";
+      return c;
+    }
+  }
+  OrientationTrack track;
+  track.start_ = start.normalized();
+  track.turns_ = std::move(turns);
+  Eigen::Quaterniond current = track.start_;
+  for (const Turn& t : track.turns_) {
+    track.from_.push_back(current);
+    current = t.target;
+  }
+  c.track = std::move(track);
+  return c;
+}
+
+Eigen::Quaterniond OrientationTrack::at(double t) const {
+  // The last turn started at or before t.
+  auto it = std::upper_bound(turns_.begin(), turns_.end(), t, [](double v, const Turn& s) { return v < s.t_s; });
+  if (it == turns_.begin()) return start_;
+  const std::size_t k = static_cast<std::size_t>(it - turns_.begin()) - 1;
+  const Turn& turn = turns_[k];
+  const double x = std::clamp((t - turn.t_s) / turn.duration_s, 0.0, 1.0);
+  if (x >= 1.0) return turn.target;
+  const double eased = x * x * (3.0 - 2.0 * x);
+  return from_[k].slerp(eased, turn.target);  // Eigen's slerp takes the shorter arc
+}
+
+}  // namespace lungar::sim

@@ -30,15 +30,19 @@ constexpr int kPhaseSamples = 256;
 /// A generic breath index for comparisons: no sigh is ever scheduled there.
 constexpr double kGenericBreath = -1000.0;
 
+/// The largest |dV/dt| of steady breathing with `p` (and of its sigh, if one is to come), mL/s.
 double peak_flow_ml_per_s(const Pattern& p) {
   double peak = 0;
-  double prev = evaluate(p, kGenericBreath).v_ml;
-  for (int k = 1; k <= kPhaseSamples; ++k) {
-    const double v = evaluate(p, kGenericBreath + static_cast<double>(k) / kPhaseSamples).v_ml;
-    peak = std::max(peak, std::abs(v - prev));
-    prev = v;
+  for (double breath : {kGenericBreath, static_cast<double>(p.sigh_breath)}) {
+    if (breath < kGenericBreath + 1) breath = kGenericBreath;
+    double prev = evaluate(p, breath).v_ml;
+    for (int k = 1; k <= 4 * kPhaseSamples; ++k) {
+      const double v = evaluate(p, breath + static_cast<double>(k) / (4 * kPhaseSamples)).v_ml;
+      peak = std::max(peak, std::abs(v - prev));
+      prev = v;
+    }
   }
-  return peak * kPhaseSamples * p.params.rate_bpm / 60.0;
+  return peak * 4 * kPhaseSamples * p.params.rate_bpm / 60.0;
 }
 
 /// Largest differences in volume (mL) and in pressures (cmH2O) between two patterns over one breath.
@@ -130,8 +134,24 @@ std::size_t BreathingDriver::segment_at(double t) const {
   return it == segments_.begin() ? 0 : static_cast<std::size_t>(it - segments_.begin()) - 1;
 }
 
+double BreathingDriver::correction_at(const Segment& s, double t) {
+  if (s.correction.empty() || t < s.t0) return 0.0;
+  const double x = (t - s.t0) / kLimiterStepS;
+  const auto n = static_cast<std::size_t>(x);
+  if (n + 1 >= s.correction.size()) return 0.0;  // the table ends where the correction has come back to zero
+  const double f = x - static_cast<double>(n);
+  return s.correction[n] + f * (s.correction[n + 1] - s.correction[n]);
+}
+
 BreathingSample BreathingDriver::at(double t) const {
   const std::size_t i = segment_at(t);
+  BreathingSample out = raw_at(i, t);
+  out.v_ml += correction_at(segments_[i], t);
+  out.dv_ml = out.v_ml - out.v_frc_ml;
+  return out;
+}
+
+BreathingSample BreathingDriver::raw_at(std::size_t i, double t) const {
   const Segment& seg = segments_[i];
   const double phi = phase_at(seg, t);
   BreathingSample out;
@@ -186,7 +206,9 @@ std::string BreathingDriver::apply(const Event& e) {
     return what + "transition_s: expected [0, 600] s, got " + fmt(e.transition_s);
   }
   const double phi = phase_at(back, e.t_s);
-  Pattern to = back.pattern;
+  Pattern before = back.pattern;
+  if (before.sigh_breath >= 0 && phi >= static_cast<double>(before.sigh_breath + 1)) before.sigh_breath = -1;
+  Pattern to = before;  // a sigh that is over is forgotten
   bool rate_changed = false;
   switch (e.kind) {
     case EventKind::Change: {
@@ -233,7 +255,7 @@ std::string BreathingDriver::apply(const Event& e) {
   }
   const double blend = e.kind == EventKind::Change || e.kind == EventKind::ApnoeaStart ||
                                e.kind == EventKind::ApnoeaEnd
-                           ? transition_for(back.pattern, to, e.transition_s)
+                           ? transition_for(before, to, e.transition_s)
                            : 0.0;
   if (blend > 0) {
     s.blend_t0 = e.t_s;
@@ -247,8 +269,34 @@ std::string BreathingDriver::apply(const Event& e) {
     s.from = back.from;
   }
   s.pattern = to;
+  const double carried = correction_at(back, e.t_s);
+  const double limit = kLimiterFlowShare * std::max(peak_flow_ml_per_s(before), peak_flow_ml_per_s(to));
+  const double horizon = std::max(s.blend_t0 + s.blend_s, s.t0 + s.ramp_s);
   segments_.push_back(s);
+  if (blend > 0 || carried != 0.0) limit_flow(carried, limit, horizon);
   return {};
+}
+
+void BreathingDriver::limit_flow(double carried, double limit, double horizon) {
+  // Follow the cross-faded volume, but never faster than `limit`: where the fade would add a step beyond the
+  // steadiest breathing's largest, the output lags a little and catches up when the flow falls. The table holds
+  // the difference (output - cross-fade) every kLimiterStepS from the segment's start until it is back to zero.
+  Segment& s = segments_.back();
+  const std::size_t i = segments_.size() - 1;
+  const double step = limit * kLimiterStepS;
+  const auto max_n = static_cast<std::size_t>((horizon - s.t0 + kLimiterMaxTailS) / kLimiterStepS);
+  std::vector<double> table;
+  double v = raw_at(i, s.t0).v_ml + carried;
+  table.push_back(carried);
+  for (std::size_t n = 1; n <= max_n; ++n) {
+    const double t = s.t0 + static_cast<double>(n) * kLimiterStepS;
+    const double target = raw_at(i, t).v_ml;
+    v += std::clamp(target - v, -step, step);
+    table.push_back(v - target);
+    if (t >= horizon && std::abs(v - target) < 1e-9) break;
+  }
+  table.push_back(0.0);
+  s.correction = std::move(table);
 }
 
 }  // namespace lungar::sim

@@ -8,7 +8,10 @@
 /// patterns over a transition, both evaluated at the same phase, so P and V move continuously from the old
 /// curve to the new one. The transition is at least half a breath, and long enough that the cross-fade adds
 /// no more than a quarter of the new pattern's peak flow: a change of preset that moves the FRC by 0.7 L
-/// takes about 6 s at 12/min. A sigh only changes the next breath, which starts and ends at the FRC.
+/// takes about 9 s at 12/min. A sigh only changes the next breath, which starts and ends at the FRC.
+/// Where a fade would still make the volume move faster than the faster pattern's peak flow (when the fade's
+/// own drift meets a flow peak), a flow limiter, tabulated when the event is applied, holds it back and lets it
+/// catch up when the flow falls; so no step is larger than the largest step of steady breathing.
 ///
 /// Use: build once, apply events in time order (e.g. a whole script at start-up), then call at(t) each frame;
 /// at() allocates nothing and may be called for any t, in any order.
@@ -72,10 +75,19 @@ class BreathingDriver {
     double blend_s = 0;
     std::ptrdiff_t from = -1;  ///< the segment faded out, -1: none
     Pattern pattern;
+    std::vector<double> correction;  ///< flow limiter's offset on V, every kLimiterStepS from t0 (empty: none)
   };
+  /// The limiter's grid, s; the share of the faster pattern's peak flow it allows; how long after a transition
+  /// it may take to catch up, s.
+  static constexpr double kLimiterStepS = 1e-3;
+  static constexpr double kLimiterFlowShare = 0.95;
+  static constexpr double kLimiterMaxTailS = 30.0;
   explicit BreathingDriver(Segment first);
 
   std::size_t segment_at(double t) const;
+  BreathingSample raw_at(std::size_t i, double t) const;
+  static double correction_at(const Segment& s, double t);
+  void limit_flow(double carried, double limit, double horizon);
   static double phase_at(const Segment& s, double t);
   static double speed_at(const Segment& s, double t);
   static double blend_weight(const Segment& s, double t);

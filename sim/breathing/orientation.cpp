@@ -47,14 +47,17 @@ Eigen::Quaterniond pose_rotation(Pose pose) {
   constexpr double quarter = std::numbers::pi / 2.0;
   using Eigen::AngleAxisd;
   using Eigen::Vector3d;
+  // Supine: -90 deg about the left-right axis brings the back (+y) down and the head to world +y. The other
+  // lying poses keep the head there and roll about the body's long axis (+z), so that a turn between two of them
+  // is a roll, as on a table.
+  const Eigen::Quaterniond supine(AngleAxisd(-quarter, Vector3d::UnitX()));
+  auto roll = [&](double angle) { return supine * Eigen::Quaterniond(AngleAxisd(angle, Vector3d::UnitZ())); };
   switch (pose) {
     case Pose::Upright: return Eigen::Quaterniond::Identity();
-    // About the left-right axis: -90 deg brings posterior (+y) down, +90 deg brings anterior down.
-    case Pose::Supine: return Eigen::Quaterniond(AngleAxisd(-quarter, Vector3d::UnitX()));
-    case Pose::Prone: return Eigen::Quaterniond(AngleAxisd(quarter, Vector3d::UnitX()));
-    // About the anterior-posterior axis: +90 deg brings the left side (+x) down.
-    case Pose::LeftLateral: return Eigen::Quaterniond(AngleAxisd(quarter, Vector3d::UnitY()));
-    case Pose::RightLateral: return Eigen::Quaterniond(AngleAxisd(-quarter, Vector3d::UnitY()));
+    case Pose::Supine: return supine;
+    case Pose::Prone: return roll(2.0 * quarter);         // front (-y) down
+    case Pose::LeftLateral: return roll(quarter);         // left side (+x) down
+    case Pose::RightLateral: return roll(-quarter);       // right side (-x) down
   }
   return Eigen::Quaterniond::Identity();
 }

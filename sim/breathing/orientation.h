@@ -3,7 +3,8 @@
 ///
 /// An orientation is the unit quaternion of the lung frame (DICOM LPS: +x left, +y posterior, +z superior) in
 /// the world frame, whose +z points up (gravity is -z). Upright is the identity; supine is -90 degrees about the
-/// left-right (x) axis, which brings the patient's back (+y) down. A turn goes from the orientation at its start
+/// left-right (x) axis, which brings the patient's back (+y) down and the head to world +y; prone and the lateral
+/// poses keep the head there, rolled about the long axis. A turn goes from the orientation at its start
 /// to its target along the shorter arc (slerp) with smoothstep easing, so it starts and stops without a jerk.
 #pragma once
 

@@ -1,0 +1,144 @@
+/// @file decoder.cpp
+/// @brief Field reads (any endianness, integer, float and fixed point), component remapping, validation.
+#include "drivers/decode/decoder.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+namespace lungar::drivers {
+
+const char* to_string(DecodeError e) {
+  switch (e) {
+    case DecodeError::None: return "ok";
+    case DecodeError::WrongLength: return "wrong length";
+    case DecodeError::UnknownReportId: return "unknown report id";
+    case DecodeError::UnknownStation: return "unknown station";
+    case DecodeError::NotFinite: return "NaN or infinity";
+    case DecodeError::QuaternionNorm: return "quaternion norm off";
+    case DecodeError::OutsideWorkspace: return "position outside the workspace";
+    case DecodeError::TimeBackwards: return "device time ran backwards";
+  }
+  return "?";
+}
+
+namespace {
+
+std::uint32_t read_uint(const std::uint8_t* p, int bytes, bool big) {
+  std::uint32_t v = 0;
+  for (int k = 0; k < bytes; ++k) {
+    const std::uint32_t b = p[big ? k : bytes - 1 - k];
+    v = (v << 8) | b;
+  }
+  return v;
+}
+
+double read_field(const std::uint8_t* p, const FieldFormat& f, bool big) {
+  const std::uint32_t u = read_uint(p, f.bytes(), big);
+  double raw = 0;
+  switch (f.type) {
+    case config::FieldType::I16:
+    case config::FieldType::Fixed16: raw = static_cast<std::int16_t>(static_cast<std::uint16_t>(u)); break;
+    case config::FieldType::I32:
+    case config::FieldType::Fixed32: raw = static_cast<std::int32_t>(u); break;
+    case config::FieldType::F32: raw = std::bit_cast<float>(u); break;
+  }
+  return std::ldexp(raw, -f.frac_bits) * f.scale;
+}
+
+DecodeError decode_sensor(const std::uint8_t* block, const ReportLayout& l, DecodedPose& out) {
+  const std::uint8_t* pp = block + l.position_offset;
+  quat::V device_pos{};
+  for (int k = 0; k < 3; ++k) {
+    const Component c = l.position_components[k];
+    device_pos[c.index] = c.sign * read_field(pp + k * l.position.bytes(), l.position, l.big_endian);
+  }
+  const std::uint8_t* op = block + l.orientation_offset;
+  quat::Q q{};
+  if (l.euler) {
+    quat::V angle_rad{};
+    for (int k = 0; k < 3; ++k) {
+      const Component c = l.orientation_components[k];
+      angle_rad[c.index] =
+          c.sign * read_field(op + k * l.orientation.bytes(), l.orientation, l.big_endian) * (M_PI / 180.0);
+    }
+    for (double a : angle_rad) {
+      if (!std::isfinite(a)) return DecodeError::NotFinite;
+    }
+    const auto& s = l.euler_sequence;  // intrinsic: R = R_s0 R_s1 R_s2
+    q = quat::mul(quat::mul(quat::about(s[0], angle_rad[s[0]]), quat::about(s[1], angle_rad[s[1]])),
+                  quat::about(s[2], angle_rad[s[2]]));
+  } else {
+    for (int k = 0; k < 4; ++k) {
+      const Component c = l.orientation_components[k];
+      q[c.index] = c.sign * read_field(op + k * l.orientation.bytes(), l.orientation, l.big_endian);
+    }
+  }
+  for (double v : device_pos) {
+    if (!std::isfinite(v)) return DecodeError::NotFinite;
+  }
+  for (double v : q) {
+    if (!std::isfinite(v)) return DecodeError::NotFinite;
+  }
+  const double n = quat::norm(q);
+  if (!std::isfinite(n)) return DecodeError::NotFinite;
+  if (std::abs(n - 1.0) > l.quat_norm_tolerance) return DecodeError::QuaternionNorm;
+  q = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
+  // Change of basis tracker -> world: p' = M p + offset, R' = M R M^T (= r q r* with r the proper part of M).
+  for (int i = 0; i < 3; ++i) {
+    double v = l.world_offset_mm[i];
+    for (int j = 0; j < 3; ++j) v += l.remap[i][j] * device_pos[j];
+    if (!(v >= l.workspace_min_mm[i] && v <= l.workspace_max_mm[i])) return DecodeError::OutsideWorkspace;
+    out.position_mm[i] = v;
+  }
+  q = quat::mul(quat::mul(l.remap_rotation, q), quat::conj(l.remap_rotation));
+  if (q[0] < 0) q = {-q[0], -q[1], -q[2], -q[3]};  // one sign per rotation, so equal reports compare equal
+  out.orientation_wxyz = q;
+  return DecodeError::None;
+}
+
+}  // namespace
+
+DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLayout& l) {
+  DecodedReport r;
+  auto fail = [&](DecodeError e) {
+    r.error = e;
+    r.count = 0;
+    return r;
+  };
+  if (bytes.size() != static_cast<std::size_t>(l.length)) return fail(DecodeError::WrongLength);
+  const std::uint8_t* p = bytes.data();
+  if (l.report_id >= 0 && p[0] != l.report_id) return fail(DecodeError::UnknownReportId);
+  if (l.time_offset >= 0) {
+    r.has_time = true;
+    r.device_ticks = read_uint(p + l.time_offset, l.time_bits / 8, l.big_endian);
+  }
+  for (int k = 0; k < l.sensor_count; ++k) {
+    const SensorLayout& s = l.sensors[k];
+    if (l.station_offset >= 0 && p[l.station_offset] != s.station) continue;
+    DecodedPose& pose = r.poses[r.count];
+    pose.role = s.role;
+    const DecodeError e = decode_sensor(p + s.offset, l, pose);
+    if (e != DecodeError::None) return fail(e);
+    ++r.count;
+  }
+  if (r.count == 0) return fail(DecodeError::UnknownStation);
+  return r;
+}
+
+std::int64_t DeviceClock::advance(std::uint32_t ticks, int bits, double tick_ns) {
+  const std::uint64_t range = bits >= 32 ? (1ull << 32) : (1ull << bits);
+  if (!started_) {
+    started_ = true;
+    last_ = ticks;
+    total_ticks_ = 0;
+    return 0;
+  }
+  const std::uint64_t delta = (static_cast<std::uint64_t>(ticks) + range - last_) % range;
+  if (delta > range / 2) return -1;
+  last_ = ticks;
+  total_ticks_ += static_cast<std::int64_t>(delta);
+  return static_cast<std::int64_t>(static_cast<double>(total_ticks_) * tick_ns);
+}
+
+}  // namespace lungar::drivers

@@ -1,0 +1,61 @@
+/// @file decoder.h
+/// @brief The pure report decoder: bytes + layout -> world-frame poses, or the reason the report is malformed.
+/// @ingroup drivers
+///
+/// No state, no allocation, no I/O: the unit tests, the fuzz target and every source call this one function.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "drivers/decode/report_layout.h"
+
+namespace lungar::drivers {
+
+enum class DecodeError : std::uint8_t {
+  None = 0,
+  WrongLength,       ///< not exactly the layout's length
+  UnknownReportId,   ///< first byte is not the layout's report id
+  UnknownStation,    ///< station byte names no enabled sensor
+  NotFinite,         ///< NaN or infinity in a field
+  QuaternionNorm,    ///< |norm - 1| beyond the tolerance
+  OutsideWorkspace,  ///< position outside the configured box
+  TimeBackwards,     ///< device time ran backwards (reported by DeviceClock, not by decode_report)
+};
+inline constexpr int kDecodeErrorCount = 8;
+const char* to_string(DecodeError e);
+
+/// One sensor's pose from a report, in the world frame.
+struct DecodedPose {
+  Role role = Role::Head;
+  std::array<double, 3> position_mm{};
+  std::array<double, 4> orientation_wxyz{1, 0, 0, 0};  ///< normalised
+};
+
+struct DecodedReport {
+  DecodeError error = DecodeError::None;
+  bool has_time = false;
+  std::uint32_t device_ticks = 0;  ///< raw timestamp, time_bits wide
+  int count = 0;                   ///< poses filled
+  std::array<DecodedPose, kRoleCount> poses{};
+};
+
+/// Decodes one report. Every sensor of the report must be valid, or the whole report is rejected.
+DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLayout& layout);
+
+/// Unwraps a device timestamp of `bits` width into nanoseconds since the first report, and rejects time that
+/// runs backwards (a step of more than half the counter's range reads as backwards, not as a wrap).
+class DeviceClock {
+ public:
+  /// Nanoseconds of device time, or -1 when `ticks` is older than the last accepted timestamp.
+  std::int64_t advance(std::uint32_t ticks, int bits, double tick_ns);
+  void reset() { started_ = false; }
+
+ private:
+  bool started_ = false;
+  std::uint32_t last_ = 0;
+  std::int64_t total_ticks_ = 0;
+};
+
+}  // namespace lungar::drivers

@@ -1,0 +1,20 @@
+/// @file layout_toml.h
+/// @brief Writes the report-layout part of the tracker settings back as TOML, for .trk headers: a log names
+/// the layout its bytes were made with, and load_settings_from_string() reads it back.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "config/settings.h"
+
+namespace lungar::drivers {
+
+/// [trackers] (axis_remap, world_offset_mm, workspace, tolerance), [trackers.report] and the sensor tables.
+std::string layout_to_toml(const config::TrackerSettings& t);
+
+/// The tracker settings described by a .trk header's layout text; nullopt with `error` when it does not load.
+std::optional<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name,
+                                                        std::string* error);
+
+}  // namespace lungar::drivers

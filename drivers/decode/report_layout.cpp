@@ -1,0 +1,115 @@
+/// @file report_layout.cpp
+/// @brief config::TrackerSettings -> ReportLayout: parses component lists, builds the axis remap, checks bounds.
+#include "drivers/decode/report_layout.h"
+
+#include <algorithm>
+
+namespace lungar::drivers {
+
+int FieldFormat::bytes() const {
+  return (type == config::FieldType::I16 || type == config::FieldType::Fixed16) ? 2 : 4;
+}
+
+namespace {
+
+double determinant(const quat::M& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+template <std::size_t N>
+bool components(const std::string& text, std::string_view letters, std::array<Component, N>& out) {
+  auto axes = config::parse_signed_axes(text, letters);
+  if (!axes || axes->size() > N) return false;
+  for (std::size_t k = 0; k < axes->size(); ++k) out[k] = {(*axes)[k].index, (*axes)[k].sign};
+  return true;
+}
+
+}  // namespace
+
+LayoutResult make_layout(const config::TrackerSettings& t) {
+  const config::ReportSettings& r = t.report;
+  LayoutResult res;
+  auto fail = [&](const std::string& key, const std::string& what) {
+    res.error = "trackers." + key + ": " + what;
+    return res;
+  };
+  ReportLayout l;
+  l.report_id = r.report_id;
+  l.length = r.length;
+  l.big_endian = r.endian == config::Endian::Big;
+  l.station_offset = r.station_offset;
+  l.time_offset = r.time_offset;
+  l.time_bits = r.time_bits;
+  l.time_tick_ns = r.time_tick_us * 1000.0;
+  l.position_offset = r.position_offset;
+  l.position = {r.position_type, r.position_frac_bits, r.position_scale};
+  l.euler = r.orientation == config::OrientationKind::Euler;
+  l.orientation_offset = r.orientation_offset;
+  l.orientation = {r.orientation_type, r.orientation_frac_bits, r.orientation_scale};
+  l.quat_norm_tolerance = t.quat_norm_tolerance;
+  l.world_offset_mm = t.world_offset_mm;
+  l.workspace_min_mm = t.workspace_min_mm;
+  l.workspace_max_mm = t.workspace_max_mm;
+
+  if (r.length < 1 || r.length > 1024) return fail("report.length", "expected 1 to 1024 bytes");
+  if (r.report_id < -1 || r.report_id > 255) return fail("report.report_id", "expected -1 to 255");
+  if (r.time_bits != 16 && r.time_bits != 32) return fail("report.time_bits", "expected 16 or 32");
+  if (!(r.time_tick_us > 0)) return fail("report.time_tick_us", "expected a positive tick");
+  if (r.position_scale == 0 || r.orientation_scale == 0) return fail("report", "expected non-zero scales");
+  if (r.position_frac_bits < 0 || r.position_frac_bits > 31 || r.orientation_frac_bits < 0 ||
+      r.orientation_frac_bits > 31) {
+    return fail("report", "expected 0 to 31 fractional bits");
+  }
+  if (!components(r.position_components, "xyz", l.position_components)) {
+    return fail("report.position_components", "expected a signed permutation of x,y,z");
+  }
+  if (!components(r.orientation_components, l.euler ? "xyz" : "wxyz", l.orientation_components)) {
+    return fail("report.orientation_components", "expected a signed permutation of the components");
+  }
+  std::array<Component, 3> seq{};
+  if (r.euler_sequence.size() != 3 ||
+      !components(std::string{r.euler_sequence[0], ',', r.euler_sequence[1], ',', r.euler_sequence[2]}, "xyz", seq)) {
+    return fail("report.euler_sequence", "expected three distinct axes");
+  }
+  for (int k = 0; k < 3; ++k) l.euler_sequence[k] = seq[k].index;
+  std::array<Component, 3> remap{};
+  if (!components(t.axis_remap, "xyz", remap)) return fail("axis_remap", "expected a signed permutation of x,y,z");
+  for (int row = 0; row < 3; ++row) {
+    l.remap[row] = {0, 0, 0};
+    l.remap[row][remap[row].index] = remap[row].sign;
+  }
+  // A mirror (det -1) changes handedness; M R M^T equals (-M) R (-M)^T, and -M is a proper rotation.
+  quat::M proper = l.remap;
+  if (determinant(proper) < 0) {
+    for (auto& row : proper)
+      for (double& v : row) v = -v;
+  }
+  l.remap_rotation = quat::from_matrix(proper);
+
+  const int first = r.report_id >= 0 ? 1 : 0;
+  auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
+  if (r.station_offset >= 0 && !inside(r.station_offset, 1)) {
+    return fail("report.station_offset", "expected a byte inside the report");
+  }
+  if (r.time_offset >= 0 && !inside(r.time_offset, r.time_bits / 8)) {
+    return fail("report.time_offset", "expected the timestamp inside the report");
+  }
+  const std::pair<Role, const config::SensorSettings*> sensors[] = {
+      {Role::Head, &t.head}, {Role::Patient, &t.patient}, {Role::Stylus, &t.stylus}};
+  for (const auto& [role, s] : sensors) {
+    if (!s->enabled) continue;
+    const int rot_n = l.euler ? 3 : 4;
+    if (!inside(s->offset + r.position_offset, 3 * l.position.bytes()) ||
+        !inside(s->offset + r.orientation_offset, rot_n * l.orientation.bytes())) {
+      return fail(std::string(to_string(role)) + ".offset", "expected the sensor's fields inside the report");
+    }
+    if (s->station < 0 || s->station > 255) return fail(std::string(to_string(role)) + ".station", "expected 0 to 255");
+    l.sensors[l.sensor_count++] = {role, s->station, s->offset};
+  }
+  if (l.sensor_count == 0) return fail("head", "expected at least one enabled sensor");
+  res.layout = l;
+  return res;
+}
+
+}  // namespace lungar::drivers

@@ -1,0 +1,71 @@
+/// @file report_layout.h
+/// @brief The report layout in the form the decoder uses, converted once from config::TrackerSettings.
+/// @ingroup drivers
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "config/settings.h"
+#include "drivers/pose/pose_sample.h"
+#include "drivers/pose/quat.h"
+
+namespace lungar::drivers {
+
+/// How one number is read: type, fixed-point bits and scale. value = raw / 2^frac_bits * scale.
+struct FieldFormat {
+  config::FieldType type = config::FieldType::I16;
+  int frac_bits = 0;
+  double scale = 1.0;
+  int bytes() const;
+};
+
+/// One component the device sends: which axis (x,y,z = 0..2; quaternion w,x,y,z = 0..3) and its sign.
+struct Component {
+  int index = 0;
+  int sign = 1;
+};
+
+struct SensorLayout {
+  Role role = Role::Head;
+  int station = 0;
+  int offset = 0;
+};
+
+/// Everything decode_report() needs, resolved and checked: plain data, no allocation.
+struct ReportLayout {
+  int report_id = -1;
+  int length = 0;
+  bool big_endian = false;
+  int station_offset = -1;
+  int time_offset = -1;
+  int time_bits = 32;
+  double time_tick_ns = 1000.0;
+  int position_offset = 0;
+  FieldFormat position;
+  std::array<Component, 3> position_components{};
+  bool euler = false;
+  int orientation_offset = 0;
+  FieldFormat orientation;
+  std::array<Component, 4> orientation_components{};  ///< 3 used for Euler angles
+  std::array<int, 3> euler_sequence = {2, 1, 0};
+  quat::M remap{};           ///< signed permutation, world <- tracker
+  quat::Q remap_rotation{};  ///< the proper rotation ±remap, applied to orientations as q' = r q r*
+  quat::V world_offset_mm{};
+  double quat_norm_tolerance = 0.05;
+  quat::V workspace_min_mm{}, workspace_max_mm{};
+  std::array<SensorLayout, kRoleCount> sensors{};
+  int sensor_count = 0;
+};
+
+struct LayoutResult {
+  std::optional<ReportLayout> layout;
+  std::string error;  ///< "trackers.<key>: expected ..., got ..." when the settings do not describe a layout
+};
+
+/// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings).
+LayoutResult make_layout(const config::TrackerSettings& t);
+
+}  // namespace lungar::drivers

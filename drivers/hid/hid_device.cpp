@@ -1,0 +1,153 @@
+/// @file hid_device.cpp
+/// @brief The HID reader thread: disconnected -> opening -> streaming <-> stale, with back-off on reopen.
+#include <hidapi/hidapi.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "drivers/hid/hid_hotplug.h"
+#include "drivers/hid/hid_interface.h"
+#include "drivers/tracker/tracker_core.h"
+
+namespace lungar::drivers {
+
+namespace {
+
+constexpr std::int64_t kMs = 1'000'000;
+constexpr std::int64_t kMaxBackoffNs = 4000 * kMs;
+
+class HidDevice final : public TrackerSource {
+ public:
+  explicit HidDevice(const config::TrackerSettings& s)
+      : hid_(s.hid), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)),
+        read_timeout_ms_(std::max(1, static_cast<int>(s.hid.read_timeout_ms))) {}
+
+  ~HidDevice() override { close(); }
+
+  void run(TrackerCore& core, std::stop_token stop) override {
+    if (!hotplug_.start(hid_.vendor_id, hid_.product_id)) {
+      core.log(-1, "hid: hot-plug notifications unavailable (%s); re-enumerating with back-off from %lld ms",
+               hotplug_.why().c_str(), static_cast<long long>(backoff0_ns_ / kMs));
+    }
+    const auto length = static_cast<std::size_t>(core.layout().length);
+    std::array<std::uint8_t, kTrkMaxReport> buf{};
+    std::int64_t backoff = backoff0_ns_;
+    std::int64_t next_attempt = 0;
+    std::int64_t next_presence_check = 0;
+    bool ever_streamed = false;
+    core.set_state(TrackerState::Disconnected);
+    while (!stop.stop_requested()) {
+      const std::int64_t now = monotonic_ns();
+      if (!dev_) {
+        if (now < next_attempt && !hotplug_.take_event()) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(read_timeout_ms_));
+          core.tick(monotonic_ns());
+          continue;
+        }
+        core.set_state(TrackerState::Opening);
+        if (open(core)) {
+          if (ever_streamed) core.count_reconnect();
+          ever_streamed = true;
+          backoff = backoff0_ns_;
+          core.set_state(TrackerState::Streaming);
+          core.tick(monotonic_ns());  // the stale clock starts at the open
+          last_good_ns_ = monotonic_ns();
+        } else {
+          core.set_state(TrackerState::Disconnected);
+          next_attempt = monotonic_ns() + backoff;
+          backoff = std::min(backoff * 2, kMaxBackoffNs);
+        }
+        continue;
+      }
+      // Exactly one report length per read: on a byte-stream node a longer read would merge two reports.
+      const int n = hid_read_timeout(dev_, buf.data(), length, read_timeout_ms_);
+      const std::int64_t t = monotonic_ns();
+      if (n < 0) {
+        core.log(-1, "hid: %s lost (read error); reopening", found_.path.c_str());
+        lose(core, next_attempt, backoff);
+        continue;
+      }
+      if (n > 0) {
+        core.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), t);
+        last_good_ns_ = t;
+      }
+      core.tick(t);
+      // A silent device may have been unplugged without the read failing (some kernels, emulated nodes):
+      // when stale, look for it in the enumeration now and then.
+      if (core.state() == TrackerState::Stale && t >= next_presence_check) {
+        next_presence_check = t + backoff0_ns_;
+        if (!hid_probe(probe_settings())) {
+          core.log(-1, "hid: %s is gone from the bus; reopening", found_.path.c_str());
+          lose(core, next_attempt, backoff);
+        }
+      }
+    }
+    close();
+  }
+
+  std::string describe() const override {
+    char ids[32];
+    std::snprintf(ids, sizeof ids, "%04x:%04x", hid_.vendor_id, hid_.product_id);
+    return "hid " + (hid_.path.empty() ? std::string(ids) : hid_.path) +
+           (hid_.serial.empty() ? std::string() : " serial " + hid_.serial);
+  }
+  std::string trk_description() const override {
+    // The device is known only once it is opened; the configured match is what a header can say up front.
+    char ids[64];
+    std::snprintf(ids, sizeof ids, "vendor_id=0x%04x\nproduct_id=0x%04x\n", hid_.vendor_id, hid_.product_id);
+    return std::string("source=hid\n") + ids + "serial=" + hid_.serial + "\npath=" + hid_.path + "\n";
+  }
+  TrkSource trk_source() const override { return TrkSource::Hid; }
+
+ private:
+  config::HidSettings probe_settings() const {
+    config::HidSettings s = hid_;
+    s.path = found_.path;  // the very node that was open
+    return s;
+  }
+
+  bool open(TrackerCore& core) {
+    auto found = hid_probe(hid_);
+    if (!found) return false;
+    dev_ = hid_open_path(found->path.c_str());
+    if (!dev_) {
+      core.log(-1, "hid: cannot open %s (permissions? see scripts/99-lungar.rules)", found->path.c_str());
+      return false;
+    }
+    found_ = *found;
+    core.log(-1, "hid: opened %s (%04x:%04x %s %s, serial %s)", found_.path.c_str(), found_.vendor_id,
+             found_.product_id, found_.manufacturer.c_str(), found_.product.c_str(), found_.serial.c_str());
+    return true;
+  }
+
+  void lose(TrackerCore& core, std::int64_t& next_attempt, std::int64_t& backoff) {
+    close();
+    core.set_state(TrackerState::Disconnected);
+    backoff = backoff0_ns_;
+    next_attempt = monotonic_ns() + backoff;
+  }
+
+  void close() {
+    if (dev_) hid_close(dev_);
+    dev_ = nullptr;
+  }
+
+  config::HidSettings hid_;
+  std::int64_t backoff0_ns_;
+  int read_timeout_ms_;
+  hid_device* dev_ = nullptr;
+  HidFound found_;
+  std::int64_t last_good_ns_ = 0;
+  UsbHotplug hotplug_;
+};
+
+}  // namespace
+
+std::unique_ptr<TrackerSource> hid_create(const config::TrackerSettings& settings) {
+  return std::make_unique<HidDevice>(settings);
+}
+
+}  // namespace lungar::drivers

@@ -1,0 +1,19 @@
+/// @file mock_interface.h
+/// @brief The mock tracker: scripted trajectories turned into raw reports through the configured layout, so
+/// that the decoder, recording and everything downstream see the same bytes a device would send.
+/// @ingroup drivers
+#pragma once
+
+#include <memory>
+
+#include "config/settings.h"
+#include "drivers/decode/report_layout.h"
+#include "drivers/tracker/tracker_source.h"
+
+namespace lungar::drivers {
+
+/// A source producing mock_rate_hz reports per sensor (one report each with a station byte, else one report
+/// for all), with optional Gaussian position noise and dropouts. Precondition: the trajectory name is valid.
+std::unique_ptr<TrackerSource> mock_create(const config::TrackerSettings& settings, const ReportLayout& layout);
+
+}  // namespace lungar::drivers

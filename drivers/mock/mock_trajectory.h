@@ -1,0 +1,32 @@
+/// @file mock_trajectory.h
+/// @brief Scripted poses for the mock tracker and `lungar-trk synth`: pure functions of time.
+/// @ingroup drivers
+///
+/// World frame: millimetres, +z up. The patient's lung frame is DICOM LPS (+x left, +y posterior, +z superior);
+/// identity = standing upright. Supine (on the back) is a -90 degree turn about world x: posterior -> world
+/// down, superior -> world +y. The head sensor looks along its own +y with its +z up, so identity looks
+/// along world +y.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "drivers/decode/decoder.h"
+
+namespace lungar::drivers {
+
+/// Where the mock puts the patient's lung centre, mm.
+inline constexpr std::array<double, 3> kMockPatientCentreMm = {0.0, 0.0, 1000.0};
+/// upright_to_supine: hold upright, turn over kTurnS with a raised-cosine ease, then lie supine.
+inline constexpr double kMockTurnStartS = 1.0;
+inline constexpr double kMockTurnS = 4.0;
+
+/// The pose of `role` at `t_s` seconds into `trajectory` (static | upright_to_supine | head_orbit); nullopt
+/// for an unknown trajectory name.
+std::optional<DecodedPose> mock_pose(const std::string& trajectory, Role role, double t_s);
+
+/// The patient's turn angle about world x at `t_s` for upright_to_supine, radians (0 upright, -pi/2 supine).
+double upright_to_supine_angle(double t_s);
+
+}  // namespace lungar::drivers

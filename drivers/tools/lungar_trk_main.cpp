@@ -1,0 +1,216 @@
+/// @file lungar_trk_main.cpp
+/// @brief lungar-trk: inspect (info), decode (dump as CSV or JSON lines), trim (cut) and synthesise (synth)
+/// .trk tracker logs. Errors: one line on stderr naming the file and what was expected; exit 1.
+#include <CLI/CLI.hpp>
+
+#include <cinttypes>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "config/settings_load.h"
+#include "drivers/decode/decoder.h"
+#include "drivers/decode/layout_toml.h"
+#include "drivers/mock/mock_reports.h"
+#include "drivers/trk/trk_reader.h"
+#include "drivers/trk/trk_writer.h"
+#include "lungar/version.h"
+
+using namespace lungar;
+using namespace lungar::drivers;
+
+namespace {
+
+int die(const std::string& line) {
+  std::fprintf(stderr, "lungar-trk: %s\n", line.c_str());
+  return 1;
+}
+
+/// Tracker settings from --config when given, else from the log's own header.
+std::optional<config::TrackerSettings> settings_for(const TrkLog& log, const std::string& file,
+                                                    const std::string& config_path, std::string* error) {
+  if (!config_path.empty()) {
+    auto r = config::load_settings(config_path);
+    if (!r) {
+      *error = r.error;
+      return std::nullopt;
+    }
+    return r.settings->trackers;
+  }
+  if (log.header.layout_toml.empty()) {
+    *error = file + ": the log does not describe its report layout: expected --config FILE.toml";
+    return std::nullopt;
+  }
+  return layout_from_toml(log.header.layout_toml, file + " (header layout)", error);
+}
+
+int info(const std::string& file) {
+  auto r = load_trk(file);
+  if (!r.log) return die(r.error);
+  const TrkLog& log = *r.log;
+  std::printf("file: %s\nversion: %u\n", file.c_str(), log.header.version);
+  std::printf("description:\n");
+  std::string d = log.header.description;
+  std::size_t pos = 0;
+  while (pos < d.size()) {
+    std::size_t e = d.find('\n', pos);
+    if (e == std::string::npos) e = d.size();
+    std::printf("  %s\n", d.substr(pos, e - pos).c_str());
+    pos = e + 1;
+  }
+  std::map<std::string, std::size_t> sources, lengths;
+  for (const auto& rec : log.records) {
+    ++sources[to_string(rec.source)];
+    ++lengths[std::to_string(rec.report.size())];
+  }
+  const double dur_s = log.records.size() > 1
+                           ? static_cast<double>(log.records.back().t_arrival_ns - log.records.front().t_arrival_ns) * 1e-9
+                           : 0.0;
+  std::printf("records: %zu\nduration_s: %.3f\n", log.records.size(), dur_s);
+  if (dur_s > 0) std::printf("rate_hz: %.2f\n", static_cast<double>(log.records.size() - 1) / dur_s);
+  for (const auto& [k, v] : sources) std::printf("source %s: %zu\n", k.c_str(), v);
+  for (const auto& [k, v] : lengths) std::printf("report length %s: %zu\n", k.c_str(), v);
+  std::printf("layout: %s\ntruncated_tail: %s\n", log.header.layout_toml.empty() ? "absent" : "present",
+              log.truncated_tail ? "yes (the last, incomplete record is left out)" : "no");
+  return 0;
+}
+
+int dump(const std::string& file, const std::string& format, const std::string& config_path) {
+  auto r = load_trk(file);
+  if (!r.log) return die(r.error);
+  std::string error;
+  auto settings = settings_for(*r.log, file, config_path, &error);
+  if (!settings) return die(error);
+  auto layout = make_layout(*settings);
+  if (!layout.layout) return die(file + ": " + layout.error);
+  const bool csv = format == "csv";
+  if (csv) std::printf("record,t_arrival_ns,t_device_ns,role,status,x_mm,y_mm,z_mm,qw,qx,qy,qz\n");
+  DeviceClock clock;
+  std::size_t index = 0;
+  for (const auto& rec : r.log->records) {
+    DecodedReport d = decode_report(rec.report, *layout.layout);
+    std::int64_t t_dev = -1;
+    if (d.error == DecodeError::None && d.has_time) {
+      t_dev = clock.advance(d.device_ticks, layout.layout->time_bits, layout.layout->time_tick_ns);
+      if (t_dev < 0) d.error = DecodeError::TimeBackwards;
+    }
+    if (d.error != DecodeError::None) {
+      if (csv) {
+        std::printf("%zu,%" PRId64 ",,,%s,,,,,,,\n", index, rec.t_arrival_ns, to_string(d.error));
+      } else {
+        std::printf("{\"record\":%zu,\"t_arrival_ns\":%" PRId64 ",\"status\":\"%s\"}\n", index, rec.t_arrival_ns,
+                    to_string(d.error));
+      }
+    }
+    for (int k = 0; d.error == DecodeError::None && k < d.count; ++k) {
+      const auto& p = d.poses[k];
+      if (csv) {
+        std::printf("%zu,%" PRId64 ",%" PRId64 ",%s,ok,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f\n", index, rec.t_arrival_ns,
+                    t_dev, to_string(p.role), p.position_mm[0], p.position_mm[1], p.position_mm[2],
+                    p.orientation_wxyz[0], p.orientation_wxyz[1], p.orientation_wxyz[2], p.orientation_wxyz[3]);
+      } else {
+        std::printf("{\"record\":%zu,\"t_arrival_ns\":%" PRId64 ",\"t_device_ns\":%" PRId64
+                    ",\"role\":\"%s\",\"status\":\"ok\",\"position_mm\":[%.4f,%.4f,%.4f],"
+                    "\"orientation_wxyz\":[%.6f,%.6f,%.6f,%.6f]}\n",
+                    index, rec.t_arrival_ns, t_dev, to_string(p.role), p.position_mm[0], p.position_mm[1],
+                    p.position_mm[2], p.orientation_wxyz[0], p.orientation_wxyz[1], p.orientation_wxyz[2],
+                    p.orientation_wxyz[3]);
+      }
+    }
+    ++index;
+  }
+  return 0;
+}
+
+int cut(const std::string& file, const std::string& out, double from_s, double to_s) {
+  auto r = load_trk(file);
+  if (!r.log) return die(r.error);
+  if (!(to_s > from_s)) return die("--to: expected a time after --from (" + std::to_string(from_s) + " s)");
+  TrkWriter w;
+  if (!w.open(out, r.log->header, TrkWriter::Mode::Atomic)) return die(w.error());
+  const std::int64_t t0 = r.log->records.empty() ? 0 : r.log->records.front().t_arrival_ns;
+  for (const auto& rec : r.log->records) {
+    const double t = static_cast<double>(rec.t_arrival_ns - t0) * 1e-9;
+    if (t < from_s || t >= to_s) continue;
+    if (!w.append(rec.source, rec.t_arrival_ns, rec.report)) return die(w.error());
+  }
+  if (!w.commit()) return die(w.error());
+  std::fprintf(stderr, "lungar-trk: wrote %" PRIu64 " records to %s\n", w.records(), out.c_str());
+  return 0;
+}
+
+int synth(const std::string& out, const std::string& config_path, const std::string& trajectory, double seconds,
+          double rate_hz, double noise_mm, double dropout) {
+  config::TrackerSettings t;
+  if (!config_path.empty()) {
+    auto r = config::load_settings(config_path);
+    if (!r) return die(r.error);
+    t = r.settings->trackers;
+  }
+  if (!trajectory.empty()) t.mock_trajectory = trajectory;
+  if (rate_hz > 0) t.mock_rate_hz = rate_hz;
+  t.mock_noise_mm = noise_mm;
+  t.mock_dropout = dropout;
+  if (!mock_pose(t.mock_trajectory, Role::Head, 0)) {
+    return die("--trajectory: expected static | upright_to_supine | head_orbit, got \"" + t.mock_trajectory + "\"");
+  }
+  auto layout = make_layout(t);
+  if (!layout.layout) return die(layout.error);
+  TrkHeader h;
+  h.description = "source=synth\ntrajectory=" + t.mock_trajectory + "\nrate_hz=" + std::to_string(t.mock_rate_hz) +
+                  "\nseconds=" + std::to_string(seconds) + "\nnoise_mm=" + std::to_string(noise_mm) +
+                  "\ndropout=" + std::to_string(dropout) + "\n";
+  h.layout_toml = layout_to_toml(t);
+  TrkWriter w;
+  if (!w.open(out, h, TrkWriter::Mode::Atomic)) return die(w.error());
+  MockReports reports(t, *layout.layout);
+  const auto ticks = static_cast<std::int64_t>(seconds * t.mock_rate_hz);
+  const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / t.mock_rate_hz);
+  bool ok = true;
+  for (std::int64_t k = 0; k < ticks && ok; ++k) {
+    // Arrival times start at 1 s, a report's own period apart, as if read on time.
+    reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
+      ok = ok && w.append(TrkSource::Synth, 1'000'000'000 + k * period_ns, bytes);
+    });
+  }
+  if (!ok || !w.commit()) return die(w.error());
+  std::fprintf(stderr, "lungar-trk: wrote %" PRIu64 " records to %s\n", w.records(), out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lungar-trk: inspect, dump, cut and synthesise .trk tracker logs"};
+  app.set_version_flag("--version", std::string("lungar-trk ") + LUNGAR_VERSION);
+  app.require_subcommand(1);
+  std::string file, out, format = "csv", config_path, trajectory = "upright_to_supine";
+  double from_s = 0, to_s = 1e12, seconds = 6.0, rate_hz = 0, noise_mm = 0, dropout = 0;
+
+  auto* info_cmd = app.add_subcommand("info", "header, record count, duration and rate of a log");
+  info_cmd->add_option("file", file, ".trk log")->required();
+  auto* dump_cmd = app.add_subcommand("dump", "decode every record to CSV or JSON lines on stdout");
+  dump_cmd->add_option("file", file, ".trk log")->required();
+  dump_cmd->add_option("--format", format, "csv | jsonl")->check(CLI::IsMember({"csv", "jsonl"}));
+  dump_cmd->add_option("--config", config_path, "decode with this config's [trackers] layout, not the log's");
+  auto* cut_cmd = app.add_subcommand("cut", "copy the records between --from and --to seconds into a new log");
+  cut_cmd->add_option("file", file, ".trk log")->required();
+  cut_cmd->add_option("out", out, "new .trk log")->required();
+  cut_cmd->add_option("--from", from_s, "start, seconds from the first record");
+  cut_cmd->add_option("--to", to_s, "end (exclusive), seconds from the first record");
+  auto* synth_cmd = app.add_subcommand("synth", "write a log of a mock trajectory through a report layout");
+  synth_cmd->add_option("out", out, "new .trk log")->required();
+  synth_cmd->add_option("--config", config_path, "config TOML whose [trackers] layout to use (default: built-in)");
+  synth_cmd->add_option("--trajectory", trajectory, "static | upright_to_supine | head_orbit");
+  synth_cmd->add_option("--seconds", seconds, "duration, s")->check(CLI::Range(0.01, 3600.0));
+  synth_cmd->add_option("--rate-hz", rate_hz, "reports per sensor per second (default: the config's)")
+      ->check(CLI::Range(1.0, 2000.0));
+  synth_cmd->add_option("--noise-mm", noise_mm, "Gaussian position noise, mm")->check(CLI::Range(0.0, 100.0));
+  synth_cmd->add_option("--dropout", dropout, "probability of dropping a report")->check(CLI::Range(0.0, 1.0));
+  CLI11_PARSE(app, argc, argv);
+
+  if (info_cmd->parsed()) return info(file);
+  if (dump_cmd->parsed()) return dump(file, format, config_path);
+  if (cut_cmd->parsed()) return cut(file, out, from_s, to_s);
+  return synth(out, config_path, trajectory, seconds, rate_hz, noise_mm, dropout);
+}

@@ -1,0 +1,114 @@
+/// @file tracker.cpp
+/// @brief make_tracker(): layout, source, optional recording, and the thread that runs the source.
+#include "drivers/tracker/tracker.h"
+
+#include <hidapi/hidapi.h>
+
+#include <ctime>
+#include <mutex>
+#include <thread>
+
+#include "drivers/decode/layout_toml.h"
+#include "drivers/hid/hid_interface.h"
+#include "drivers/mock/mock_interface.h"
+#include "drivers/mock/mock_trajectory.h"
+#include "drivers/replay/replay_interface.h"
+#include "drivers/tracker/tracker_core.h"
+
+namespace lungar::drivers {
+
+std::int64_t monotonic_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+const char* to_string(TrackerState s) {
+  switch (s) {
+    case TrackerState::Disconnected: return "disconnected";
+    case TrackerState::Opening: return "opening";
+    case TrackerState::Streaming: return "streaming";
+    case TrackerState::Stale: return "stale";
+  }
+  return "?";
+}
+
+struct Tracker::Thread {
+  std::jthread thread;
+};
+
+Tracker::Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source)
+    : core_(std::move(core)), source_(std::move(source)), thread_(std::make_unique<Thread>()) {
+  thread_->thread = std::jthread([this](std::stop_token stop) { source_->run(*core_, stop); });
+}
+
+Tracker::~Tracker() { stop(); }
+
+void Tracker::stop() {
+  if (thread_ && thread_->thread.joinable()) {
+    thread_->thread.request_stop();
+    thread_->thread.join();
+  }
+}
+
+PoseSample Tracker::latest(Role role, std::int64_t now_ns) const { return core_->latest(role, now_ns); }
+PoseHistory Tracker::history(Role role) const { return core_->history(role); }
+PoseSample Tracker::predicted(Role role, std::int64_t t_ns, std::int64_t max_ahead_ns) const {
+  PoseSample p = predict(core_->history(role), t_ns, max_ahead_ns);
+  if (p.valid() && t_ns - p.t_arrival_ns > core_->stale_ns()) p.flags |= kPoseStale;
+  return p;
+}
+TrackerStats Tracker::stats() const { return core_->stats(); }
+TrackerState Tracker::state() const { return core_->state(); }
+bool Tracker::finished() const { return core_->finished(); }
+std::string Tracker::describe() const { return source_->describe(); }
+
+TrackerResult make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
+  TrackerResult r;
+  LayoutResult layout = make_layout(settings);
+  if (!layout.layout) {
+    r.error = "tracker report layout: " + layout.error;
+    return r;
+  }
+  std::unique_ptr<TrackerSource> source;
+  switch (settings.source) {
+    case config::TrackerSource::Mock:
+      if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
+        r.error = "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
+                  settings.mock_trajectory + "\"";
+        return r;
+      }
+      source = mock_create(settings, *layout.layout);
+      break;
+    case config::TrackerSource::Replay: {
+      TrkLoadResult log = load_trk(settings.replay_file);
+      if (!log.log) {
+        r.error = log.error;
+        return r;
+      }
+      source = replay_create(std::move(*log.log), settings.replay_file, settings.replay_realtime, settings.replay_loop);
+      break;
+    }
+    case config::TrackerSource::Hid: {
+      static std::once_flag init;  // hid_init is not thread-safe; once per process
+      std::call_once(init, [] { hid_init(); });
+      source = hid_create(settings);
+      break;
+    }
+  }
+  TrackerOptions opts = options;
+  opts.record_layout_toml = layout_to_toml(settings);
+  auto core = std::make_unique<TrackerCore>(*layout.layout, settings, opts);
+  if (!options.record_path.empty()) {
+    std::string error;
+    if (!core->start_recording(options.record_path, source->trk_description(), source->trk_source(), &error)) {
+      r.error = error;
+      return r;
+    }
+  }
+  core->log(-1, "tracker: %s", source->describe().c_str());
+  r.tracker = std::make_unique<Tracker>(std::move(core), std::move(source));
+  return r;
+}
+
+}  // namespace lungar::drivers

@@ -1,0 +1,93 @@
+/// @file tracker.h
+/// @brief The tracker API the frame loop uses: make a tracker from config, read the latest pose per role
+/// without locks, a short history for prediction, counters and the connection state.
+/// @ingroup drivers
+///
+/// make_tracker() starts one thread that reads reports (HID, mock or replay), decodes and validates them with
+/// the configured layout, and publishes accepted poses; malformed reports are counted and never published.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "config/settings.h"
+#include "drivers/decode/decoder.h"
+#include "drivers/pose/pose_history.h"
+#include "drivers/pose/pose_sample.h"
+
+namespace lungar::drivers {
+
+/// disconnected -> opening -> streaming -> stale (no report for stale_ms) -> streaming ...
+enum class TrackerState : std::uint8_t { Disconnected, Opening, Streaming, Stale };
+const char* to_string(TrackerState s);
+
+/// For the stats JSON: tracker_reports, tracker_malformed, tracker_reconnects, tracker_rate_hz.
+struct TrackerStats {
+  std::uint64_t reports = 0;     ///< reports read, accepted or not
+  std::uint64_t accepted = 0;    ///< reports decoded and published
+  std::uint64_t malformed = 0;   ///< reports dropped (sum of malformed_by_reason)
+  std::array<std::uint64_t, kDecodeErrorCount> malformed_by_reason{};  ///< indexed by DecodeError
+  std::uint64_t reconnects = 0;  ///< times the device came back after being lost
+  std::uint64_t recorded = 0;    ///< records written to the --record log
+  double rate_hz = 0;            ///< accepted reports per second over the last second
+  TrackerState state = TrackerState::Disconnected;
+};
+
+/// Monotonic clock in nanoseconds (CLOCK_MONOTONIC), the time base of t_arrival_ns.
+std::int64_t monotonic_ns();
+
+struct TrackerOptions {
+  std::string record_path;  ///< when set, every raw report read is appended to this .trk log
+  /// One line per event (opened, lost, malformed reports at a limited rate); default: stderr with a timestamp.
+  std::function<void(const std::string& line)> log;
+  /// Called on the tracker thread for every accepted sample (tests, recording of poses); must not block.
+  std::function<void(const PoseSample&)> on_sample;
+  /// TOML of the [trackers...] layout tables for the .trk header (make_tracker fills it from the settings).
+  std::string record_layout_toml;
+};
+
+class TrackerCore;
+class TrackerSource;
+
+class Tracker {
+ public:
+  Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source);
+  ~Tracker();  ///< stops and joins the thread
+  Tracker(const Tracker&) = delete;
+  Tracker& operator=(const Tracker&) = delete;
+
+  /// The newest accepted pose of `role`, flagged kPoseStale when older than stale_ms at `now_ns`; a default
+  /// (invalid) sample before the first. Lock-free; callable from any thread.
+  PoseSample latest(Role role, std::int64_t now_ns) const;
+  /// The newest samples of `role` (a copy, lock-free).
+  PoseHistory history(Role role) const;
+  /// latest() extrapolated at constant velocity to `t_ns`, at most `max_ahead_ns` past the newest sample.
+  PoseSample predicted(Role role, std::int64_t t_ns, std::int64_t max_ahead_ns) const;
+  TrackerStats stats() const;
+  TrackerState state() const;
+  /// True once a finite source (replay without loop) has delivered everything.
+  bool finished() const;
+  /// "mock upright_to_supine", "hid /dev/hidraw0 (1234:5678 SN0001)", "replay FILE" ...
+  std::string describe() const;
+  void stop();
+
+ private:
+  std::unique_ptr<TrackerCore> core_;
+  std::unique_ptr<TrackerSource> source_;
+  struct Thread;
+  std::unique_ptr<Thread> thread_;
+};
+
+struct TrackerResult {
+  std::unique_ptr<Tracker> tracker;
+  std::string error;  ///< one line naming what is wrong (layout, replay file, record file)
+};
+
+/// Builds the source named by settings.source (mock | hid | replay) and starts its thread. A HID tracker that
+/// is not plugged in is not an error: it starts disconnected and opens the device when it appears.
+TrackerResult make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options = {});
+
+}  // namespace lungar::drivers

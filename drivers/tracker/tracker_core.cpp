@@ -1,0 +1,172 @@
+/// @file tracker_core.cpp
+/// @brief Validation, publication, counters, staleness and rate-limited logging for every source.
+#include "drivers/tracker/tracker_core.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <ctime>
+
+namespace lungar::drivers {
+
+namespace {
+
+constexpr std::int64_t kSecond = 1'000'000'000;
+
+void default_log(const std::string& line) {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  tm utc{};
+  gmtime_r(&ts.tv_sec, &utc);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%S", &utc);
+  std::fprintf(stderr, "%s.%03ldZ %s\n", stamp, ts.tv_nsec / 1'000'000, line.c_str());
+}
+
+}  // namespace
+
+TrackerCore::TrackerCore(const ReportLayout& layout, const config::TrackerSettings& settings, TrackerOptions options)
+    : layout_(layout), stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)), options_(std::move(options)) {
+  if (!options_.log) options_.log = default_log;
+}
+
+bool TrackerCore::start_recording(const std::string& path, const std::string& description, TrkSource source,
+                                  std::string* error) {
+  TrkHeader h;
+  h.description = description;
+  h.layout_toml = options_.record_layout_toml;
+  if (!recorder_.open(path, h, TrkWriter::Mode::AppendLog)) {
+    if (error) *error = recorder_.error();
+    return false;
+  }
+  record_source = source;
+  recording_ = true;
+  return true;
+}
+
+void TrackerCore::log(int key, const char* fmt, ...) {
+  const std::int64_t now = monotonic_ns();
+  if (key >= 0 && key < static_cast<int>(log_last_ns_.size())) {
+    // At most one line per key and second: a flood of malformed reports must not become a flood of lines.
+    if (log_last_ns_[key] != 0 && now - log_last_ns_[key] < kSecond) {
+      ++log_suppressed_[key];
+      return;
+    }
+    log_last_ns_[key] = now;
+  }
+  char buf[512];
+  int n = std::snprintf(buf, sizeof buf, "drivers: ");
+  va_list args;
+  va_start(args, fmt);
+  n += std::vsnprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), fmt, args);
+  va_end(args);
+  if (key >= 0 && key < static_cast<int>(log_suppressed_.size()) && log_suppressed_[key] > 0 &&
+      n < static_cast<int>(sizeof buf)) {
+    std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), " (%llu more like it not shown)",
+                  static_cast<unsigned long long>(log_suppressed_[key]));
+    log_suppressed_[key] = 0;
+  }
+  options_.log(buf);
+}
+
+DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t t_arrival_ns) {
+  reports_.fetch_add(1, std::memory_order_relaxed);
+  if (recording_) {
+    if (recorder_.append(record_source, t_arrival_ns, report)) {
+      recorded_.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      log(-1, "recording stopped: %s", recorder_.error().c_str());
+      recording_ = false;
+    }
+  }
+  const DecodedReport d = decode_report(report, layout_);
+  DecodeError error = d.error;
+  std::int64_t t_device = t_arrival_ns;
+  if (error == DecodeError::None && d.has_time) {
+    const std::int64_t t = clock_.advance(d.device_ticks, layout_.time_bits, layout_.time_tick_ns);
+    if (t < 0) {
+      error = DecodeError::TimeBackwards;
+    } else {
+      if (rebase_) {  // first report after a reconnect: continue from where the old clock stopped
+        device_base_ns_ = (last_device_ns_ < 0 ? 0 : last_device_ns_) - t + (t_arrival_ns - last_arrival_ns_);
+        rebase_ = false;
+      }
+      t_device = device_base_ns_ + t;
+    }
+  }
+  if (error != DecodeError::None) {
+    malformed_[static_cast<std::size_t>(error)].fetch_add(1, std::memory_order_relaxed);
+    log(static_cast<int>(error), "malformed report dropped (%zu bytes): %s", report.size(), to_string(error));
+    return error;
+  }
+  last_device_ns_ = t_device;
+  last_arrival_ns_ = t_arrival_ns;
+  for (int k = 0; k < d.count; ++k) {
+    const DecodedPose& p = d.poses[k];
+    PoseSample s;
+    s.role = p.role;
+    s.flags = kPoseValid | (d.has_time ? 0u : static_cast<std::uint32_t>(kPoseNoDeviceTime));
+    s.t_device_ns = t_device;
+    s.t_arrival_ns = t_arrival_ns;
+    s.position_mm = p.position_mm;
+    s.orientation_wxyz = p.orientation_wxyz;
+    const auto r = static_cast<std::size_t>(p.role);
+    latest_[r].publish(s);
+    history_[r].push(s);
+    history_mail_[r].publish(history_[r]);
+    if (options_.on_sample) options_.on_sample(s);
+  }
+  accepted_.fetch_add(1, std::memory_order_relaxed);
+  last_accepted_ns_.store(t_arrival_ns, std::memory_order_release);
+  if (state() != TrackerState::Streaming) set_state(TrackerState::Streaming);
+  ++rate_window_count_;
+  tick(t_arrival_ns);
+  return DecodeError::None;
+}
+
+void TrackerCore::tick(std::int64_t now_ns) {
+  if (rate_window_start_ns_ == 0) rate_window_start_ns_ = now_ns;
+  const std::int64_t span = now_ns - rate_window_start_ns_;
+  if (span >= kSecond) {
+    rate_hz_.store(static_cast<double>(rate_window_count_) * 1e9 / static_cast<double>(span),
+                   std::memory_order_relaxed);
+    rate_window_start_ns_ = now_ns;
+    rate_window_count_ = 0;
+  }
+  if (state() == TrackerState::Streaming && now_ns - last_accepted_ns_.load(std::memory_order_acquire) > stale_ns_) {
+    set_state(TrackerState::Stale);
+  }
+}
+
+void TrackerCore::set_state(TrackerState s) {
+  const TrackerState old = state_.exchange(s, std::memory_order_acq_rel);
+  if (old != s) log(-1, "tracker %s -> %s", to_string(old), to_string(s));
+}
+
+void TrackerCore::count_reconnect() {
+  reconnects_.fetch_add(1, std::memory_order_relaxed);
+  clock_.reset();
+  rebase_ = true;
+}
+
+PoseSample TrackerCore::latest(Role role, std::int64_t now_ns) const {
+  PoseSample s = latest_[static_cast<std::size_t>(role)].read();
+  if (s.valid() && now_ns - s.t_arrival_ns > stale_ns_) s.flags |= kPoseStale;
+  return s;
+}
+
+TrackerStats TrackerCore::stats() const {
+  TrackerStats t;
+  t.reports = reports_.load(std::memory_order_relaxed);
+  t.accepted = accepted_.load(std::memory_order_relaxed);
+  for (int k = 0; k < kDecodeErrorCount; ++k) {
+    t.malformed_by_reason[k] = malformed_[k].load(std::memory_order_relaxed);
+    t.malformed += t.malformed_by_reason[k];
+  }
+  t.reconnects = reconnects_.load(std::memory_order_relaxed);
+  t.recorded = recorded_.load(std::memory_order_relaxed);
+  t.rate_hz = rate_hz_.load(std::memory_order_relaxed);
+  t.state = state();
+  return t;
+}
+
+}  // namespace lungar::drivers

@@ -1,0 +1,80 @@
+/// @file tracker_core.h
+/// @brief The pipeline every source feeds: raw report -> record -> decode -> validate -> publish, with counters.
+/// @ingroup drivers
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "drivers/decode/decoder.h"
+#include "drivers/pose/mailbox.h"
+#include "drivers/tracker/tracker.h"
+#include "drivers/trk/trk_writer.h"
+
+namespace lungar::drivers {
+
+class TrackerCore {
+ public:
+  TrackerCore(const ReportLayout& layout, const config::TrackerSettings& settings, TrackerOptions options);
+
+  /// Opens the --record log with the device's description in its header. False with `error` on failure.
+  bool start_recording(const std::string& path, const std::string& description, TrkSource source,
+                       std::string* error);
+
+  /// One raw report read at `t_arrival_ns` (monotonic). Records it, decodes it, and publishes its poses or
+  /// counts why not. Allocates nothing (unless a callback or the rate-limited log does).
+  DecodeError feed(std::span<const std::uint8_t> report, std::int64_t t_arrival_ns);
+
+  /// Between reads: streaming -> stale after stale_ms without an accepted report; the rate decays to 0.
+  void tick(std::int64_t now_ns);
+  void set_state(TrackerState s);
+  /// The device came back: counts it; its clock may have restarted, so device time is re-based.
+  void count_reconnect();
+  void set_finished() { finished_.store(true, std::memory_order_release); }
+
+  /// One log line, "drivers: " prefixed; `key` groups lines for rate limiting (-1: never limited).
+  void log(int key, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
+
+  PoseSample latest(Role role, std::int64_t now_ns) const;
+  PoseHistory history(Role role) const { return history_mail_[static_cast<std::size_t>(role)].read(); }
+  TrackerStats stats() const;
+  TrackerState state() const { return state_.load(std::memory_order_acquire); }
+  bool finished() const { return finished_.load(std::memory_order_acquire); }
+  const ReportLayout& layout() const { return layout_; }
+  std::int64_t stale_ns() const { return stale_ns_; }
+  TrkSource record_source = TrkSource::Hid;
+
+ private:
+  const ReportLayout layout_;
+  const std::int64_t stale_ns_;
+  TrackerOptions options_;
+  TrkWriter recorder_;
+  bool recording_ = false;
+
+  // Written by the tracker thread only.
+  DeviceClock clock_;
+  bool rebase_ = false;
+  std::int64_t device_base_ns_ = 0;
+  std::int64_t last_device_ns_ = -1;
+  std::int64_t last_arrival_ns_ = 0;
+  std::int64_t rate_window_start_ns_ = 0;
+  std::uint64_t rate_window_count_ = 0;
+  std::array<PoseHistory, kRoleCount> history_{};
+  std::array<std::int64_t, 16> log_last_ns_{};
+  std::array<std::uint64_t, 16> log_suppressed_{};
+
+  // Read by any thread.
+  std::array<LatestMailbox<PoseSample>, kRoleCount> latest_;
+  std::array<LatestMailbox<PoseHistory>, kRoleCount> history_mail_;
+  std::atomic<std::uint64_t> reports_{0}, accepted_{0}, reconnects_{0}, recorded_{0};
+  std::array<std::atomic<std::uint64_t>, kDecodeErrorCount> malformed_{};
+  std::atomic<std::int64_t> last_accepted_ns_{0};
+  std::atomic<double> rate_hz_{0};
+  std::atomic<TrackerState> state_{TrackerState::Disconnected};
+  std::atomic<bool> finished_{false};
+};
+
+}  // namespace lungar::drivers

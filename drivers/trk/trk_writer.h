@@ -1,0 +1,50 @@
+/// @file trk_writer.h
+/// @brief Writes .trk logs: as a crash-tolerant append log (recording), or atomically (cut, synth).
+/// @ingroup drivers
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "drivers/trk/trk_format.h"
+
+namespace lungar::drivers {
+
+class TrkWriter {
+ public:
+  enum class Mode {
+    /// The header lands under the final name at once (written beside it, then renamed); every record is one
+    /// write() appended to it, so whatever is on disk after a crash reads back, short the last record.
+    AppendLog,
+    /// Everything goes to "<path>.partial" and becomes `path` only on commit(): no half file under the final name.
+    Atomic,
+  };
+
+  TrkWriter() = default;
+  ~TrkWriter();
+  TrkWriter(const TrkWriter&) = delete;
+  TrkWriter& operator=(const TrkWriter&) = delete;
+
+  /// Creates the log. False with error() ("FILE: what") on failure.
+  bool open(const std::string& path, const TrkHeader& header, Mode mode);
+  /// Appends one record; allocates nothing. False with error() on failure (the record is lost).
+  bool append(TrkSource source, std::int64_t t_arrival_ns, std::span<const std::uint8_t> report);
+  /// Atomic mode: flushes and renames into place. AppendLog: flushes and closes. False with error() on failure.
+  bool commit();
+  bool is_open() const { return fd_ >= 0; }
+  const std::string& error() const { return error_; }
+  std::uint64_t records() const { return records_; }
+
+ private:
+  bool fail(const std::string& what);
+  int fd_ = -1;
+  Mode mode_ = Mode::AppendLog;
+  std::string path_, temp_path_, error_;
+  std::uint64_t records_ = 0;
+};
+
+/// The header bytes as they go to disk (magic .. CRC).
+std::string encode_trk_header(const TrkHeader& header);
+
+}  // namespace lungar::drivers

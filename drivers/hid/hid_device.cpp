@@ -52,9 +52,8 @@ class HidDevice final : public TrackerSource {
           if (ever_streamed) core.count_reconnect();
           ever_streamed = true;
           backoff = backoff0_ns_;
-          core.set_state(TrackerState::Streaming);
-          core.tick(monotonic_ns());  // the stale clock starts at the open
-          last_good_ns_ = monotonic_ns();
+          core.count_open();  // stays "opening" until the first accepted report
+          next_presence_check = monotonic_ns() + backoff0_ns_;
         } else {
           core.set_state(TrackerState::Disconnected);
           next_attempt = monotonic_ns() + backoff;
@@ -70,14 +69,11 @@ class HidDevice final : public TrackerSource {
         lose(core, next_attempt, backoff);
         continue;
       }
-      if (n > 0) {
-        core.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), t);
-        last_good_ns_ = t;
-      }
+      if (n > 0) core.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), t);
       core.tick(t);
       // A silent device may have been unplugged without the read failing (some kernels, emulated nodes):
-      // when stale, look for it in the enumeration now and then.
-      if (core.state() == TrackerState::Stale && t >= next_presence_check) {
+      // when it says nothing, look for it in the enumeration now and then.
+      if (core.state() != TrackerState::Streaming && t >= next_presence_check) {
         next_presence_check = t + backoff0_ns_;
         if (!hid_probe(probe_settings())) {
           core.log(-1, "hid: %s is gone from the bus; reopening", found_.path.c_str());
@@ -140,7 +136,6 @@ class HidDevice final : public TrackerSource {
   int read_timeout_ms_;
   hid_device* dev_ = nullptr;
   HidFound found_;
-  std::int64_t last_good_ns_ = 0;
   UsbHotplug hotplug_;
 };
 

@@ -20,7 +20,8 @@
 
 namespace lungar::drivers {
 
-/// disconnected -> opening -> streaming -> stale (no report for stale_ms) -> streaming ...
+/// disconnected -> opening (found and opened, no report yet) -> streaming -> stale (no report for stale_ms)
+/// -> streaming ...; a lost device goes back to disconnected.
 enum class TrackerState : std::uint8_t { Disconnected, Opening, Streaming, Stale };
 const char* to_string(TrackerState s);
 
@@ -30,6 +31,7 @@ struct TrackerStats {
   std::uint64_t accepted = 0;    ///< reports decoded and published
   std::uint64_t malformed = 0;   ///< reports dropped (sum of malformed_by_reason)
   std::array<std::uint64_t, kDecodeErrorCount> malformed_by_reason{};  ///< indexed by DecodeError
+  std::uint64_t opens = 0;       ///< times the device was opened (a HID device: opening until its first report)
   std::uint64_t reconnects = 0;  ///< times the device came back after being lost
   std::uint64_t recorded = 0;    ///< records written to the --record log
   double rate_hz = 0;            ///< accepted reports per second over the last second

@@ -162,6 +162,7 @@ TrackerStats TrackerCore::stats() const {
     t.malformed_by_reason[k] = malformed_[k].load(std::memory_order_relaxed);
     t.malformed += t.malformed_by_reason[k];
   }
+  t.opens = opens_.load(std::memory_order_relaxed);
   t.reconnects = reconnects_.load(std::memory_order_relaxed);
   t.recorded = recorded_.load(std::memory_order_relaxed);
   t.rate_hz = rate_hz_.load(std::memory_order_relaxed);

@@ -33,6 +33,8 @@ class TrackerCore {
   void set_state(TrackerState s);
   /// The device came back: counts it; its clock may have restarted, so device time is re-based.
   void count_reconnect();
+  /// The device was opened (stats().opens).
+  void count_open() { opens_.fetch_add(1, std::memory_order_relaxed); }
   void set_finished() { finished_.store(true, std::memory_order_release); }
 
   /// One log line, "drivers: " prefixed; `key` groups lines for rate limiting (-1: never limited).
@@ -69,7 +71,7 @@ class TrackerCore {
   // Read by any thread.
   std::array<LatestMailbox<PoseSample>, kRoleCount> latest_;
   std::array<LatestMailbox<PoseHistory>, kRoleCount> history_mail_;
-  std::atomic<std::uint64_t> reports_{0}, accepted_{0}, reconnects_{0}, recorded_{0};
+  std::atomic<std::uint64_t> reports_{0}, accepted_{0}, opens_{0}, reconnects_{0}, recorded_{0};
   std::array<std::atomic<std::uint64_t>, kDecodeErrorCount> malformed_{};
   std::atomic<std::int64_t> last_accepted_ns_{0};
   std::atomic<double> rate_hz_{0};

@@ -1,0 +1,325 @@
+// Tests of drivers/decode: every field type, both endiannesses, component orders and signs, Euler sequences,
+// axis remaps (mirrors included), station and fixed-offset sensors, and each way a report is malformed.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "drivers/decode/decoder.h"
+#include "drivers/decode/encoder.h"
+
+using namespace lungar;
+using namespace lungar::drivers;
+
+namespace {
+
+constexpr double kPosTolMm = 0.01;   // i32 at 0.01 mm per unit: half a unit of rounding
+constexpr double kRotTolRad = 2e-4;  // Q2.14 quaternion components: ~6e-5 each
+
+/// A hand-built report: bytes placed one by one, so the decoder is checked against the layout as documented.
+struct Bytes {
+  std::vector<std::uint8_t> b;
+  explicit Bytes(std::size_t n) : b(n, 0) {}
+  void u8(std::size_t at, std::uint8_t v) { b[at] = v; }
+  void u16(std::size_t at, std::uint16_t v, bool big) {
+    b[at + (big ? 0 : 1)] = static_cast<std::uint8_t>(v >> 8);
+    b[at + (big ? 1 : 0)] = static_cast<std::uint8_t>(v);
+  }
+  void u32(std::size_t at, std::uint32_t v, bool big) {
+    for (int k = 0; k < 4; ++k) b[at + (big ? 3 - k : k)] = static_cast<std::uint8_t>(v >> (8 * k));
+  }
+  void f32(std::size_t at, float v, bool big) { u32(at, std::bit_cast<std::uint32_t>(v), big); }
+};
+
+ReportLayout layout_of(const config::TrackerSettings& t) {
+  auto r = make_layout(t);
+  EXPECT_TRUE(r.layout) << r.error;
+  return r.layout.value_or(ReportLayout{});
+}
+
+DecodedPose pose(Role role, std::array<double, 3> p, quat::Q q) {
+  DecodedPose d;
+  d.role = role;
+  d.position_mm = p;
+  d.orientation_wxyz = quat::normalized(q);
+  return d;
+}
+
+void expect_same_pose(const DecodedPose& got, const DecodedPose& want, double pos_tol = kPosTolMm,
+                      double rot_tol = kRotTolRad) {
+  EXPECT_EQ(got.role, want.role);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(got.position_mm[i], want.position_mm[i], pos_tol) << "axis " << i;
+  EXPECT_LT(quat::angle_between(got.orientation_wxyz, want.orientation_wxyz), rot_tol);
+}
+
+}  // namespace
+
+TEST(Decode, DefaultLayoutByHand) {
+  const config::TrackerSettings t;  // 32 bytes: id 1, station, u32 time, 3 x i32 0.01 mm, 4 x Q2.14 w,x,y,z
+  const ReportLayout l = layout_of(t);
+  Bytes r(32);
+  r.u8(0, 1);
+  r.u8(1, 2);  // patient
+  r.u32(2, 123456, false);
+  r.u32(6, static_cast<std::uint32_t>(12345), false);     // 123.45 mm
+  r.u32(10, static_cast<std::uint32_t>(-2000), false);    // -20 mm
+  r.u32(14, static_cast<std::uint32_t>(100000), false);   // 1000 mm
+  r.u16(18, 11585, false);                                // w = cos 45 deg in Q2.14
+  r.u16(20, 11585, false);                                // x
+  const DecodedReport d = decode_report(r.b, l);
+  ASSERT_EQ(d.error, DecodeError::None);
+  ASSERT_EQ(d.count, 1);
+  EXPECT_TRUE(d.has_time);
+  EXPECT_EQ(d.device_ticks, 123456u);
+  expect_same_pose(d.poses[0], pose(Role::Patient, {123.45, -20, 1000}, quat::about(0, M_PI / 2)));
+}
+
+TEST(Decode, EveryFieldTypeInBothEndiannesses) {
+  const config::FieldType types[] = {config::FieldType::I16, config::FieldType::I32, config::FieldType::F32,
+                                     config::FieldType::Fixed16, config::FieldType::Fixed32};
+  for (bool big : {false, true}) {
+    for (config::FieldType pt : types) {
+      for (config::FieldType ot : types) {
+        SCOPED_TRACE(std::string(to_string(pt)) + " / " + to_string(ot) + (big ? " big" : " little"));
+        config::TrackerSettings t;
+        t.report.endian = big ? config::Endian::Big : config::Endian::Little;
+        t.report.position_type = pt;
+        // Ranges that hold 1234 mm: i16 in 0.1 mm, Q11.4 in mm, i32 in 0.01 mm, Q23.8 in 0.01 mm, f32 in mm.
+        t.report.position_frac_bits = pt == config::FieldType::Fixed16 ? 4 : pt == config::FieldType::Fixed32 ? 8 : 0;
+        t.report.position_scale = pt == config::FieldType::I16 ? 0.1
+                                  : (pt == config::FieldType::F32 || pt == config::FieldType::Fixed16) ? 1.0
+                                                                                                      : 0.01;
+        t.report.orientation_type = ot;
+        t.report.orientation_frac_bits = ot == config::FieldType::Fixed16 ? 14 : ot == config::FieldType::Fixed32 ? 30 : 0;
+        t.report.orientation_scale =
+            ot == config::FieldType::I16 ? 1.0 / 16384 : ot == config::FieldType::I32 ? 1.0 / (1 << 30) : 1.0;
+        t.report.length = 48;
+        t.report.orientation_offset = 12;
+        const ReportLayout l = layout_of(t);
+        // Hand-encode the raw values of position (100.5, -42.25, 1234.0) mm and a 30-degree turn about z.
+        const std::array<double, 3> pos = {100.5, -42.25, 1234.0};
+        const quat::Q q = quat::about(2, M_PI / 6);
+        Bytes r(48);
+        r.u8(0, 1);
+        r.u8(1, 1);
+        auto put = [&](std::size_t at, config::FieldType type, int frac, double scale, double value) {
+          const double raw = std::ldexp(value / scale, frac);
+          switch (type) {
+            case config::FieldType::I16:
+            case config::FieldType::Fixed16:
+              r.u16(at, static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(raw))), big);
+              return 2;
+            case config::FieldType::I32:
+            case config::FieldType::Fixed32:
+              r.u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(std::llround(raw))), big);
+              return 4;
+            case config::FieldType::F32: r.f32(at, static_cast<float>(raw), big); return 4;
+          }
+          return 0;
+        };
+        std::size_t at = 6;
+        for (double v : pos) at += put(at, pt, t.report.position_frac_bits, t.report.position_scale, v);
+        at = 18;
+        for (double v : q) at += put(at, ot, t.report.orientation_frac_bits, t.report.orientation_scale, v);
+        const DecodedReport d = decode_report(r.b, l);
+        ASSERT_EQ(d.error, DecodeError::None) << to_string(d.error);
+        ASSERT_EQ(d.count, 1);
+        // Half a unit of the type's resolution, plus rounding: 0.05 mm (i16), 1/32 mm (Q11.4), 0.005 mm (i32).
+        const double pos_tol = pt == config::FieldType::I16 ? 0.0501 : pt == config::FieldType::Fixed16 ? 0.0313 : 0.005;
+        const double rot_tol = ot == config::FieldType::I16 || ot == config::FieldType::Fixed16 ? kRotTolRad : 1e-6;
+        expect_same_pose(d.poses[0], pose(Role::Head, pos, q), pos_tol, rot_tol);
+      }
+    }
+  }
+}
+
+TEST(Decode, QuaternionOrderAndSignsFollowTheComponentList) {
+  config::TrackerSettings t;
+  t.report.orientation_components = "x,y,z,w";
+  t.report.position_components = "-y,x,z";  // the device sends -y first, then x, then z
+  const ReportLayout l = layout_of(t);
+  Bytes r(32);
+  r.u8(0, 1);
+  r.u8(1, 1);
+  r.u32(6, static_cast<std::uint32_t>(-500), false);  // -y = -5 mm -> y = 5
+  r.u32(10, 700, false);                              // x = 7
+  r.u32(14, 900, false);                              // z = 9
+  const quat::Q q = quat::about(1, 0.3);              // w, x, y, z
+  r.u16(18, static_cast<std::uint16_t>(std::lround(q[1] * 16384)), false);  // x first
+  r.u16(20, static_cast<std::uint16_t>(std::lround(q[2] * 16384)), false);
+  r.u16(22, static_cast<std::uint16_t>(std::lround(q[3] * 16384)), false);
+  r.u16(24, static_cast<std::uint16_t>(std::lround(q[0] * 16384)), false);  // w last
+  const DecodedReport d = decode_report(r.b, l);
+  ASSERT_EQ(d.error, DecodeError::None);
+  expect_same_pose(d.poses[0], pose(Role::Head, {7, 5, 9}, q));
+}
+
+TEST(Decode, EulerSequencesMatchTheirRotationProducts) {
+  const char* sequences[] = {"zyx", "xyz", "yxz", "zxy", "xzy", "yzx"};
+  for (const char* seq : sequences) {
+    SCOPED_TRACE(seq);
+    config::TrackerSettings t;
+    t.report.orientation = config::OrientationKind::Euler;
+    t.report.orientation_components = "z,y,-x";  // angles about z, y, then minus the angle about x
+    t.report.orientation_type = config::FieldType::F32;
+    t.report.orientation_frac_bits = 0;
+    t.report.euler_sequence = seq;
+    const ReportLayout l = layout_of(t);
+    const double az = 40, ay = -25, ax = 60;  // degrees
+    Bytes r(32);
+    r.u8(0, 1);
+    r.u8(1, 1);
+    r.f32(18, static_cast<float>(az), false);
+    r.f32(22, static_cast<float>(ay), false);
+    r.f32(26, static_cast<float>(-ax), false);
+    const DecodedReport d = decode_report(r.b, l);
+    ASSERT_EQ(d.error, DecodeError::None);
+    const double rad[3] = {ax * M_PI / 180, ay * M_PI / 180, az * M_PI / 180};
+    const int a = seq[0] - 'x', b = seq[1] - 'x', c = seq[2] - 'x';
+    const quat::Q want = quat::mul(quat::mul(quat::about(a, rad[a]), quat::about(b, rad[b])), quat::about(c, rad[c]));
+    expect_same_pose(d.poses[0], pose(Role::Head, {0, 0, 0}, want), kPosTolMm, 1e-6);
+  }
+}
+
+TEST(Decode, AxisRemapIsAChangeOfBasisEvenForAMirror) {
+  for (const char* remap : {"x,-z,y", "-x,y,z", "y,x,z", "z,x,y"}) {
+    SCOPED_TRACE(remap);
+    config::TrackerSettings ident;
+    config::TrackerSettings t;
+    t.axis_remap = remap;
+    t.world_offset_mm = {10, 20, 30};
+    const ReportLayout li = layout_of(ident), lr = layout_of(t);
+    std::array<std::uint8_t, 32> buf{};
+    const DecodedPose device = pose(Role::Head, {100, 200, 300}, quat::about(2, 0.5));
+    encode_report(li, std::span<const DecodedPose>(&device, 1), 0, buf);  // tracker-frame bytes
+    const DecodedReport d = decode_report(buf, lr);
+    ASSERT_EQ(d.error, DecodeError::None);
+    // Expected: p' = M p + offset; R' = M R M^T.
+    const auto axes = *config::parse_signed_axes(remap, "xyz");
+    quat::M m{};
+    for (int i = 0; i < 3; ++i) m[i][axes[i].index] = axes[i].sign;
+    const quat::M rd = quat::to_matrix(device.orientation_wxyz);
+    quat::M want{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+          for (int n = 0; n < 3; ++n) want[i][j] += m[i][k] * rd[k][n] * m[j][n];
+    const quat::M got = quat::to_matrix(d.poses[0].orientation_wxyz);
+    for (int i = 0; i < 3; ++i) {
+      double p = t.world_offset_mm[i];
+      for (int j = 0; j < 3; ++j) p += m[i][j] * device.position_mm[j];
+      EXPECT_NEAR(d.poses[0].position_mm[i], p, kPosTolMm);
+      for (int j = 0; j < 3; ++j) EXPECT_NEAR(got[i][j], want[i][j], 1e-3) << i << "," << j;
+    }
+  }
+}
+
+TEST(Decode, FixedOffsetSensorsShareOneUnnumberedReport) {
+  config::TrackerSettings t;
+  t.report.report_id = -1;
+  t.report.station_offset = -1;
+  t.report.time_offset = 48;
+  t.report.time_bits = 16;
+  t.report.length = 50;
+  t.head = {true, 0, 0};
+  t.patient = {true, 0, 24};
+  const ReportLayout l = layout_of(t);
+  const std::array<DecodedPose, 2> poses = {pose(Role::Head, {1, 2, 3}, quat::about(0, 0.1)),
+                                            pose(Role::Patient, {-4, -5, 6}, quat::about(1, -0.2))};
+  std::array<std::uint8_t, 50> buf{};
+  ASSERT_TRUE(encode_report(l, poses, 0xBEEF, buf));
+  const DecodedReport d = decode_report(buf, l);
+  ASSERT_EQ(d.error, DecodeError::None);
+  ASSERT_EQ(d.count, 2);
+  EXPECT_EQ(d.device_ticks, 0xBEEFu);
+  expect_same_pose(d.poses[0], poses[0]);
+  expect_same_pose(d.poses[1], poses[1]);
+}
+
+TEST(Decode, EncoderRoundTripsThroughEveryConvention) {
+  config::TrackerSettings t;
+  t.report.endian = config::Endian::Big;
+  t.report.orientation = config::OrientationKind::Euler;
+  t.report.orientation_components = "y,-x,z";
+  t.report.orientation_type = config::FieldType::Fixed32;
+  t.report.orientation_frac_bits = 16;
+  t.report.euler_sequence = "yxz";
+  t.axis_remap = "-y,x,z";
+  const ReportLayout l = layout_of(t);
+  for (double a = -3.0; a <= 3.0; a += 0.37) {
+    const DecodedPose p = pose(Role::Patient, {a * 100, -a * 50, 1000 + a},
+                               quat::mul(quat::about(2, a), quat::mul(quat::about(0, 0.4 * a), quat::about(1, 0.3))));
+    std::array<std::uint8_t, 32> buf{};
+    ASSERT_TRUE(encode_report(l, std::span<const DecodedPose>(&p, 1), 7, buf));
+    const DecodedReport d = decode_report(buf, l);
+    ASSERT_EQ(d.error, DecodeError::None);
+    expect_same_pose(d.poses[0], p, kPosTolMm, 1e-4);
+  }
+}
+
+TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
+  const config::TrackerSettings t;
+  const ReportLayout l = layout_of(t);
+  std::array<std::uint8_t, 32> good{};
+  const DecodedPose p = pose(Role::Head, {1, 2, 3}, {1, 0, 0, 0});
+  ASSERT_TRUE(encode_report(l, std::span<const DecodedPose>(&p, 1), 0, good));
+  ASSERT_EQ(decode_report(good, l).error, DecodeError::None);
+
+  EXPECT_EQ(decode_report(std::span<const std::uint8_t>(good.data(), 31), l).error, DecodeError::WrongLength);
+  EXPECT_EQ(decode_report(std::span<const std::uint8_t>(), l).error, DecodeError::WrongLength);
+  auto bad = good;
+  bad[0] = 2;
+  EXPECT_EQ(decode_report(bad, l).error, DecodeError::UnknownReportId);
+  bad = good;
+  bad[1] = 3;  // the stylus' station, but the stylus is disabled
+  EXPECT_EQ(decode_report(bad, l).error, DecodeError::UnknownStation);
+  bad = good;
+  bad[18] = 0x00;
+  bad[19] = 0x48;  // w = 1.125: norm off by 0.125 > 0.05
+  EXPECT_EQ(decode_report(bad, l).error, DecodeError::QuaternionNorm);
+  bad = good;
+  bad[14] = 0xFF;
+  bad[15] = 0xFF;
+  bad[16] = 0xFF;
+  bad[17] = 0x7F;  // z = 21 km
+  EXPECT_EQ(decode_report(bad, l).error, DecodeError::OutsideWorkspace);
+
+  config::TrackerSettings f = t;
+  f.report.position_type = config::FieldType::F32;
+  f.report.position_scale = 1.0;
+  const ReportLayout lf = layout_of(f);
+  std::array<std::uint8_t, 32> fb{};
+  ASSERT_TRUE(encode_report(lf, std::span<const DecodedPose>(&p, 1), 0, fb));
+  ASSERT_EQ(decode_report(fb, lf).error, DecodeError::None);
+  for (float v : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    const auto u = std::bit_cast<std::uint32_t>(v);
+    for (int k = 0; k < 4; ++k) fb[10 + k] = static_cast<std::uint8_t>(u >> (8 * k));
+    EXPECT_EQ(decode_report(fb, lf).error, DecodeError::NotFinite);
+  }
+}
+
+TEST(Decode, DeviceClockUnwrapsAndRejectsBackwardsTime) {
+  DeviceClock c;
+  EXPECT_EQ(c.advance(65530, 16, 1000.0), 0);
+  EXPECT_EQ(c.advance(65535, 16, 1000.0), 5000);
+  EXPECT_EQ(c.advance(4, 16, 1000.0), 10000);  // wrapped
+  EXPECT_EQ(c.advance(4, 16, 1000.0), 10000);  // equal time is fine (several stations per frame)
+  EXPECT_EQ(c.advance(2, 16, 1000.0), -1);     // backwards
+  EXPECT_EQ(c.advance(10, 16, 1000.0), 16000);
+  DeviceClock w;
+  EXPECT_EQ(w.advance(0xFFFFFFF0u, 32, 1.0), 0);
+  EXPECT_EQ(w.advance(0x10u, 32, 1.0), 0x20);
+}
+
+TEST(Decode, LayoutErrorsNameTheKey) {
+  config::TrackerSettings t;
+  t.report.length = 20;
+  EXPECT_EQ(make_layout(t).error, "trackers.head.offset: expected the sensor's fields inside the report");
+  t = {};
+  t.axis_remap = "x,x,z";
+  EXPECT_EQ(make_layout(t).error, "trackers.axis_remap: expected a signed permutation of x,y,z");
+}

@@ -1,0 +1,170 @@
+// Tests of drivers/tracker through make_tracker(): replay of the committed recording against its expected
+// poses, mock streaming with recording to .trk, staleness, and errors for bad settings.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+#include "drivers/pose/quat.h"
+#include "drivers/tracker/tracker.h"
+#include "drivers/trk/trk_reader.h"
+#include "test_data.h"
+
+using namespace lungar;
+using namespace lungar::drivers;
+
+namespace {
+
+template <typename Pred>
+bool eventually(Pred pred, double seconds = 10.0) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end) {
+    if (pred()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return pred();
+}
+
+TrackerOptions quiet() {
+  TrackerOptions o;
+  o.log = [](const std::string&) {};
+  return o;
+}
+
+struct ExpectedRow {
+  std::string role;
+  std::int64_t t_device_ns;
+  std::array<double, 3> p;
+  std::array<double, 4> q;
+};
+
+std::vector<ExpectedRow> read_expected(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<ExpectedRow> rows;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string f[12];
+    for (auto& x : f) std::getline(s, x, ',');
+    if (f[4] != "ok") continue;
+    rows.push_back({f[3], std::stoll(f[2]), {std::stod(f[5]), std::stod(f[6]), std::stod(f[7])},
+                    {std::stod(f[8]), std::stod(f[9]), std::stod(f[10]), std::stod(f[11])}});
+  }
+  return rows;
+}
+
+}  // namespace
+
+// libsurvive-style: the committed recording, replayed as fast as possible, gives every expected pose.
+TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
+  constexpr double kPosTolMm = 1e-3;     // the CSV keeps 4 decimals
+  constexpr double kQuatTol = 1e-5;      // and 6 for quaternion components
+  const auto expected = read_expected(lungar::testing::tracker_data("upright_to_supine.expected.csv"));
+  ASSERT_EQ(expected.size(), 750u);
+  std::mutex m;
+  std::vector<PoseSample> got;
+  TrackerOptions o = quiet();
+  o.on_sample = [&](const PoseSample& s) {
+    std::lock_guard lock(m);
+    got.push_back(s);
+  };
+  config::TrackerSettings t;
+  t.source = config::TrackerSource::Replay;
+  t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
+  t.replay_realtime = false;
+  auto made = make_tracker(t, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
+  made.tracker->stop();
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(to_string(got[k].role), expected[k].role);
+    EXPECT_EQ(got[k].t_device_ns, expected[k].t_device_ns);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[k].position_mm[i], expected[k].p[i], kPosTolMm);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(got[k].orientation_wxyz[i], expected[k].q[i], kQuatTol);
+  }
+  const TrackerStats s = made.tracker->stats();
+  EXPECT_EQ(s.accepted, 750u);
+  EXPECT_EQ(s.malformed, 0u);
+  // The last patient pose is supine.
+  const PoseSample last = made.tracker->latest(Role::Patient, monotonic_ns());
+  EXPECT_NEAR(quat::rotate(last.orientation_wxyz, {0, 1, 0})[2], -1.0, 1e-3);
+}
+
+TEST(Tracker, NoisyRecordingWithDropoutsReplaysWithoutMalformedReports) {
+  config::TrackerSettings t;
+  t.source = config::TrackerSource::Replay;
+  t.replay_file = lungar::testing::tracker_data("head_orbit_noisy.trk");
+  t.replay_realtime = false;
+  auto made = make_tracker(t, quiet());
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
+  const auto log = load_trk(t.replay_file);
+  ASSERT_TRUE(log.log);
+  EXPECT_LT(log.log->records.size(), 375u);  // 5 % of 375 dropped
+  EXPECT_EQ(made.tracker->stats().accepted, log.log->records.size());
+  EXPECT_EQ(made.tracker->stats().malformed, 0u);
+}
+
+TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
+  const auto dir = std::filesystem::temp_directory_path() / ("lungar_tracker_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string rec = (dir / "mock.trk").string();
+  config::TrackerSettings t;
+  t.mock_rate_hz = 200;  // many reports quickly
+  t.stale_ms = 50;
+  TrackerOptions o = quiet();
+  o.record_path = rec;
+  auto made = make_tracker(t, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  Tracker& tr = *made.tracker;
+  EXPECT_EQ(tr.describe(), "mock upright_to_supine");
+  ASSERT_TRUE(eventually([&] { return tr.stats().accepted >= 100; }));
+  EXPECT_EQ(tr.state(), TrackerState::Streaming);
+  const PoseSample head = tr.latest(Role::Head, monotonic_ns());
+  EXPECT_TRUE(head.valid());
+  EXPECT_NEAR(quat::norm(head.orientation_wxyz), 1.0, 1e-12);
+  EXPECT_GE(tr.history(Role::Head).count, 2u);
+  EXPECT_TRUE(tr.predicted(Role::Head, monotonic_ns() + 10'000'000, 50'000'000).valid());
+  EXPECT_FALSE(tr.latest(Role::Stylus, monotonic_ns()).valid());  // disabled by default
+  tr.stop();
+  const TrackerStats s = tr.stats();
+  EXPECT_EQ(s.malformed, 0u);
+  EXPECT_EQ(s.recorded, s.reports);
+  // Read later than stale_ms: the last pose stays, marked stale.
+  const PoseSample later = tr.latest(Role::Patient, monotonic_ns() + 60'000'000);
+  EXPECT_TRUE(later.valid());
+  EXPECT_TRUE(later.stale());
+  auto log = load_trk(rec);
+  ASSERT_TRUE(log.log) << log.error;
+  EXPECT_EQ(log.log->records.size(), s.reports);
+  EXPECT_EQ(log.log->header.field("source"), "mock");
+  EXPECT_FALSE(log.log->header.layout_toml.empty());
+  EXPECT_EQ(log.log->records.front().source, TrkSource::Mock);
+}
+
+TEST(Tracker, BadSettingsAreOneLineErrors) {
+  config::TrackerSettings t;
+  t.source = config::TrackerSource::Replay;
+  t.replay_file = "/nonexistent/x.trk";
+  EXPECT_EQ(make_tracker(t, quiet()).error, "/nonexistent/x.trk: cannot open the tracker log: expected a readable .trk file");
+  t = {};
+  t.mock_trajectory = "somersault";
+  EXPECT_EQ(make_tracker(t, quiet()).error,
+            "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"somersault\"");
+  t = {};
+  t.report.length = 8;
+  EXPECT_EQ(make_tracker(t, quiet()).error,
+            "tracker report layout: trackers.head.offset: expected the sensor's fields inside the report");
+  t = {};
+  TrackerOptions o = quiet();
+  o.record_path = "/nonexistent/rec.trk";
+  EXPECT_EQ(make_tracker(t, o).error.rfind("/nonexistent/rec.trk: cannot create the tracker log", 0), 0u);
+}

@@ -42,6 +42,11 @@ struct BakedLung {
   /// The paper's eq. (8)-(9): normalised force SH at rotations pi/2, pi, 3pi/2, 2pi about X, Y and Z of the
   /// upright patient; index [axis * kPaperAngles + angle][lm].
   std::vector<std::vector<float>> paper_force;
+
+  /// Added by issue 3: this lung's share of the pair's rest volume (the shares sum to 1). The breathing
+  /// driver's dV(t) is the pair's volume change; each lung sweeps dV * volume_share, so the runtime multiplies
+  /// this lung's force SH by dV(t) * volume_share (sim/deform does so for the CPU paths).
+  double volume_share = 1.0;
 };
 
 /// The whole asset.
@@ -58,6 +63,15 @@ struct BakedAsset {
   std::vector<float> linear_coeffs;      ///< 4 per vertex: tau0, tau_x, tau_y, tau_z (exact linear basis)
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
+
+  /// Added by issue 3, optional (empty when not baked): explicit rows of T truncated below
+  /// transfer_epsilon * T_II, in compressed sparse row form over global vertex indices, mm per unit force,
+  /// for the paper's CPU eq. (1) baseline (sim/deform/deform_eq1.h). A row only holds its own lung's vertices.
+  std::vector<std::uint32_t> transfer_row_ptr;  ///< vertex_count + 1 offsets into transfer_cols/vals
+  std::vector<std::uint32_t> transfer_cols;
+  std::vector<float> transfer_vals;
+  double transfer_epsilon = 0;
+  bool has_transfer_rows() const { return !transfer_row_ptr.empty(); }
 
   std::uint32_t coefficients() const { return bands * bands; }
   std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(lung_of_vertex.size()); }

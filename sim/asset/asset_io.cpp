@@ -1,0 +1,405 @@
+/// @file asset_io.cpp
+/// @brief `.lungbake` serialisation: sections with lengths known from the header before anything is allocated,
+///        so that a damaged count can never make the loader read or reserve beyond the file.
+#include "sim/asset/asset_io.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "sim/asset/crc32.h"
+
+namespace lungar::sim {
+
+static_assert(std::endian::native == std::endian::little, "the asset is little-endian; add byte swapping here");
+
+namespace {
+
+constexpr std::uint32_t kMaxLungs = 16;
+constexpr std::uint32_t kMaxNameLength = 64;
+constexpr std::size_t kHeadSize = 4 * 4 + 8 + 4 * 8;
+
+// ---- writing -----------------------------------------------------------------------------------------------
+
+struct Bytes {
+  std::string data;
+  template <class T>
+  void put(const T& v) {
+    data.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  template <class T>
+  void put_array(const T* p, std::size_t n) {
+    data.append(reinterpret_cast<const char*>(p), n * sizeof(T));
+  }
+};
+
+void write_section(std::ofstream& out, const char tag[4], const std::string& payload) {
+  const std::uint64_t length = payload.size();
+  const std::uint32_t crc = crc32(payload.data(), payload.size());
+  out.write(tag, 4);
+  out.write(reinterpret_cast<const char*>(&length), sizeof length);
+  out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
+  out.write(reinterpret_cast<const char*>(&crc), sizeof crc);
+}
+
+template <class T>
+std::string array_payload(const std::vector<T>& v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+std::size_t lung_record_size(std::uint32_t coefficients, std::size_t name_length) {
+  return 4 + name_length + 3 * 4 + 4 * 4 + 3 * 8 + 3 * 8 + std::size_t{coefficients} * 4 * (1 + 3 + kPaperAxes * kPaperAngles);
+}
+
+// ---- reading -----------------------------------------------------------------------------------------------
+
+class Reader {
+ public:
+  Reader(std::ifstream& in, std::string path, std::uint64_t file_size)
+      : in_(in), path_(std::move(path)), left_(file_size) {}
+
+  bool fail(std::string message) {
+    if (error_.empty()) error_ = path_ + ": " + std::move(message);
+    return false;
+  }
+  const std::string& error() const { return error_; }
+
+  bool raw(void* dst, std::uint64_t n, const char* what) {
+    if (n > left_) {
+      std::ostringstream m;
+      m << "truncated in " << what << ": expected " << n << " more bytes, the file has " << left_;
+      return fail(m.str());
+    }
+    in_.read(static_cast<char*>(dst), static_cast<std::streamsize>(n));
+    if (!in_) return fail(std::string("read error in ") + what);
+    left_ -= n;
+    return true;
+  }
+
+  /// Reads section `tag` whose payload must be exactly `expected` bytes; checks its CRC.
+  bool section(const char tag[4], std::uint64_t expected, std::string& payload) {
+    const std::string name = std::string("section '") + std::string(tag, 4) + "'";
+    char found[4];
+    std::uint64_t length = 0;
+    if (!raw(found, 4, (name + " tag").c_str())) return false;
+    if (std::memcmp(found, tag, 4) != 0) {
+      std::string shown;
+      for (char c : found) shown += (c >= 32 && c < 127) ? c : '?';
+      return fail(name + ": expected tag '" + std::string(tag, 4) + "', found '" + shown + "'");
+    }
+    if (!raw(&length, sizeof length, (name + " length").c_str())) return false;
+    if (length != expected) {
+      std::ostringstream m;
+      m << name << ": length " << length << " bytes; expected " << expected << " from the header's counts";
+      return fail(m.str());
+    }
+    if (length + 4 > left_) {
+      std::ostringstream m;
+      m << name << ": truncated: expected " << length + 4 << " bytes, the file has " << left_;
+      return fail(m.str());
+    }
+    payload.resize(length);
+    if (!raw(payload.data(), length, name.c_str())) return false;
+    std::uint32_t stored = 0;
+    if (!raw(&stored, sizeof stored, (name + " CRC").c_str())) return false;
+    const std::uint32_t computed = crc32(payload.data(), payload.size());
+    if (stored != computed) {
+      char m[160];
+      std::snprintf(m, sizeof m, "%s: CRC-32 mismatch (stored %08x, computed %08x); the file is damaged",
+                    name.c_str(), stored, computed);
+      return fail(m);
+    }
+    return true;
+  }
+
+  std::uint64_t left() const { return left_; }
+
+ private:
+  std::ifstream& in_;
+  std::string path_;
+  std::uint64_t left_;
+  std::string error_;
+};
+
+/// Sequential reads from a validated payload.
+struct Cursor {
+  const std::string& s;
+  std::size_t at = 0;
+  template <class T>
+  T get() {
+    T v;
+    std::memcpy(&v, s.data() + at, sizeof v);
+    at += sizeof v;
+    return v;
+  }
+  template <class T>
+  void get_array(std::vector<T>& v, std::size_t n) {
+    v.resize(n);
+    std::memcpy(v.data(), s.data() + at, n * sizeof(T));
+    at += n * sizeof(T);
+  }
+};
+
+template <class T>
+void payload_to(const std::string& payload, std::vector<T>& v) {
+  v.resize(payload.size() / sizeof(T));
+  std::memcpy(v.data(), payload.data(), payload.size());
+}
+
+bool all_finite(const std::vector<float>& v) {
+  for (float x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string validate_asset(const BakedAsset& a) {
+  const std::size_t n = a.lung_of_vertex.size(), c = a.coefficients();
+  if (a.bands < 1 || a.bands > 8) return "bands: expected 1 to 8, found " + std::to_string(a.bands);
+  if (a.lungs.empty() || a.lungs.size() > kMaxLungs) return "lung count: expected 1 to 16";
+  if (a.positions.size() != 3 * n || a.normals.size() != 3 * n || a.areas.size() != n ||
+      a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n)
+    return "per-vertex arrays: sizes disagree with the vertex count " + std::to_string(n);
+  if (a.triangles.size() % 3 != 0) return "triangles: expected 3 indices a triangle";
+  for (std::size_t i = 0; i < a.triangles.size(); ++i)
+    if (a.triangles[i] >= n)
+      return "triangles: index " + std::to_string(a.triangles[i]) + " at " + std::to_string(i) +
+             "; expected below the vertex count " + std::to_string(n);
+  std::uint64_t next_vertex = 0, next_index = 0;
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    const BakedLung& lung = a.lungs[l];
+    const std::string who = "lung " + std::to_string(l) + " ('" + lung.name + "')";
+    if (lung.first_vertex != next_vertex || lung.vertex_count == 0)
+      return who + ": vertex range must follow the previous lung's and be non-empty";
+    if (lung.first_index != next_index || lung.index_count % 3 != 0)
+      return who + ": index range must follow the previous lung's, 3 indices a triangle";
+    next_vertex += lung.vertex_count;
+    next_index += lung.index_count;
+    if (next_vertex > n || next_index > a.triangles.size()) return who + ": range beyond the arrays";
+    for (std::size_t i = lung.first_vertex; i < next_vertex; ++i)
+      if (a.lung_of_vertex[i] != l) return who + ": lung_of_vertex disagrees with the lung's vertex range";
+    for (std::size_t i = lung.first_index; i < next_index; ++i)
+      if (a.triangles[i] < lung.first_vertex || a.triangles[i] >= next_vertex)
+        return who + ": a triangle uses another lung's vertex";
+    if (lung.force_const.size() != c || lung.paper_force.size() != kPaperAxes * kPaperAngles)
+      return who + ": force SH: expected " + std::to_string(c) + " coefficients";
+    for (const auto& f : lung.force_grad)
+      if (f.size() != c) return who + ": force gradient SH: expected " + std::to_string(c) + " coefficients";
+    for (const auto& f : lung.paper_force)
+      if (f.size() != c) return who + ": paper force SH: expected " + std::to_string(c) + " coefficients";
+    if (!(lung.volume_const > 0) || !std::isfinite(lung.volume_const))
+      return who + ": volume_const: expected a positive swept volume";
+    if (!(lung.volume_share > 0 && lung.volume_share <= 1)) return who + ": volume_share: expected (0, 1]";
+  }
+  if (next_vertex != n || next_index != a.triangles.size()) return "lungs: ranges do not cover every vertex and triangle";
+  if (!all_finite(a.positions) || !all_finite(a.normals) || !all_finite(a.areas) || !all_finite(a.sh_coeffs) ||
+      !all_finite(a.linear_coeffs))
+    return "per-vertex arrays: expected finite numbers";
+  if (a.has_transfer_rows()) {
+    if (a.transfer_row_ptr.size() != n + 1 || a.transfer_row_ptr.front() != 0 ||
+        a.transfer_row_ptr.back() != a.transfer_cols.size() || a.transfer_cols.size() != a.transfer_vals.size())
+      return "transfer rows: row offsets disagree with the vertex count or the non-zero count";
+    if (a.transfer_cols.size() >= (1u << 31)) return "transfer rows: expected fewer than 2^31 non-zeros";
+    for (std::size_t i = 0; i < n; ++i)
+      if (a.transfer_row_ptr[i] > a.transfer_row_ptr[i + 1]) return "transfer rows: row offsets must not decrease";
+    for (std::uint32_t col : a.transfer_cols)
+      if (col >= n) return "transfer rows: column " + std::to_string(col) + "; expected below the vertex count";
+    if (!all_finite(a.transfer_vals)) return "transfer rows: expected finite values";
+  } else if (!a.transfer_cols.empty() || !a.transfer_vals.empty()) {
+    return "transfer rows: values without row offsets";
+  }
+  return "";
+}
+
+Status write_asset(const BakedAsset& a, const std::string& path) {
+  if (std::string bad = validate_asset(a); !bad.empty()) return {path + ": refusing to write an unsound asset: " + bad};
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) return {path + ": cannot create the temporary file " + tmp + ": " + std::strerror(errno)};
+    const std::uint32_t c = a.coefficients();
+    out.write(kAssetMagic, sizeof kAssetMagic);
+    out.write(reinterpret_cast<const char*>(&kAssetVersion), sizeof kAssetVersion);
+    Bytes head;
+    head.put(a.bands);
+    head.put(a.vertex_count());
+    head.put(static_cast<std::uint32_t>(a.triangles.size() / 3));
+    head.put(static_cast<std::uint32_t>(a.lungs.size()));
+    head.put(static_cast<std::uint64_t>(a.transfer_vals.size()));
+    head.put(a.p0);
+    head.put(a.gamma_per_mm);
+    head.put(a.decay_length_mm);
+    head.put(a.transfer_epsilon);
+    write_section(out, "HEAD", head.data);
+    Bytes lungs;
+    for (const BakedLung& l : a.lungs) {
+      const auto name_length = static_cast<std::uint32_t>(std::min<std::size_t>(l.name.size(), kMaxNameLength));
+      lungs.put(name_length);
+      lungs.data.append(l.name.data(), name_length);
+      lungs.put_array(l.centre.data(), 3);
+      lungs.put(l.first_vertex);
+      lungs.put(l.vertex_count);
+      lungs.put(l.first_index);
+      lungs.put(l.index_count);
+      lungs.put(l.rest_volume_ml);
+      lungs.put(l.volume_share);
+      lungs.put(l.volume_const);
+      lungs.put_array(l.volume_grad.data(), 3);
+      lungs.put_array(l.force_const.data(), c);
+      for (const auto& f : l.force_grad) lungs.put_array(f.data(), c);
+      for (const auto& f : l.paper_force) lungs.put_array(f.data(), c);
+    }
+    write_section(out, "LUNG", lungs.data);
+    write_section(out, "POSI", array_payload(a.positions));
+    write_section(out, "NORM", array_payload(a.normals));
+    write_section(out, "AREA", array_payload(a.areas));
+    write_section(out, "LOFV", array_payload(a.lung_of_vertex));
+    write_section(out, "SHCO", array_payload(a.sh_coeffs));
+    write_section(out, "LINC", array_payload(a.linear_coeffs));
+    write_section(out, "TRIS", array_payload(a.triangles));
+    write_section(out, "TROW", array_payload(a.transfer_row_ptr));
+    write_section(out, "TCOL", array_payload(a.transfer_cols));
+    write_section(out, "TVAL", array_payload(a.transfer_vals));
+    out.flush();
+    if (!out) {
+      out.close();
+      std::remove(tmp.c_str());
+      return {path + ": write failed (disk full?); nothing was written under this name"};
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    return {path + ": cannot rename the temporary file into place: " + ec.message()};
+  }
+  return {};
+}
+
+Result<BakedAsset> load_asset(const std::string& path) {
+  using R = Result<BakedAsset>;
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) return R::fail(path + ": cannot open: " + ec.message());
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return R::fail(path + ": cannot open for reading");
+  Reader r(in, path, size);
+
+  char magic[8];
+  if (!r.raw(magic, 8, "magic")) return R::fail(r.error());
+  if (std::memcmp(magic, kAssetMagic, 8) != 0)
+    return R::fail(path + ": magic: expected 'LUNGBAKE'; this is not a lungar baked asset");
+  std::uint32_t version = 0;
+  if (!r.raw(&version, 4, "version")) return R::fail(r.error());
+  if (version != kAssetVersion)
+    return R::fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " +
+                   std::to_string(version) + " (re-bake with this lungar-bake)");
+
+  std::string payload;
+  if (!r.section("HEAD", kHeadSize, payload)) return R::fail(r.error());
+  BakedAsset a;
+  std::uint32_t n = 0, triangles = 0, lung_count = 0;
+  std::uint64_t nnz = 0;
+  {
+    Cursor h{payload};
+    a.bands = h.get<std::uint32_t>();
+    n = h.get<std::uint32_t>();
+    triangles = h.get<std::uint32_t>();
+    lung_count = h.get<std::uint32_t>();
+    nnz = h.get<std::uint64_t>();
+    a.p0 = h.get<double>();
+    a.gamma_per_mm = h.get<double>();
+    a.decay_length_mm = h.get<double>();
+    a.transfer_epsilon = h.get<double>();
+  }
+  if (a.bands < 1 || a.bands > 8)
+    return R::fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
+  if (lung_count < 1 || lung_count > kMaxLungs)
+    return R::fail(path + ": header field 'lungs': expected 1 to 16, found " + std::to_string(lung_count));
+  if (n == 0) return R::fail(path + ": header field 'vertices': expected at least one vertex");
+  // Every vertex needs more than 16 bytes of the file; this bounds the counts before anything is allocated.
+  const std::uint64_t c = a.bands * a.bands;
+  if (std::uint64_t{n} * (29 + 4 * c) + std::uint64_t{triangles} * 12 + nnz * 8 > r.left())
+    return R::fail(path + ": header counts (" + std::to_string(n) + " vertices, " + std::to_string(triangles) +
+                   " triangles, " + std::to_string(nnz) + " transfer non-zeros) need more bytes than the file has");
+  if (!std::isfinite(a.p0) || !std::isfinite(a.gamma_per_mm) || !(a.decay_length_mm > 0))
+    return R::fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
+
+  // LUNG: variable-length names; read its length first and parse with bounds checks.
+  {
+    char tag[4];
+    std::uint64_t length = 0;
+    if (!r.raw(tag, 4, "section 'LUNG' tag")) return R::fail(r.error());
+    if (std::memcmp(tag, "LUNG", 4) != 0) return R::fail(path + ": section 'LUNG': expected tag 'LUNG'");
+    if (!r.raw(&length, 8, "section 'LUNG' length")) return R::fail(r.error());
+    const std::uint64_t min_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), 0);
+    const std::uint64_t max_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), kMaxNameLength);
+    if (length < min_len || length > max_len)
+      return R::fail(path + ": section 'LUNG': length " + std::to_string(length) + " bytes; expected " +
+                     std::to_string(min_len) + " to " + std::to_string(max_len) + " for " +
+                     std::to_string(lung_count) + " lungs");
+    payload.resize(length);
+    if (!r.raw(payload.data(), length, "section 'LUNG'")) return R::fail(r.error());
+    std::uint32_t stored = 0;
+    if (!r.raw(&stored, 4, "section 'LUNG' CRC")) return R::fail(r.error());
+    if (stored != crc32(payload.data(), payload.size()))
+      return R::fail(path + ": section 'LUNG': CRC-32 mismatch; the file is damaged");
+    Cursor lc{payload};
+    for (std::uint32_t l = 0; l < lung_count; ++l) {
+      BakedLung lung;
+      const std::size_t remaining = payload.size() - lc.at;
+      if (remaining < 4) return R::fail(path + ": section 'LUNG': lung " + std::to_string(l) + " record truncated");
+      const auto name_length = lc.get<std::uint32_t>();
+      if (name_length > kMaxNameLength || lung_record_size(static_cast<std::uint32_t>(c), name_length) > remaining)
+        return R::fail(path + ": section 'LUNG': lung " + std::to_string(l) + " name length " +
+                       std::to_string(name_length) + "; expected at most " + std::to_string(kMaxNameLength) +
+                       " within the section");
+      lung.name.assign(payload.data() + lc.at, name_length);
+      lc.at += name_length;
+      for (float& x : lung.centre) x = lc.get<float>();
+      lung.first_vertex = lc.get<std::uint32_t>();
+      lung.vertex_count = lc.get<std::uint32_t>();
+      lung.first_index = lc.get<std::uint32_t>();
+      lung.index_count = lc.get<std::uint32_t>();
+      lung.rest_volume_ml = lc.get<double>();
+      lung.volume_share = lc.get<double>();
+      lung.volume_const = lc.get<double>();
+      for (double& x : lung.volume_grad) x = lc.get<double>();
+      lc.get_array(lung.force_const, c);
+      for (auto& f : lung.force_grad) lc.get_array(f, c);
+      lung.paper_force.resize(kPaperAxes * kPaperAngles);
+      for (auto& f : lung.paper_force) lc.get_array(f, c);
+      a.lungs.push_back(std::move(lung));
+    }
+    if (lc.at != payload.size()) return R::fail(path + ": section 'LUNG': trailing bytes after the last lung");
+  }
+
+  const bool rows = nnz > 0;
+  struct Spec {
+    const char* tag;
+    std::uint64_t bytes;
+  };
+  auto read_into = [&](const Spec& spec, auto& vec) {
+    if (!r.section(spec.tag, spec.bytes, payload)) return false;
+    payload_to(payload, vec);
+    return true;
+  };
+  if (!read_into({"POSI", 12ull * n}, a.positions) || !read_into({"NORM", 12ull * n}, a.normals) ||
+      !read_into({"AREA", 4ull * n}, a.areas) || !read_into({"LOFV", 1ull * n}, a.lung_of_vertex) ||
+      !read_into({"SHCO", 4ull * n * c}, a.sh_coeffs) || !read_into({"LINC", 16ull * n}, a.linear_coeffs) ||
+      !read_into({"TRIS", 12ull * triangles}, a.triangles) ||
+      !read_into({"TROW", rows ? 4ull * (n + 1) : 0}, a.transfer_row_ptr) ||
+      !read_into({"TCOL", 4ull * nnz}, a.transfer_cols) || !read_into({"TVAL", 4ull * nnz}, a.transfer_vals))
+    return R::fail(r.error());
+  if (r.left() != 0) return R::fail(path + ": " + std::to_string(r.left()) + " unexpected bytes after the last section");
+  if (std::string bad = validate_asset(a); !bad.empty()) return R::fail(path + ": " + bad);
+  return R::ok(std::move(a));
+}
+
+}  // namespace lungar::sim

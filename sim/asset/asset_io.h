@@ -1,0 +1,31 @@
+/// @file asset_io.h
+/// @brief Reads and writes `.lungbake` files.
+///
+/// Layout (little-endian): magic "LUNGBAKE", u32 version, then sections, each a 4-character tag, a u64
+/// payload length, the payload and the payload's CRC-32. Sections, in order: HEAD (bands, vertex, triangle and
+/// lung counts, transfer nnz, p0, gamma, l, epsilon), LUNG (per-lung records), POSI, NORM, AREA, LOFV, SHCO,
+/// LINC, TRIS, TROW, TCOL, TVAL (the last three empty when the asset holds no explicit transfer rows).
+#pragma once
+
+#include <string>
+
+#include "sim/asset/baked_asset.h"
+#include "sim/core/result.h"
+
+namespace lungar::sim {
+
+inline constexpr char kAssetMagic[8] = {'L', 'U', 'N', 'G', 'B', 'A', 'K', 'E'};
+inline constexpr std::uint32_t kAssetVersion = 1;
+
+/// Writes `asset` to a temporary file beside `path` and renames it into place: `path` is either the whole new
+/// asset or untouched. The error names the file.
+Status write_asset(const BakedAsset& asset, const std::string& path);
+
+/// Reads and validates every count, size, CRC and index; the error is one line naming the file, the section
+/// or field, and what was expected.
+Result<BakedAsset> load_asset(const std::string& path);
+
+/// Checks an in-memory asset's internal consistency (array sizes, ranges, indices); "" when sound.
+std::string validate_asset(const BakedAsset& asset);
+
+}  // namespace lungar::sim

@@ -1,0 +1,273 @@
+/// @file bake.cpp
+/// @brief Per lung: LOD order, geometry, K and its factor, the L^2 + 4 exact solves, SH projection, force
+///        bases, the paper's arrays and the truncated rows; lungs run in parallel.
+#include "sim/bake/bake.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <thread>
+
+#include "sim/asset/asset_io.h"
+#include "sim/bake/bake_evaluate.h"
+#include "sim/bake/lung_bake.h"
+#include "sim/force/force_sh.h"
+#include "sim/force/gravity.h"
+#include "sim/mesh/lod_order.h"
+#include "sim/mesh/procedural_lungs.h"
+#include "sim/sh/real_sh.h"
+#include "sim/transfer/stiffness.h"
+
+namespace lungar::sim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Everything one lung's bake computes; the evaluation reuses the factor and the double-precision fields.
+Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t offset, const BakeProgress& progress,
+                BakeReport& timing, std::mutex& timing_mutex) {
+  const std::string who = "lung '" + w.name + "'";
+  auto t0 = Clock::now();
+  reorder_vertices(w.mesh, lod_order(w.mesh.positions));
+  w.geometry = vertex_geometry(w.mesh);
+  w.rest_volume_mm3 = enclosed_volume(w.mesh);
+  if (!w.has_centre) w.centre = volume_centroid(w.mesh);
+  const auto n = static_cast<Eigen::Index>(w.mesh.positions.size());
+  w.areas = Eigen::Map<const Eigen::VectorXd>(w.geometry.areas.data(), n);
+  w.folded = folded_triangles(w.mesh, w.centre);
+
+  const int bands_solved = opt.evaluate ? kMaxBands : static_cast<int>(opt.bands);
+  const int c_solved = bands_solved * bands_solved;
+  w.c_solved = c_solved;
+  w.y.resize(n, c_solved);
+  w.offsets.resize(n, 3);
+  Eigen::VectorXd sh(c_solved);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d d = w.mesh.positions[i] - w.centre;
+    const double len = d.norm();
+    real_sh(bands_solved, len > 0 ? Eigen::Vector3d(d / len) : Eigen::Vector3d::UnitZ(), sh.data());
+    w.y.row(i) = sh.transpose();
+    w.offsets.row(i) = d.transpose();
+  }
+  // Least squares weighted by area (DESIGN.md): G = sum_J A_J Y Y^T; needs enough well-spread vertices.
+  w.gram = w.y.transpose() * w.areas.asDiagonal() * w.y;
+  {
+    const int c = static_cast<int>(opt.bands * opt.bands);
+    Eigen::LDLT<Eigen::MatrixXd> g(w.gram.topLeftCorner(c, c));
+    const Eigen::VectorXd diag = g.vectorD();
+    if (g.info() != Eigen::Success || !(diag.minCoeff() > 1e-9 * diag.maxCoeff()))
+      return {who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
+              " SH bands; expected a finer, closed surface around its centre"};
+  }
+
+  const Eigen::VectorXd youngs = youngs_modulus(w.mesh);
+  w.k = stiffness_matrix(w.mesh, youngs, w.geometry.areas, opt.decay_length_mm);
+  if (progress) progress("factorise", 0.0);
+  w.solver = std::make_unique<TransferSolver>(w.k);
+  if (!w.solver->error().empty()) return {who + ": " + w.solver->error()};
+  const double factor_s = seconds_since(t0);
+
+  // L^2 + 4 solves: T_lm = K^-1 (A o Y_lm) and tau = K^-1 (A o [1, x - c]).
+  auto t1 = Clock::now();
+  Eigen::MatrixXd rhs(n, c_solved + 4);
+  rhs.leftCols(c_solved) = w.areas.asDiagonal() * w.y;
+  rhs.col(c_solved) = w.areas;
+  rhs.rightCols(3) = w.areas.asDiagonal() * w.offsets;
+  if (progress) progress("solve", 0.0);
+  w.x = w.solver->solve(rhs, threads);
+  const double solve_s = seconds_since(t1);
+
+  // Force bases: the pressure's SH projections f0 (of 1) and f_k (of (x - c)_k); swept volumes v0 and v_k.
+  const int c = static_cast<int>(opt.bands * opt.bands);
+  const Eigen::LDLT<Eigen::MatrixXd> gram(w.gram.topLeftCorner(c, c));
+  Eigen::MatrixXd moments(c, 4);
+  moments.col(0) = w.y.leftCols(c).transpose() * w.areas;
+  moments.rightCols(3) = w.y.leftCols(c).transpose() * w.areas.asDiagonal() * w.offsets;
+  w.force_basis = gram.solve(moments);
+  w.volume_basis = w.x.rightCols(4).transpose() * w.areas;  // sum_I A_I tau_I, mm^3 per unit pressure
+
+  auto t2 = Clock::now();
+  if (opt.transfer_rows)
+    append_transfer_rows(w.k, opt.transfer_epsilon, threads, offset, w.rows, [&](std::size_t done) {
+      if (progress) progress("transfer rows", static_cast<double>(done) / static_cast<double>(n));
+    });
+  std::lock_guard lock(timing_mutex);
+  timing.factorise_s = std::max(timing.factorise_s, factor_s);
+  timing.solve_s = std::max(timing.solve_s, solve_s);
+  timing.transfer_rows_s = std::max(timing.transfer_rows_s, seconds_since(t2));
+  return {};
+}
+
+void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::size_t lung_index, double total_volume) {
+  const std::uint32_t c = opt.bands * opt.bands;
+  const auto n = static_cast<std::uint32_t>(w.mesh.positions.size());
+  BakedLung lung;
+  lung.name = w.name;
+  for (int k = 0; k < 3; ++k) lung.centre[k] = static_cast<float>(w.centre[k]);
+  lung.first_vertex = a.vertex_count();
+  lung.vertex_count = n;
+  lung.first_index = static_cast<std::uint32_t>(a.triangles.size());
+  lung.index_count = static_cast<std::uint32_t>(3 * w.mesh.triangles.size());
+  lung.rest_volume_ml = w.rest_volume_mm3 / 1000.0;
+  lung.volume_share = w.rest_volume_mm3 / total_volume;
+  lung.force_const.resize(c);
+  for (auto& f : lung.force_grad) f.resize(c);
+  for (std::uint32_t i = 0; i < c; ++i) {
+    lung.force_const[i] = static_cast<float>(w.force_basis(i, 0));
+    for (int k = 0; k < 3; ++k) lung.force_grad[k][i] = static_cast<float>(w.force_basis(i, 1 + k));
+  }
+  lung.volume_const = w.volume_basis[0];
+  for (int k = 0; k < 3; ++k) lung.volume_grad[k] = w.volume_basis[1 + k];
+
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      a.positions.push_back(static_cast<float>(w.mesh.positions[i][k]));
+      a.normals.push_back(static_cast<float>(w.geometry.normals[i][k]));
+    }
+    a.areas.push_back(static_cast<float>(w.geometry.areas[i]));
+    a.lung_of_vertex.push_back(static_cast<std::uint8_t>(lung_index));
+    for (std::uint32_t j = 0; j < c; ++j) a.sh_coeffs.push_back(static_cast<float>(w.x(i, j)));
+    for (int j = 0; j < 4; ++j) a.linear_coeffs.push_back(static_cast<float>(w.x(i, w.c_solved + j)));
+  }
+  for (const Triangle& t : w.mesh.triangles)
+    for (std::uint32_t v : t) a.triangles.push_back(lung.first_vertex + v);
+  a.lungs.push_back(std::move(lung));
+}
+
+/// The paper's eq. (8)-(9) arrays: exact normalised force at pi/2, pi, 3pi/2, 2pi about X, Y and Z.
+void fill_paper_forces(BakedAsset& a) {
+  const std::uint32_t c = a.coefficients();
+  for (BakedLung& lung : a.lungs) {
+    lung.paper_force.assign(kPaperAxes * kPaperAngles, std::vector<float>(c));
+    for (int axis = 0; axis < kPaperAxes; ++axis)
+      for (int k = 0; k < kPaperAngles; ++k) {
+        const Eigen::Vector3d g = gravity_in_lung_frame(axis_rotation(axis, (k + 1) * std::numbers::pi / 2));
+        force_sh_exact(a, lung, g, lung.paper_force[axis * kPaperAngles + k].data());
+      }
+  }
+}
+
+}  // namespace
+
+std::uint64_t folded_triangles(const TriMesh& mesh, const Eigen::Vector3d& centre) {
+  std::uint64_t folded = 0;
+  for (const Triangle& t : mesh.triangles) {
+    const Eigen::Vector3d a = (mesh.positions[t[0]] - centre).normalized();
+    const Eigen::Vector3d b = (mesh.positions[t[1]] - centre).normalized();
+    const Eigen::Vector3d c = (mesh.positions[t[2]] - centre).normalized();
+    if (!(a.dot(b.cross(c)) > 0)) ++folded;
+  }
+  return folded;
+}
+
+std::vector<Eigen::Vector3d> report_directions() {
+  std::vector<Eigen::Vector3d> dirs;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (x != 0 || y != 0 || z != 0) dirs.push_back(Eigen::Vector3d(x, y, z).normalized());
+  return dirs;
+}
+
+Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& opt, const BakeProgress& progress) {
+  using R = Result<BakeOutput>;
+  const auto start = Clock::now();
+  if (lungs.empty() || lungs.size() > 16) return R::fail("bake: expected 1 to 16 lungs, got " + std::to_string(lungs.size()));
+  if (opt.bands < 1 || opt.bands > static_cast<std::uint32_t>(kMaxBands))
+    return R::fail("bake: bands: expected 1 to 8, got " + std::to_string(opt.bands));
+  const int threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+
+  std::mutex progress_mutex;
+  BakeProgress serial = [&](std::string_view stage, double fraction) {
+    if (!progress) return;
+    std::lock_guard lock(progress_mutex);
+    progress(stage, fraction);
+  };
+
+  std::vector<std::unique_ptr<LungWork>> work;
+  std::vector<std::uint32_t> offsets;
+  std::uint32_t offset = 0;
+  for (LungMesh& l : lungs) {
+    auto w = std::make_unique<LungWork>();
+    w->name = l.name;
+    w->mesh = std::move(l.mesh);
+    w->has_centre = l.has_centre;
+    w->centre = l.centre;
+    offsets.push_back(offset);
+    offset += static_cast<std::uint32_t>(w->mesh.positions.size());
+    work.push_back(std::move(w));
+  }
+
+  // Lungs in parallel (the factorisation is single-threaded), the threads shared out between them.
+  BakeReport report;
+  std::mutex timing_mutex;
+  std::vector<Status> status(work.size());
+  const int per_lung = std::max(1, threads / static_cast<int>(work.size()));
+  {
+    std::vector<std::thread> pool;
+    for (std::size_t l = 0; l < work.size(); ++l) {
+      auto job = [&, l] { status[l] = bake_one(*work[l], opt, per_lung, offsets[l], serial, report, timing_mutex); };
+      if (threads > 1 && l + 1 < work.size()) pool.emplace_back(job);
+      else job();
+    }
+    for (auto& t : pool) t.join();
+  }
+  for (const Status& s : status)
+    if (!s.ok()) return R::fail(s.error);
+
+  BakeOutput out;
+  BakedAsset& a = out.asset;
+  a.bands = opt.bands;
+  a.p0 = opt.p0;
+  a.gamma_per_mm = opt.gamma_per_mm;
+  a.decay_length_mm = opt.decay_length_mm;
+  double total_volume = 0;
+  for (const auto& w : work) total_volume += w->rest_volume_mm3;
+  for (std::size_t l = 0; l < work.size(); ++l) fill_lung(*work[l], opt, a, l, total_volume);
+  fill_paper_forces(a);
+  if (opt.transfer_rows) {
+    a.transfer_epsilon = opt.transfer_epsilon;
+    a.transfer_row_ptr.push_back(0);
+    for (const auto& w : work) {
+      const std::uint32_t base = a.transfer_row_ptr.back();
+      for (std::size_t i = 1; i < w->rows.row_ptr.size(); ++i) a.transfer_row_ptr.push_back(base + w->rows.row_ptr[i]);
+      a.transfer_cols.insert(a.transfer_cols.end(), w->rows.cols.begin(), w->rows.cols.end());
+      a.transfer_vals.insert(a.transfer_vals.end(), w->rows.vals.begin(), w->rows.vals.end());
+    }
+  }
+  if (std::string bad = validate_asset(a); !bad.empty()) return R::fail("bake: internal error: " + bad);
+
+  report.nodes = a.vertex_count();
+  report.triangles = static_cast<std::uint32_t>(a.triangles.size() / 3);
+  report.lungs = static_cast<std::uint32_t>(a.lungs.size());
+  report.bands = a.bands;
+  report.coefficients = a.coefficients();
+  report.transfer_epsilon = a.transfer_epsilon;
+  report.transfer_nnz_per_row_mean =
+      opt.transfer_rows ? static_cast<double>(a.transfer_vals.size()) / std::max<double>(1, a.vertex_count()) : 0;
+  report.rest_volume_ml = total_volume / 1000.0;
+  for (const auto& w : work) {
+    report.folded_triangles += w->folded;
+    report.lung_names.push_back(w->name);
+  }
+  report.bake_s = seconds_since(start);
+  if (opt.evaluate) {
+    const auto t = Clock::now();
+    evaluate_bake(work, a, opt, threads, serial, report);
+    report.evaluate_s = seconds_since(t);
+  }
+  out.report = std::move(report);
+  return R::ok(std::move(out));
+}
+
+Result<BakeOutput> bake_procedural(std::uint32_t nodes, std::uint64_t seed, const BakeOptions& options,
+                                   const BakeProgress& progress) {
+  return bake_lungs(procedural_lungs(nodes, seed), options, progress);
+}
+
+}  // namespace lungar::sim

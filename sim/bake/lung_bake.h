@@ -1,0 +1,38 @@
+/// @file lung_bake.h
+/// @brief One lung's working state during a bake (internal to sim/bake): the mesh in LOD order, K and its
+///        factor, and the double-precision solves the report reuses.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+
+#include "sim/mesh/tri_mesh.h"
+#include "sim/transfer/transfer_rows.h"
+#include "sim/transfer/transfer_solver.h"
+
+namespace lungar::sim {
+
+struct LungWork {
+  std::string name;
+  TriMesh mesh;
+  bool has_centre = false;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  VertexGeometry geometry;
+  double rest_volume_mm3 = 0;
+  Eigen::VectorXd areas;          ///< A_I
+  std::uint64_t folded = 0;
+  int c_solved = 0;               ///< SH fields solved: L^2, or 64 when the report sweeps the bands
+  Eigen::MatrixXd y;              ///< N x c_solved, Y_lm(u_I)
+  Eigen::MatrixXd offsets;        ///< N x 3, x_I - c
+  Eigen::MatrixXd gram;           ///< c_solved x c_solved, G = sum A Y Y^T
+  Eigen::MatrixXd x;              ///< N x (c_solved + 4): T_lm fields, then tau0, tau_x, tau_y, tau_z
+  Eigen::MatrixXd force_basis;    ///< L^2 x 4: f0, f_x, f_y, f_z
+  Eigen::VectorXd volume_basis;   ///< 4: v0, v_x, v_y, v_z (mm^3 per unit pressure)
+  Eigen::SparseMatrix<double> k;
+  std::unique_ptr<TransferSolver> solver;
+  TransferRows rows;              ///< this lung's truncated rows, global column indices
+};
+
+}  // namespace lungar::sim

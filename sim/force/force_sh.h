@@ -1,0 +1,35 @@
+/// @file force_sh.h
+/// @brief The applied force's SH coefficients per lung for the current orientation, in both modes:
+///        exact (linear in g, DESIGN.md) and the paper's eq. (8)-(9) interpolation. Cheap, no allocation.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "sim/asset/baked_asset.h"
+#include "sim/force/gravity.h"
+
+namespace lungar::sim {
+
+enum class ForceMode { exact, paper };
+
+/// The paper's rotation angles a, b, c about X, Y, Z in [0, 2 pi), with R = Rz(c) Ry(b) Rx(a).
+struct EulerXYZ {
+  double a = 0, b = 0, c = 0;
+};
+EulerXYZ euler_xyz(const Eigen::Quaterniond& lung_in_world);
+
+/// Exact mode: f(g) = (p0 f0 + gamma g.f) * 1000 / (p0 v0 + gamma g.v), L^2 values into out: the force SH of
+/// one mL of swept volume, so that D = sum_lm f_lm T^I_lm is in mm per mL.
+void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung, float* out);
+
+/// Paper mode, eq. (8)-(9) as written: f = f^a + f^b + f^c, f^a = [p^{a0} cos(a - a0) + p^{a1} cos(a - a1)] / 3,
+/// with a0, a1 the baked angles (pi/2, pi, 3pi/2, 2pi) around a (0 counts as 2pi).
+void force_sh_paper(const BakedLung& lung, std::uint32_t coefficients, const Eigen::Quaterniond& lung_in_world, float* out);
+
+/// Both lungs' force SH (lungs x L^2 values, lung-major) in the selected mode.
+void force_sh(const BakedAsset& asset, ForceMode mode, const Eigen::Quaterniond& lung_in_world, float* out);
+
+/// The swept volume (mm^3) that the unnormalised force produces for g: p0 v0 + gamma g.v.
+double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung);
+
+}  // namespace lungar::sim

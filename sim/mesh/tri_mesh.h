@@ -1,0 +1,52 @@
+/// @file tri_mesh.h
+/// @brief A closed triangle surface of one lung in the lung frame (LPS, mm), and its per-vertex geometry.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lungar::sim {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// One lung's surface: shared vertices, counter-clockwise triangles seen from outside.
+struct TriMesh {
+  std::vector<Eigen::Vector3d> positions;  ///< mm, lung frame
+  std::vector<Triangle> triangles;         ///< indices into positions
+};
+
+/// A lung surface with its name ("left"/"right") and, optionally, the centre it is star-shaped about.
+struct LungMesh {
+  std::string name;
+  TriMesh mesh;
+  bool has_centre = false;       ///< procedural lungs know their centre; imported ones use the volume centroid
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+};
+
+/// Per-vertex geometry used by the bake (DESIGN.md: areas are a third of the incident triangles' areas,
+/// normals are area-weighted and unit).
+struct VertexGeometry {
+  std::vector<double> areas;                 ///< A_I, mm^2
+  std::vector<Eigen::Vector3d> normals;      ///< n_I, unit, outward for a positively oriented mesh
+};
+
+VertexGeometry vertex_geometry(const TriMesh& mesh);
+
+/// Signed enclosed volume (divergence theorem), mm^3; positive when the triangles face outward.
+double enclosed_volume(const TriMesh& mesh);
+
+/// Enclosed volume of the same connectivity with other vertex positions (3 floats a vertex), mm^3.
+double enclosed_volume(const std::vector<Triangle>& triangles, const float* positions_xyz);
+
+/// Centroid of the enclosed solid (mm); needs a non-zero volume.
+Eigen::Vector3d volume_centroid(const TriMesh& mesh);
+
+/// Total surface area, mm^2.
+double surface_area(const TriMesh& mesh);
+
+}  // namespace lungar::sim

@@ -1,0 +1,123 @@
+/// @file transfer_rows.cpp
+/// @brief Local push solves of K t = e_I with per-thread dense workspaces (reset through a touched list, so a
+///        row costs what it touches, not the mesh size).
+#include "sim/transfer/transfer_rows.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+namespace lungar::sim {
+namespace {
+
+struct RowBlock {
+  std::vector<std::uint32_t> counts;
+  std::vector<std::uint32_t> cols;
+  std::vector<float> vals;
+};
+
+class PushSolver {
+ public:
+  explicit PushSolver(const Eigen::SparseMatrix<double>& k)
+      : k_(k), t_(k.rows(), 0.0), r_(k.rows(), 0.0), queued_(k.rows(), 0), diag_(k.rows()) {
+    for (Eigen::Index j = 0; j < k.outerSize(); ++j) diag_[j] = k.coeff(j, j);
+  }
+
+  /// Row I, truncated at epsilon * T_II, appended to `block` (local column indices + offset).
+  void row(std::uint32_t i, double epsilon, std::uint32_t offset, RowBlock& block) {
+    // Stop pushing node j once the update it would make, r_j / K_jj, is a small fraction of the diagonal's
+    // first estimate 1/K_II; a quarter of epsilon keeps the truncation, not the solve, the dominant error.
+    const double stop = 0.25 * epsilon / diag_[i];
+    r_[i] = 1.0;
+    touch(i);
+    queue_.clear();
+    queue_.push_back(i);
+    queued_[i] = 1;
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      const std::uint32_t j = queue_[head];
+      queued_[j] = 0;
+      const double delta = r_[j] / diag_[j];
+      if (delta < stop) continue;
+      t_[j] += delta;
+      r_[j] = 0;
+      const int* inner = k_.innerIndexPtr();
+      const double* val = k_.valuePtr();
+      for (int p = k_.outerIndexPtr()[j]; p < k_.outerIndexPtr()[j + 1]; ++p) {
+        const auto n = static_cast<std::uint32_t>(inner[p]);
+        if (n == j) continue;
+        if (r_[n] == 0 && t_[n] == 0) touch(n);
+        r_[n] -= val[p] * delta;  // off-diagonals are negative: the neighbours receive a share
+        if (!queued_[n] && r_[n] / diag_[n] >= stop) {
+          queued_[n] = 1;
+          queue_.push_back(n);
+        }
+      }
+      // Bound the queue's memory: compact it when the consumed part dominates.
+      if (head > 4096 && head * 2 > queue_.size()) {
+        queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head) + 1);
+        head = static_cast<std::size_t>(-1);
+      }
+    }
+    const double keep = epsilon * t_[i];
+    std::uint32_t count = 0;
+    std::sort(touched_.begin(), touched_.end());
+    for (std::uint32_t j : touched_) {
+      if (t_[j] >= keep && t_[j] > 0) {
+        block.cols.push_back(j + offset);
+        block.vals.push_back(static_cast<float>(t_[j]));
+        ++count;
+      }
+      t_[j] = 0;
+      r_[j] = 0;
+      queued_[j] = 0;
+    }
+    touched_.clear();
+    block.counts.push_back(count);
+  }
+
+ private:
+  void touch(std::uint32_t j) { touched_.push_back(j); }
+
+  const Eigen::SparseMatrix<double>& k_;
+  std::vector<double> t_, r_;
+  std::vector<char> queued_;
+  std::vector<double> diag_;
+  std::vector<std::uint32_t> queue_, touched_;
+};
+
+}  // namespace
+
+void append_transfer_rows(const Eigen::SparseMatrix<double>& k, double epsilon, int threads, std::uint32_t offset,
+                          TransferRows& out, const std::function<void(std::size_t)>& progress) {
+  const auto rows = static_cast<std::uint32_t>(k.rows());
+  const int workers = std::clamp(threads, 1, 64);
+  // Contiguous blocks keep each thread's output in row order; many more blocks than threads balance load.
+  const std::uint32_t block_rows = std::max<std::uint32_t>(256, rows / (workers * 16) + 1);
+  const std::uint32_t block_count = (rows + block_rows - 1) / block_rows;
+  std::vector<RowBlock> blocks(block_count);
+  std::atomic<std::uint32_t> next{0};
+  std::atomic<std::size_t> done{0};
+  auto work = [&](bool reporter) {
+    PushSolver solver(k);
+    for (std::uint32_t b; (b = next.fetch_add(1)) < block_count;) {
+      const std::uint32_t first = b * block_rows, last = std::min(rows, first + block_rows);
+      for (std::uint32_t i = first; i < last; ++i) solver.row(i, epsilon, offset, blocks[b]);
+      done += last - first;
+      if (reporter && progress) progress(done.load());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work, false);
+  work(true);
+  for (auto& t : pool) t.join();
+  if (progress) progress(rows);
+
+  if (out.row_ptr.empty()) out.row_ptr.push_back(0);
+  for (RowBlock& b : blocks) {
+    for (std::uint32_t c : b.counts) out.row_ptr.push_back(out.row_ptr.back() + c);
+    out.cols.insert(out.cols.end(), b.cols.begin(), b.cols.end());
+    out.vals.insert(out.vals.end(), b.vals.begin(), b.vals.end());
+  }
+}
+
+}  // namespace lungar::sim

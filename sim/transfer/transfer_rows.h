@@ -1,0 +1,32 @@
+/// @file transfer_rows.h
+/// @brief Explicit, truncated rows of the transfer matrix T = K^-1 for the paper's CPU eq. (1) baseline.
+///
+/// The paper shares each unit force with the neighbours until equilibrium; that is a local iterative solve of
+/// K t = e_I. We run it as a residual push (Gauss-Southwell-like, FIFO) confined to where the residual still
+/// matters, then drop entries below epsilon * T_II. Rows are independent, so they run on many threads.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+namespace lungar::sim {
+
+/// Default truncation: entries below this fraction of the diagonal T_II are dropped.
+inline constexpr double kTransferEpsilon = 0.02;
+
+/// Rows of T in compressed sparse row form; columns are global vertex indices (offset added).
+struct TransferRows {
+  std::vector<std::uint32_t> row_ptr;  ///< rows + 1
+  std::vector<std::uint32_t> cols;
+  std::vector<float> vals;             ///< mm per unit force
+};
+
+/// Appends the truncated rows of K^-1 (one lung, vertices offset .. offset + K.rows()) to `out`.
+/// `progress(rows_done)` is called now and then from the calling thread only.
+void append_transfer_rows(const Eigen::SparseMatrix<double>& k, double epsilon, int threads, std::uint32_t offset,
+                          TransferRows& out, const std::function<void(std::size_t)>& progress);
+
+}  // namespace lungar::sim

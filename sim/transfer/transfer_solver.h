@@ -1,0 +1,26 @@
+/// @file transfer_solver.h
+/// @brief One sparse factorisation of K, then any number of exact solves T b = K^-1 b (DESIGN.md, eq. 7).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+
+#include "sim/core/result.h"
+
+namespace lungar::sim {
+
+class TransferSolver {
+ public:
+  /// Factorises K (symmetric positive definite); error() is non-empty when that fails.
+  explicit TransferSolver(const Eigen::SparseMatrix<double>& k);
+  const std::string& error() const { return error_; }
+
+  /// X = K^-1 B, columns solved in parallel on `threads` threads (the factor is shared, read-only).
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b, int threads) const;
+
+ private:
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  std::string error_;
+};
+
+}  // namespace lungar::sim

@@ -1,0 +1,58 @@
+/// @file egl_context.h
+/// @brief An OpenGL ES 3.0 context through EGL: headless (surfaceless Mesa, or EGL_EXT_platform_device, rendering
+/// into framebuffer objects) or an X11 window with an EGL window surface (desktop, or full-screen at a given
+/// position and size for an HMD in extended mode).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "render/expected.h"
+
+namespace lungar::platform {
+
+struct WindowOptions {
+  int x_px = 0, y_px = 0;          ///< position in the X screen (an HMD output's origin in extended mode)
+  int width_px = 1280, height_px = 720;
+  bool fullscreen = false;         ///< undecorated, above everything, covering x, y, width, height
+  bool vsync = true;
+  std::string title = "lungar";
+  std::string display_name;        ///< X display; empty: $DISPLAY
+};
+
+class EglContext {
+ public:
+  /// A context with no window: draw into render::FrameTarget. Tries EGL_PLATFORM_SURFACELESS_MESA, then
+  /// EGL_EXT_platform_device.
+  static render::Expected<std::unique_ptr<EglContext>> headless();
+  /// An X11 window with an EGL window surface; its default framebuffer is what swap_buffers() shows.
+  static render::Expected<std::unique_ptr<EglContext>> window(const WindowOptions& options);
+
+  ~EglContext();
+  EglContext(const EglContext&) = delete;
+  EglContext& operator=(const EglContext&) = delete;
+
+  bool has_window() const { return window_ != 0; }
+  int width() const { return width_; }    ///< window size (0 headless)
+  int height() const { return height_; }
+  /// Presents the window's back buffer; a no-op headless.
+  render::Status swap_buffers();
+  /// Handles pending window events; false once the window was closed or Escape/q pressed.
+  bool process_events();
+  /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.
+  std::string describe() const;
+
+ private:
+  EglContext() = default;
+  void* display_ = nullptr;    // EGLDisplay
+  void* context_ = nullptr;    // EGLContext
+  void* surface_ = nullptr;    // EGLSurface (window only)
+  void* x_display_ = nullptr;  // Display*
+  unsigned long window_ = 0;   // Window
+  unsigned long wm_delete_ = 0;
+  int width_ = 0, height_ = 0;
+  bool open_ = true;
+  std::string platform_;
+};
+
+}  // namespace lungar::platform

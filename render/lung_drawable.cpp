@@ -1,0 +1,214 @@
+/// @file lung_drawable.cpp
+/// @brief Validation and upload of a baked asset into GL buffers.
+#include "render/lung_drawable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/packing.hpp>
+
+namespace lungar::render {
+namespace {
+
+std::string size_error(const char* field, std::size_t expected, std::size_t got) {
+  return "baked asset: field '" + std::string(field) + "': expected " + std::to_string(expected) + " values, got " +
+         std::to_string(got);
+}
+
+// Checks every array against the vertex count; empty string when the asset is drawable.
+std::string validate(const sim::BakedAsset& a, const DrawableOptions& o) {
+  const std::size_t n = a.vertex_count();
+  if (n == 0) return "baked asset: field 'lung_of_vertex': expected at least one vertex, got 0";
+  if (a.positions.size() != 3 * n) return size_error("positions", 3 * n, a.positions.size());
+  if (a.normals.size() != 3 * n) return size_error("normals", 3 * n, a.normals.size());
+  if (!a.areas.empty() && a.areas.size() != n) return size_error("areas", n, a.areas.size());
+  if (o.basis == Basis::SphericalHarmonics) {
+    if (a.bands == 0 || a.bands > 10) {
+      return "baked asset: field 'bands': expected 1..10, got " + std::to_string(a.bands);
+    }
+    if (a.sh_coeffs.size() != a.coefficients() * n) return size_error("sh_coeffs", a.coefficients() * n, a.sh_coeffs.size());
+  } else if (a.linear_coeffs.size() != 4 * n) {
+    return size_error("linear_coeffs", 4 * n, a.linear_coeffs.size());
+  }
+  if (a.triangles.size() % 3 != 0) return "baked asset: field 'triangles': expected a multiple of 3 indices";
+  for (std::uint32_t index : a.triangles) {
+    if (index >= n) return "baked asset: field 'triangles': expected indices below " + std::to_string(n) + ", got " +
+                           std::to_string(index);
+  }
+  if (a.lungs.empty()) return "baked asset: field 'lungs': expected at least one lung, got none";
+  for (std::size_t i = 0; i < a.lungs.size(); ++i) {
+    const auto& l = a.lungs[i];
+    const std::string field = "lungs[" + std::to_string(i) + "]";
+    if (std::uint64_t{l.first_vertex} + l.vertex_count > n || l.vertex_count == 0) {
+      return "baked asset: field '" + field + ".vertex range': expected a non-empty range within " +
+             std::to_string(n) + " vertices";
+    }
+    if (std::uint64_t{l.first_index} + l.index_count > a.triangles.size()) {
+      return "baked asset: field '" + field + ".index range': expected a range within " +
+             std::to_string(a.triangles.size()) + " indices";
+    }
+  }
+  for (std::uint8_t lung : a.lung_of_vertex) {
+    if (lung >= a.lungs.size()) return "baked asset: field 'lung_of_vertex': expected values below the lung count";
+  }
+  return {};
+}
+
+// Bounding sphere about the box centre (good enough for level of detail, which only needs the scale).
+void bound(const sim::BakedAsset& a, LungRange& r) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (std::uint32_t v = r.first_vertex; v < r.first_vertex + r.vertex_count; ++v) {
+    const glm::vec3 p(a.positions[3 * v], a.positions[3 * v + 1], a.positions[3 * v + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  r.bound_centre = 0.5f * (lo + hi);
+  r.bound_radius = 0.5f * glm::length(hi - lo);
+  double area = 0;
+  for (std::uint32_t v = r.first_vertex; v < r.first_vertex + r.vertex_count && !a.areas.empty(); ++v) area += a.areas[v];
+  // Without areas (never from the bake), estimate the surface from the bounding sphere.
+  r.surface_area_mm2 = area > 0 ? area : 4.0 * M_PI * r.bound_radius * r.bound_radius;
+}
+
+void upload(gl::Buffer& buffer, GLenum target, const void* data, std::size_t bytes, GLenum usage) {
+  buffer = gl::Buffer::create();
+  glBindBuffer(target, buffer.id());
+  glBufferData(target, static_cast<GLsizeiptr>(bytes), data, usage);
+}
+
+}  // namespace
+
+Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const DrawableOptions& options) {
+  if (std::string error = validate(asset, options); !error.empty()) return Expected<LungDrawable>::failure(error);
+  LungDrawable d;
+  const std::uint32_t n = asset.vertex_count();
+  d.vertex_count_ = n;
+  d.basis_ = options.basis;
+  d.half_float_ = options.half_float;
+  d.coefficients_ = options.basis == Basis::Linear ? 4u : asset.coefficients();
+  d.index_count_ = static_cast<std::uint32_t>(asset.triangles.size());
+  d.uses_texture_ = options.storage == CoeffStorage::Texture ||
+                    (options.storage == CoeffStorage::Auto && d.coefficients_ > kMaxAttributeCoefficients);
+  if (options.storage == CoeffStorage::Attributes && d.coefficients_ > kMaxAttributeCoefficients) {
+    return Expected<LungDrawable>::failure("drawable options: field 'storage': attributes hold at most " +
+                                           std::to_string(kMaxAttributeCoefficients) + " coefficients, the asset has " +
+                                           std::to_string(d.coefficients_));
+  }
+  for (const auto& l : asset.lungs) {
+    LungRange r{l.first_vertex, l.vertex_count, l.first_index, l.index_count, 0, {}, 0};
+    bound(asset, r);
+    d.lungs_.push_back(r);
+  }
+
+  // Coefficients padded to whole vec4s, vertex-major: vertex v's k-th vec4 is element v * coeff_vec4 + k.
+  const std::uint32_t nv4 = d.coeff_vec4();
+  const std::vector<float>& src = options.basis == Basis::Linear ? asset.linear_coeffs : asset.sh_coeffs;
+  std::vector<float> padded(std::size_t{n} * nv4 * 4, 0.f);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    std::copy_n(src.begin() + std::size_t{v} * d.coefficients_, d.coefficients_, padded.begin() + std::size_t{v} * nv4 * 4);
+  }
+  std::vector<std::uint16_t> halves;
+  if (options.half_float) {
+    halves.resize(padded.size());
+    std::transform(padded.begin(), padded.end(), halves.begin(), [](float x) { return glm::packHalf1x16(x); });
+  }
+  const void* coeff_data = options.half_float ? static_cast<const void*>(halves.data()) : padded.data();
+  const std::size_t coeff_bytes = padded.size() * (options.half_float ? 2 : 4);
+
+  upload(d.positions_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_STATIC_DRAW);
+  upload(d.normals_, GL_ARRAY_BUFFER, asset.normals.data(), asset.normals.size() * 4, GL_STATIC_DRAW);
+  // The deformed copy starts as the rest shape: drawing it before any deformation shows the rest lungs.
+  upload(d.deformed_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_DYNAMIC_COPY);
+  if (d.index_count_ > 0) {
+    upload(d.indices_, GL_ELEMENT_ARRAY_BUFFER, asset.triangles.data(), asset.triangles.size() * 4, GL_STATIC_DRAW);
+  }
+
+  if (d.uses_texture_) {
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    const std::size_t texels = std::size_t{n} * nv4;
+    const GLint width = std::min<GLint>(max_size, 4096);
+    const std::size_t height = (texels + width - 1) / static_cast<std::size_t>(width);
+    if (height > static_cast<std::size_t>(max_size)) {
+      return Expected<LungDrawable>::failure("baked asset: field 'sh_coeffs': " + std::to_string(texels) +
+                                             " texels exceed the GL texture limit of " + std::to_string(max_size) + "^2");
+    }
+    // The texture's last row is partial: pad the upload to whole rows.
+    const std::size_t padded_values = height * static_cast<std::size_t>(width) * 4;
+    padded.resize(padded_values, 0.f);
+    if (options.half_float) halves.resize(padded_values, 0);
+    d.coeff_texture_ = gl::Texture::create();
+    d.coeff_texture_width_ = width;
+    glBindTexture(GL_TEXTURE_2D, d.coeff_texture_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // float textures are not filterable
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    if (options.half_float) {
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, static_cast<GLsizei>(height), 0, GL_RGBA, GL_HALF_FLOAT,
+                   halves.data());
+    } else {
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, static_cast<GLsizei>(height), 0, GL_RGBA, GL_FLOAT,
+                   padded.data());
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+  } else {
+    upload(d.coeffs_, GL_ARRAY_BUFFER, coeff_data, coeff_bytes, GL_STATIC_DRAW);
+  }
+
+  // rest_vao: rest positions, normals and (attribute storage) coefficients, for the deforming programs.
+  d.rest_vao_ = gl::VertexArray::create();
+  glBindVertexArray(d.rest_vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, d.positions_.id());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  if (!d.uses_texture_) {
+    glBindBuffer(GL_ARRAY_BUFFER, d.coeffs_.id());
+    const GLsizei stride = static_cast<GLsizei>(nv4 * 4 * (options.half_float ? 2 : 4));
+    for (std::uint32_t k = 0; k < nv4; ++k) {
+      glEnableVertexAttribArray(2 + k);
+      const auto offset = static_cast<std::uintptr_t>(k * 4 * (options.half_float ? 2 : 4));
+      glVertexAttribPointer(2 + k, 4, options.half_float ? GL_HALF_FLOAT : GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>(offset));
+    }
+  }
+  if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
+
+  // deformed_vao: deformed positions and the normals, for drawing without the shader deformation.
+  d.deformed_vao_ = gl::VertexArray::create();
+  glBindVertexArray(d.deformed_vao_.id());
+  glBindBuffer(GL_ARRAY_BUFFER, d.deformed_.id());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+
+  if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+    char text[64];
+    std::snprintf(text, sizeof text, "baked asset upload: GL error 0x%04x", err);
+    return Expected<LungDrawable>::failure(text);
+  }
+  return d;
+}
+
+Status LungDrawable::upload_positions(std::span<const float> xyz) {
+  if (xyz.size() != std::size_t{vertex_count_} * 3) {
+    return {"upload_positions: expected " + std::to_string(std::size_t{vertex_count_} * 3) + " floats, got " +
+            std::to_string(xyz.size())};
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, deformed_.id());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(xyz.size_bytes()), xyz.data());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  return Status::ok();
+}
+
+}  // namespace lungar::render

@@ -1,0 +1,84 @@
+/// @file lung_drawable.h
+/// @brief GPU buffers of a baked asset: rest positions, normals, per-vertex coefficients T^I_lm, triangles, and a
+/// buffer of deformed positions (written by transform feedback or uploaded from the CPU).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/expected.h"
+#include "render/gl_objects.h"
+#include "sim/asset/baked_asset.h"
+
+namespace lungar::render {
+
+/// Which per-vertex coefficient field the shader dots with the force: the SH field of eq. (7) (L^2 values) or the
+/// exact linear basis (4 values: tau0, tau_x, tau_y, tau_z; DESIGN.md).
+enum class Basis { SphericalHarmonics, Linear };
+/// Where the coefficients live: vertex attributes (up to 36 coefficients), or a float texture read by gl_VertexID.
+enum class CoeffStorage { Auto, Attributes, Texture };
+
+struct DrawableOptions {
+  Basis basis = Basis::SphericalHarmonics;
+  CoeffStorage storage = CoeffStorage::Auto;  ///< Auto: attributes up to 36 coefficients, else the texture
+  bool half_float = false;                     ///< coefficients as 16-bit floats (half the memory traffic)
+};
+
+/// One lung's share of the vertex array, with what level of detail needs.
+struct LungRange {
+  std::uint32_t first_vertex = 0;
+  std::uint32_t vertex_count = 0;
+  std::uint32_t first_index = 0;
+  std::uint32_t index_count = 0;
+  double surface_area_mm2 = 0;  ///< sum of the vertex areas
+  glm::vec3 bound_centre{0.f};  ///< bounding sphere of the rest shape, lung frame
+  float bound_radius = 0;
+};
+
+/// Coefficients attributes are limited by GL_MAX_VERTEX_ATTRIBS (16 in GLES 3): 9 vec4 plus position and normal.
+inline constexpr std::uint32_t kMaxAttributeCoefficients = 36;
+
+class LungDrawable {
+ public:
+  /// Validates the asset (array sizes, lung ranges, indices) and uploads it; needs a current GLES 3 context.
+  static Expected<LungDrawable> create(const sim::BakedAsset& asset, const DrawableOptions& options = {});
+
+  std::uint32_t vertex_count() const { return vertex_count_; }
+  std::uint32_t coefficients() const { return coefficients_; }  ///< per vertex: L^2, or 4 for the linear basis
+  std::uint32_t coeff_vec4() const { return (coefficients_ + 3) / 4; }
+  bool uses_texture() const { return uses_texture_; }
+  bool half_float() const { return half_float_; }
+  Basis basis() const { return basis_; }
+  const std::vector<LungRange>& lungs() const { return lungs_; }
+  bool has_triangles() const { return index_count_ > 0; }
+
+  /// Replaces the deformed positions (3 floats per vertex, lung frame, mm): the CPU eq. (7)/(1) baselines draw these
+  /// without the shader deformation. Returns an error if the size is wrong.
+  Status upload_positions(std::span<const float> xyz);
+
+  // For the renderer (same folder): vertex arrays that read rest or deformed positions.
+  GLuint rest_vao() const { return rest_vao_.id(); }
+  GLuint deformed_vao() const { return deformed_vao_.id(); }
+  GLuint deformed_buffer() const { return deformed_.id(); }
+  GLuint coeff_texture() const { return coeff_texture_.id(); }
+  GLint coeff_texture_width() const { return coeff_texture_width_; }
+
+ private:
+  LungDrawable() = default;
+  std::uint32_t vertex_count_ = 0;
+  std::uint32_t coefficients_ = 0;
+  std::uint32_t index_count_ = 0;
+  bool uses_texture_ = false;
+  bool half_float_ = false;
+  Basis basis_ = Basis::SphericalHarmonics;
+  std::vector<LungRange> lungs_;
+  gl::Buffer positions_, normals_, coeffs_, indices_, deformed_;
+  gl::Texture coeff_texture_;
+  GLint coeff_texture_width_ = 0;
+  gl::VertexArray rest_vao_, deformed_vao_;
+};
+
+}  // namespace lungar::render

@@ -1,0 +1,101 @@
+/// @file renderer.h
+/// @brief Draws the lungs of a LungDrawable for one or two eyes: points (default) or mesh, deformed by eq. (7) in
+/// the vertex shader, per eye (the paper) or once by transform feedback then both eyes (the default), or drawn from
+/// CPU-deformed positions; with level of detail, back-face culling of points and an optional grey rest overlay.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/expected.h"
+#include "render/frame_target.h"
+#include "render/lung_drawable.h"
+#include "render/stereo_view.h"
+
+namespace lungar::render {
+
+enum class DrawMode { Points, Mesh };
+/// PerEye: each eye's draw evaluates eq. (7) (the paper). DeformOnce: one transform-feedback pass writes the
+/// deformed points into a buffer, then both eyes draw it (measured faster on llvmpipe: the default).
+enum class StereoStrategy { PerEye, DeformOnce };
+/// Where the drawn positions come from: eq. (7) in the shader, positions uploaded from the CPU
+/// (LungDrawable::upload_positions), or the rest shape.
+enum class PositionSource { Shader, Uploaded, Rest };
+
+/// Per lung, per frame.
+struct LungFrame {
+  std::span<const float> force;   ///< f_lm, drawable.coefficients() values, mm per mL per unit of T (normalised)
+  float volume_change_ml = 0.f;   ///< dV; the shader sees dV * f
+  glm::vec3 color{0.9f, 0.45f, 0.45f};
+};
+
+struct FrameInputs {
+  std::span<const LungFrame> lungs;   ///< one per drawable lung
+  std::span<const EyeView> eyes;      ///< one (mono) or two (stereo)
+  glm::mat4 model{1.f};               ///< lung frame -> world (the registration)
+  DrawMode mode = DrawMode::Points;
+  PositionSource source = PositionSource::Shader;
+  StereoStrategy strategy = StereoStrategy::DeformOnce;
+  bool overlay_rest = false;          ///< the rest shape in grey under the deformed lungs (the paper's Fig. 10)
+  float point_size_px = 5.f;          ///< the paper: 5
+  bool level_of_detail = true;        ///< draw count from the projected size (points mode)
+  float lod_coverage = 6.f;           ///< see lod_point_count()
+  bool cull_back_facing = true;       ///< points mode
+  float ambient = 0.3f;
+  glm::vec3 rest_color{0.55f, 0.55f, 0.55f};
+  bool clear = true;                  ///< clear the bound framebuffer to `background` first
+  glm::vec3 background{0.f};
+};
+
+/// What a frame drew, per eye.
+struct FrameStats {
+  std::uint32_t points_deformed = 0;                 ///< by the transform-feedback pass
+  std::array<std::uint32_t, 2> points_drawn{0, 0};   ///< per eye (before culling)
+};
+
+inline constexpr std::size_t kMaxLungs = 8;
+
+class Renderer {
+ public:
+  /// Builds the programs for the drawable's coefficient layout (count, attributes or texture).
+  static Expected<Renderer> create(const LungDrawable& drawable);
+
+  /// Draws into the bound framebuffer. Allocates nothing; returns an error for inputs that do not fit the drawable.
+  Status draw(const LungDrawable& drawable, const FrameInputs& frame, FrameStats* stats = nullptr);
+
+  /// Evaluates eq. (7) for every vertex by transform feedback and reads the deformed positions back
+  /// (3 floats per vertex): the shader's own output, for tests against the CPU reference.
+  Status capture_deformed(const LungDrawable& drawable, std::span<const LungFrame> lungs, std::vector<float>& xyz);
+
+ private:
+  struct Slots {
+    gl::Program program;
+    GLint force = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1, color = -1, ambient = -1, point_size = -1;
+  };
+  enum Variant { kDeformCull, kDeformNoCull, kPlainCull, kPlainNoCull, kCapture, kVariants };
+
+  Renderer() = default;
+  Status check(const LungDrawable& drawable, std::span<const LungFrame> lungs, bool needs_force) const;
+  void use(const LungDrawable& drawable, Variant v) const;
+  void set_force(Variant v, const LungFrame& lung);
+  void set_eye(Variant v, const glm::mat4& model, const EyeView& eye, const glm::vec3& color, const FrameInputs& f) const;
+  void deform_once(const LungDrawable& drawable, std::span<const LungFrame> lungs,
+                   std::span<const std::uint32_t> counts);
+  void draw_lungs(const LungDrawable& drawable, Variant v, GLuint vao, const FrameInputs& f, const EyeView& eye,
+                  std::span<const std::uint32_t> counts, bool rest_overlay);
+
+  std::uint32_t coeff_vec4_ = 0;
+  std::uint32_t coefficients_ = 0;
+  std::array<Slots, kVariants> slots_;
+  std::vector<float> padded_force_;  ///< dV * f, zero-padded to whole vec4s; sized once
+  gl::TransformFeedback feedback_;
+  gl::Framebuffer capture_fbo_;      ///< transform feedback needs a complete framebuffer even with no raster
+  gl::Renderbuffer capture_rb_;
+};
+
+}  // namespace lungar::render

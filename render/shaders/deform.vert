@@ -1,0 +1,121 @@
+// deform.vert — the paper's stage 3 (eq. 7) per vertex, then Lambert + ambient lighting for point or mesh drawing.
+//
+//   D_I = sum_lm T^I_lm f_lm          (f already multiplied by the volume change dV: D in mm)
+//   p'_I = p_I + D_I n_I
+//
+// The host prepends `#version 300 es` and these defines (render/shader_program.cpp):
+//   DEFORM          1: evaluate eq. (7); 0: draw a_position as given (rest shape, CPU-deformed or captured positions)
+//   COEFF_VEC4      number of vec4 holding the L^2 coefficients (zero-padded to a multiple of 4)
+//   COEFF_TEXTURE   1: coefficients in a float texture fetched by gl_VertexID; 0: vertex attributes
+//   CULL            1: move back-facing points out of the clip volume (points mode); 0: keep all (mesh, capture)
+// The transform-feedback capture (deform once, then draw both eyes) records v_position.
+
+precision highp float;
+precision highp int;
+
+layout(location = 0) in vec3 a_position;  // rest position x_I, mm, lung frame
+layout(location = 1) in vec3 a_normal;    // outward unit normal n_I
+
+#if DEFORM
+uniform vec4 u_force[COEFF_VEC4];  // dV * f_lm of this vertex's lung, mm per unit of T
+#if COEFF_TEXTURE
+uniform highp sampler2D u_coeff;   // texel (v * COEFF_VEC4 + k) holds T^v_{4k..4k+3}
+uniform int u_coeff_width;         // texels per row of u_coeff
+#else
+// T^I_lm, 4 per attribute (GLSL ES 3.00 has no attribute arrays, hence one name each; at most 9 = 36 values).
+layout(location = 2) in vec4 a_coeff0;
+#if COEFF_VEC4 > 1
+layout(location = 3) in vec4 a_coeff1;
+#endif
+#if COEFF_VEC4 > 2
+layout(location = 4) in vec4 a_coeff2;
+#endif
+#if COEFF_VEC4 > 3
+layout(location = 5) in vec4 a_coeff3;
+#endif
+#if COEFF_VEC4 > 4
+layout(location = 6) in vec4 a_coeff4;
+#endif
+#if COEFF_VEC4 > 5
+layout(location = 7) in vec4 a_coeff5;
+#endif
+#if COEFF_VEC4 > 6
+layout(location = 8) in vec4 a_coeff6;
+#endif
+#if COEFF_VEC4 > 7
+layout(location = 9) in vec4 a_coeff7;
+#endif
+#if COEFF_VEC4 > 8
+layout(location = 10) in vec4 a_coeff8;
+#endif
+#endif
+#endif
+
+uniform mat4 u_model_view_proj;  // lung frame -> clip space of this eye
+uniform vec3 u_eye_model;        // this eye's centre in the lung frame (back-face test and head light)
+uniform vec3 u_color;            // lung colour
+uniform float u_ambient;         // ambient share of the lighting
+uniform float u_point_size;      // pixels (the paper: 5)
+
+out vec3 v_position;             // deformed position, captured by transform feedback
+flat out vec3 v_color;
+
+// D_I of eq. (7): the dot product of the vertex's coefficients with the lung's force SH.
+float displacement_eq7() {
+#if DEFORM
+  vec4 acc = vec4(0.0);
+#if COEFF_TEXTURE
+  for (int k = 0; k < COEFF_VEC4; ++k) {
+    int texel = gl_VertexID * COEFF_VEC4 + k;
+    acc += texelFetch(u_coeff, ivec2(texel % u_coeff_width, texel / u_coeff_width), 0) * u_force[k];
+  }
+#else
+  acc += a_coeff0 * u_force[0];
+#if COEFF_VEC4 > 1
+  acc += a_coeff1 * u_force[1];
+#endif
+#if COEFF_VEC4 > 2
+  acc += a_coeff2 * u_force[2];
+#endif
+#if COEFF_VEC4 > 3
+  acc += a_coeff3 * u_force[3];
+#endif
+#if COEFF_VEC4 > 4
+  acc += a_coeff4 * u_force[4];
+#endif
+#if COEFF_VEC4 > 5
+  acc += a_coeff5 * u_force[5];
+#endif
+#if COEFF_VEC4 > 6
+  acc += a_coeff6 * u_force[6];
+#endif
+#if COEFF_VEC4 > 7
+  acc += a_coeff7 * u_force[7];
+#endif
+#if COEFF_VEC4 > 8
+  acc += a_coeff8 * u_force[8];
+#endif
+#endif
+  return acc.x + acc.y + acc.z + acc.w;
+#else
+  return 0.0;
+#endif
+}
+
+void main() {
+  vec3 p = a_position + displacement_eq7() * a_normal;  // p' = p + D n
+  v_position = p;
+
+  // The head light sits at the eye; the rest normal stands for the deformed one (displacements are small).
+  vec3 to_eye = u_eye_model - p;
+  float facing = dot(a_normal, to_eye);
+  float lambert = max(facing, 0.0) * inversesqrt(max(dot(to_eye, to_eye), 1e-12));
+  v_color = u_color * (u_ambient + (1.0 - u_ambient) * lambert);
+  gl_PointSize = u_point_size;
+  gl_Position = u_model_view_proj * vec4(p, 1.0);
+#if CULL
+  // A back-facing point is hidden by the front surface: put it outside the clip volume so that the rasteriser
+  // drops it before any setup (the per-point setup and raster are what cost on llvmpipe).
+  if (facing < 0.0) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+#endif
+}

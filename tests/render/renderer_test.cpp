@@ -1,0 +1,201 @@
+/// @file renderer_test.cpp
+/// @brief Frame drawing: strategies agree, CPU-uploaded positions agree with the shader, level of detail keeps the
+/// coverage with fewer points, modes and overlay draw, bad inputs are refused with a message.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/frame_target.h"
+#include "render/png_snapshot.h"
+#include "render/renderer.h"
+#include "tests/render/gl_fixture.h"
+#include "tests/render/synthetic_lungs.h"
+
+namespace lungar::render {
+namespace {
+
+constexpr int kEyeW = 320, kEyeH = 360;
+
+class RendererTest : public test::GlTest {
+ protected:
+  void SetUp() override {
+    asset_ = test::ellipsoid_pair(20000, 4, 21);
+    force_.assign(16, 0.f);
+    for (std::size_t k = 0; k < force_.size(); ++k) force_[k] = 0.03f * static_cast<float>((k % 5) + 1) / 5.f;
+    auto d = LungDrawable::create(asset_);
+    ASSERT_TRUE(d) << d.error();
+    drawable_.emplace(d.take());
+    auto r = Renderer::create(*drawable_);
+    ASSERT_TRUE(r) << r.error();
+    renderer_.emplace(r.take());
+    auto t = FrameTarget::create(2 * kEyeW, kEyeH);
+    ASSERT_TRUE(t) << t.error();
+    target_.emplace(t.take());
+    HmdGeometry hmd;
+    hmd.eye_width_px = kEyeW;
+    hmd.eye_height_px = kEyeH;
+    eyes_ = StereoView(hmd).eyes(look_from({0.f, -600.f, 50.f}, {0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}));
+    lungs_[0] = {force_, 400.f, {0.45f, 0.6f, 0.95f}};
+    lungs_[1] = {force_, 400.f, {0.9f, 0.45f, 0.45f}};
+    frame_.lungs = lungs_;
+    frame_.eyes = eyes_;
+  }
+
+  std::vector<std::uint8_t> draw(const FrameInputs& f, FrameStats* stats = nullptr) {
+    target_->bind();
+    Status s = renderer_->draw(*drawable_, f, stats);
+    EXPECT_TRUE(s) << s.error;
+    std::vector<std::uint8_t> rgba;
+    read_pixels_top_down(0, 0, target_->width(), target_->height(), rgba);
+    return rgba;
+  }
+
+  static double lit_fraction(const std::vector<std::uint8_t>& rgba) {
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) lit += (rgba[i] + rgba[i + 1] + rgba[i + 2]) > 0;
+    return static_cast<double>(lit) / static_cast<double>(rgba.size() / 4);
+  }
+
+  static double differing_fraction(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.size(); i += 4) {
+      int d = 0;
+      for (int k = 0; k < 3; ++k) d = std::max(d, std::abs(int{a[i + k]} - int{b[i + k]}));
+      differ += d > 2;
+    }
+    return static_cast<double>(differ) / static_cast<double>(a.size() / 4);
+  }
+
+  sim::BakedAsset asset_;
+  std::vector<float> force_;
+  std::optional<LungDrawable> drawable_;
+  std::optional<Renderer> renderer_;
+  std::optional<FrameTarget> target_;
+  std::array<EyeView, 2> eyes_;
+  LungFrame lungs_[2];
+  FrameInputs frame_;
+};
+
+TEST_F(RendererTest, PerEyeAndDeformOnceDrawTheSameImage) {
+  FrameInputs f = frame_;
+  f.strategy = StereoStrategy::PerEye;
+  const auto per_eye = draw(f);
+  f.strategy = StereoStrategy::DeformOnce;
+  FrameStats stats;
+  const auto once = draw(f, &stats);
+  EXPECT_GT(lit_fraction(once), 0.02);
+  EXPECT_LT(differing_fraction(per_eye, once), 0.002);
+  EXPECT_GE(stats.points_deformed, std::max(stats.points_drawn[0], stats.points_drawn[1]));
+}
+
+TEST_F(RendererTest, CpuDeformedUploadDrawsLikeTheShader) {
+  FrameInputs f = frame_;
+  const auto shader = draw(f);
+  const auto cpu = test::deform_eq7(asset_, {force_, force_}, {400.f, 400.f});
+  std::vector<float> xyz(cpu.begin(), cpu.end());
+  ASSERT_TRUE(drawable_->upload_positions(xyz));
+  f.source = PositionSource::Uploaded;
+  const auto uploaded = draw(f);
+  EXPECT_LT(differing_fraction(shader, uploaded), 0.002);
+  // The rest shape is a different picture: the comparison can fail.
+  f.source = PositionSource::Rest;
+  EXPECT_GT(differing_fraction(shader, draw(f)), 0.005);
+  EXPECT_FALSE(drawable_->upload_positions(std::span<const float>(xyz.data(), 3)));
+}
+
+TEST_F(RendererTest, LevelOfDetailDrawsFewerPointsAtEqualCoverage) {
+  FrameInputs f = frame_;
+  f.level_of_detail = false;
+  FrameStats all, lod;
+  const auto full_image = draw(f, &all);
+  f.level_of_detail = true;
+  const auto lod_image = draw(f, &lod);
+  const double full = lit_fraction(full_image), reduced = lit_fraction(lod_image);
+  EXPECT_TRUE(write_png(std::string(LUNGAR_BINARY_DIR) + "/render-test-full.png", 2 * kEyeW, kEyeH, full_image));
+  EXPECT_TRUE(write_png(std::string(LUNGAR_BINARY_DIR) + "/render-test-lod.png", 2 * kEyeW, kEyeH, lod_image));
+  std::printf("level of detail: %u of %u points in the left eye, coverage %.4f vs %.4f\n", lod.points_drawn[0],
+              all.points_drawn[0], reduced, full);
+  EXPECT_LT(lod.points_drawn[0], all.points_drawn[0] / 2);
+  EXPECT_GT(reduced, 0.97 * full) << "coverage " << reduced << " vs " << full;
+  // Farther away, fewer points still.
+  FrameStats far_stats;
+  std::array<EyeView, 2> far = eyes_;
+  for (auto& e : far) e.view = e.view * glm::translate(glm::mat4(1.f), glm::vec3(0.f, 800.f, 0.f));
+  f.eyes = far;
+  draw(f, &far_stats);
+  EXPECT_LT(far_stats.points_drawn[0], lod.points_drawn[0]);
+}
+
+TEST_F(RendererTest, BackFaceCullingKeepsTheFrontPicture) {
+  FrameInputs f = frame_;
+  f.level_of_detail = false;
+  const auto culled = draw(f);
+  f.cull_back_facing = false;
+  const auto all = draw(f);
+  // Depth testing hides the back either way; culling only removes hidden work (edges may differ by a point).
+  EXPECT_LT(differing_fraction(culled, all), 0.01);
+}
+
+TEST_F(RendererTest, OverlayShowsTheRestShapeInGrey) {
+  FrameInputs f = frame_;
+  for (auto& l : lungs_) l.volume_change_ml = -400.f;  // deflated: the rest shape shows around it
+  f.overlay_rest = true;
+  const auto rgba = draw(f);
+  std::size_t grey = 0;
+  for (std::size_t i = 0; i < rgba.size(); i += 4) grey += rgba[i] > 0 && rgba[i] == rgba[i + 1] && rgba[i] == rgba[i + 2];
+  EXPECT_GT(grey, 1000u);
+}
+
+TEST_F(RendererTest, MeshModeFillsTheSilhouette) {
+  const auto mesh_asset = test::ellipsoid_pair_mesh(48, 64, 4, 5);
+  auto mesh = LungDrawable::create(mesh_asset);
+  ASSERT_TRUE(mesh) << mesh.error();
+  FrameInputs f = frame_;
+  f.mode = DrawMode::Mesh;
+  target_->bind();
+  EXPECT_TRUE(renderer_->draw(*mesh, f));
+  std::vector<std::uint8_t> rgba;
+  read_pixels_top_down(0, 0, target_->width(), target_->height(), rgba);
+  EXPECT_GT(lit_fraction(rgba), 0.02);
+  // A point asset has no triangles: mesh mode is refused, not drawn wrong.
+  Status refused = renderer_->draw(*drawable_, f);
+  EXPECT_FALSE(refused);
+  EXPECT_NE(refused.error.find("mesh"), std::string::npos);
+}
+
+TEST_F(RendererTest, RefusesInputsThatDoNotFit) {
+  FrameInputs f = frame_;
+  const std::vector<float> short_force(5, 0.f);
+  LungFrame bad[2] = {{short_force, 1.f, {}}, lungs_[1]};
+  f.lungs = bad;
+  Status s = renderer_->draw(*drawable_, f);
+  EXPECT_FALSE(s);
+  EXPECT_NE(s.error.find("lungs[0].force"), std::string::npos) << s.error;
+  f.lungs = std::span<const LungFrame>(lungs_, 1);
+  EXPECT_FALSE(renderer_->draw(*drawable_, f));
+  f = frame_;
+  f.eyes = {};
+  EXPECT_FALSE(renderer_->draw(*drawable_, f));
+  // The CPU path needs no force at all.
+  f = frame_;
+  f.source = PositionSource::Uploaded;
+  f.lungs = bad;
+  EXPECT_TRUE(renderer_->draw(*drawable_, f));
+}
+
+TEST_F(RendererTest, SnapshotWritesAPng) {
+  draw(frame_);
+  const std::string path = std::string(LUNGAR_BINARY_DIR) + "/render-test-snapshot.png";
+  std::remove(path.c_str());
+  ASSERT_TRUE(snapshot_png(path, 0, 0, target_->width(), target_->height()));
+  std::ifstream in(path, std::ios::binary);
+  char magic[8] = {};
+  in.read(magic, 8);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+}  // namespace
+}  // namespace lungar::render

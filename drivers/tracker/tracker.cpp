@@ -71,6 +71,7 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
     return r;
   }
   std::unique_ptr<TrackerSource> source;
+  bool layout_differs = false;
   switch (settings.source) {
     case config::TrackerSource::Mock:
       if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
@@ -86,6 +87,9 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
         r.error = log.error;
         return r;
       }
+      // The bytes are decoded with the configured layout, as the HID source would; a log made with another
+      // layout says so in its header, and the mismatch is worth a line.
+      layout_differs = !log.log->header.layout_toml.empty() && log.log->header.layout_toml != layout_to_toml(settings);
       source = replay_create(std::move(*log.log), settings.replay_file, settings.replay_realtime, settings.replay_loop);
       break;
     }
@@ -107,6 +111,11 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
     }
   }
   core->log(-1, "tracker: %s", source->describe().c_str());
+  if (layout_differs) {
+    core->log(-1, "replay %s: the log was recorded with another report layout than the config's; decoding with "
+                  "the config's (lungar-trk dump uses the log's own)",
+              settings.replay_file.c_str());
+  }
   r.tracker = std::make_unique<Tracker>(std::move(core), std::move(source));
   return r;
 }

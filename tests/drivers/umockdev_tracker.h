@@ -38,6 +38,8 @@ class UmockdevTracker {
   /// Removes the device from the emulated bus, as pulling the cable would.
   void unplug();
   /// Writes one raw report as the device would send it. False when the device is not plugged in.
+  /// The node is a pseudo-terminal: keep less than 4 KiB unread (its line discipline's buffer), i.e. write at
+  /// the device's pace or wait for the reader, or a report will be split across two reads.
   bool write(std::span<const std::uint8_t> report);
 
   std::string dev_path() const;  ///< /dev/hidrawN

@@ -16,7 +16,7 @@
 namespace lungar::render {
 
 /// `coverage` is the factor by which the drawn points' total footprint exceeds the surface area they cover
-/// (random-ish placement needs ~3-4 for a hole-free look). `model_view` maps the lung frame to the eye,
+/// (3 is hole-free for the low-discrepancy order of the test assets). `model_view` maps the lung frame to the eye,
 /// `projection_y` is projection[1][1], `viewport_height_px` the eye's height.
 std::uint32_t lod_point_count(const LungRange& lung, const glm::mat4& model_view, float projection_y,
                               int viewport_height_px, float point_size_px, float coverage);

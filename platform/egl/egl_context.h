@@ -35,6 +35,8 @@ class EglContext {
   bool has_window() const { return window_ != 0; }
   int width() const { return width_; }    ///< window size (0 headless)
   int height() const { return height_; }
+  /// Makes this context (and its window surface) current on the calling thread.
+  render::Status make_current();
   /// Presents the window's back buffer; a no-op headless.
   render::Status swap_buffers();
   /// Handles pending window events; false once the window was closed or Escape/q pressed.

@@ -18,6 +18,8 @@ class GlTest : public ::testing::Test {
     ASSERT_TRUE(c) << c.error();
     context_ = c.take().release();  // lives to the end of the process: llvmpipe dislikes teardown at exit
   }
+  // Another suite may have made its own context current (the window test): take the shared one back.
+  void SetUp() override { ASSERT_TRUE(context_->make_current()); }
   static platform::EglContext* context_;
 };
 

@@ -22,6 +22,7 @@ constexpr int kEyeW = 320, kEyeH = 360;
 class RendererTest : public test::GlTest {
  protected:
   void SetUp() override {
+    GlTest::SetUp();
     asset_ = test::ellipsoid_pair(20000, 4, 21);
     force_.assign(16, 0.f);
     for (std::size_t k = 0; k < force_.size(); ++k) force_[k] = 0.03f * static_cast<float>((k % 5) + 1) / 5.f;

@@ -36,6 +36,9 @@ struct BakedLung {
   /// so that the displacement is in mm per mL of volume change.
   std::vector<float> force_const;                 ///< f0, L^2 values
   std::array<std::vector<float>, 3> force_grad;   ///< f_x, f_y, f_z, L^2 values each
+  /// Issue 3: v0 and v are the first-order swept volumes sum_I A_I D_I scaled by one factor per lung (about
+  /// 1.03) so that, upright, dV = 500 mL changes the enclosed volume by exactly 500 mL (secant at the tidal
+  /// volume, which absorbs the surface-curvature term the first-order sum leaves out).
   double volume_const = 0;                        ///< v0
   std::array<double, 3> volume_grad{};            ///< v
 

@@ -93,7 +93,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
 
   auto t2 = Clock::now();
   if (opt.transfer_rows)
-    append_transfer_rows(w.k, opt.transfer_epsilon, threads, offset, w.rows, [&](std::size_t done) {
+    append_transfer_rows(w.k, w.areas, w.x.col(c_solved), opt.transfer_epsilon, threads, offset, w.rows, [&](std::size_t done) {
       if (progress) progress("transfer rows", static_cast<double>(done) / static_cast<double>(n));
     });
   std::lock_guard lock(timing_mutex);
@@ -150,6 +150,29 @@ void fill_paper_forces(BakedAsset& a) {
         force_sh_exact(a, lung, g, lung.paper_force[axis * kPaperAngles + k].data());
       }
   }
+}
+
+/// The first-order swept volume sum_I A_I D_I undercounts the enclosed volume change at tidal volume by the
+/// surface's curvature term (about D/R, some 3 % on adult lungs at 500 mL). Returns the factor for v0 and v
+/// that makes the upright displacement at the paper's tidal volume change this lung's enclosed volume by
+/// exactly its share of 500 mL: the normalisation is the secant at V_T rather than the tangent at 0.
+double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share) {
+  const Eigen::Index c = w.c_solved;
+  const Eigen::VectorXd d = opt.p0 * w.x.col(c) - opt.gamma_per_mm * w.x.col(c + 3);  // g = (0, 0, -1)
+  const double linear = w.areas.dot(d);
+  const double target = kTidalVolumeMl * 1000.0 * share;
+  if (!(linear > 0)) return 1.0;
+  TriMesh moved = w.mesh;
+  const double rest = enclosed_volume(w.mesh);
+  double t = target / linear;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    for (std::size_t i = 0; i < moved.positions.size(); ++i)
+      moved.positions[i] = w.mesh.positions[i] + t * d[static_cast<Eigen::Index>(i)] * w.geometry.normals[i];
+    const double change = enclosed_volume(moved) - rest;
+    if (!(change > 0)) return 1.0;
+    t *= target / change;
+  }
+  return (target / t) / linear;
 }
 
 }  // namespace
@@ -228,7 +251,12 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   a.decay_length_mm = opt.decay_length_mm;
   double total_volume = 0;
   for (const auto& w : work) total_volume += w->rest_volume_mm3;
-  for (std::size_t l = 0; l < work.size(); ++l) fill_lung(*work[l], opt, a, l, total_volume);
+  for (std::size_t l = 0; l < work.size(); ++l) {
+    fill_lung(*work[l], opt, a, l, total_volume);
+    const double k = tidal_calibration(*work[l], opt, a.lungs[l].volume_share);
+    a.lungs[l].volume_const *= k;
+    for (double& v : a.lungs[l].volume_grad) v *= k;
+  }
   fill_paper_forces(a);
   if (opt.transfer_rows) {
     a.transfer_epsilon = opt.transfer_epsilon;

@@ -16,6 +16,9 @@
 
 namespace lungar::sim {
 
+/// The tidal volume at which the volume normalisation is calibrated and the report measures (the paper's).
+inline constexpr double kTidalVolumeMl = 500.0;
+
 struct BakeOptions {
   std::uint32_t bands = 4;           ///< L, 1 to 8
   int threads = 0;                   ///< 0: all hardware threads

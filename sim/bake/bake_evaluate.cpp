@@ -58,14 +58,16 @@ double end_ratio(const BakedAsset& a, const std::vector<float>& d, int axis, dou
 }  // namespace
 
 void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
-                   int threads, const BakeProgress& progress, BakeReport& report) {
+                   int /*threads*/, const BakeProgress& progress, BakeReport& report) {
   const std::vector<Eigen::Vector3d> dirs = report_directions();
   const auto nd = static_cast<Eigen::Index>(dirs.size());
   const std::size_t n = a.vertex_count();
   Eigen::MatrixXd g_mat(3, nd);
   for (Eigen::Index k = 0; k < nd; ++k) g_mat.col(k) = dirs[k];
 
-  // The exact eq. (1), D = K^-1 (A o p_g) / V(g) * 1000, by fresh solves (independent of the baked fields).
+  // The exact eq. (1), D = K^-1 (A o p_g) / V(g) * 1000. p is linear in g, so in exact arithmetic this is
+  // p0 tau0 + gamma tau g from the double-precision solves (no rounding to float, unlike the asset's linear
+  // basis); tests check it against fresh solves.
   Eigen::MatrixXd exact(n, nd);
   std::vector<Eigen::MatrixXd> pressures;  // per lung, N x nd
   std::vector<Eigen::RowVectorXd> scales;  // per lung, 1000 / V(g)
@@ -73,7 +75,8 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
     const LungWork& w = *work[l];
     const BakedLung& lung = a.lungs[l];
     Eigen::MatrixXd p = (w.offsets * g_mat * opt.gamma_per_mm).array() + opt.p0;
-    Eigen::MatrixXd d = w.solver->solve(w.areas.asDiagonal() * p, threads);
+    const Eigen::MatrixXd d = (w.x.col(w.c_solved) * opt.p0).replicate(1, nd) +
+                              opt.gamma_per_mm * w.x.middleCols(w.c_solved + 1, 3) * g_mat;
     Eigen::RowVectorXd s(nd);
     for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, lung, dirs[k]);
     exact.middleRows(lung.first_vertex, lung.vertex_count) = d * s.asDiagonal();
@@ -131,7 +134,7 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   if (progress) progress("evaluate", 0.9);
 
   // Physiology at the tidal volume: upright and supine, through eq. (7).
-  constexpr double kTidalMl = 500.0;
+  constexpr double kTidalMl = kTidalVolumeMl;
   const Eigen::Vector3d upright(0, 0, -1), supine_g(0, 1, 0);
   for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], upright, force.data() + l * c);
   displacement_eq7(a, force, d7);

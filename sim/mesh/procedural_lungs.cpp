@@ -39,7 +39,7 @@ double radius(const LungShape& s, const Eigen::Vector3d& u) {
       1.0 / std::sqrt((u.x() / s.a) * (u.x() / s.a) + (u.y() / s.b) * (u.y() / s.b) + (u.z() / s.c) * (u.z() / s.c));
   // Apex: the upper half narrows to a cone-like dome.
   const double up = std::max(0.0, u.z());
-  double r = side * (1.0 - 0.45 * up * (1.0 - up * up));
+  double r = side * (1.0 - 0.30 * up * (1.0 - up * up));
   // Diaphragm: a paraboloid dome z = -H + D (1 - rho^2 / rho_b^2) bulging up into the base.
   if (u.z() < 0) {
     const double H = 0.72 * s.c, D = 0.22 * s.c, rho_b = 1.05 * s.b;
@@ -49,14 +49,14 @@ double radius(const LungShape& s, const Eigen::Vector3d& u) {
     const double disc = qb * qb - 4 * qa * qc;
     if (qa < 1e-12) dome = qc / -qb;
     else if (disc >= 0) dome = (-qb - std::sqrt(disc)) / (2 * qa);
-    r = soft_min(r, dome, 0.05 * s.c);
+    r = soft_min(r, dome, 0.12 * s.c);
   }
   // Medial face: concave where it meets the mediastinum and the heart.
   const double towards_medial = s.medial_sign * u.x();
-  r *= 1.0 - 0.30 * std::exp(-(1.0 - towards_medial) / 0.25);
+  r *= 1.0 - 0.25 * std::exp(-(1.0 - towards_medial) / 0.35);
   if (s.cardiac_notch) {  // left lung: anterior, medial, inferior
     const Eigen::Vector3d notch = Eigen::Vector3d(s.medial_sign, -0.9, -0.55).normalized();
-    r *= 1.0 - 0.30 * std::exp(-(1.0 - u.dot(notch)) / 0.06);
+    r *= 1.0 - 0.25 * std::exp(-(1.0 - u.dot(notch)) / 0.12);
   }
   for (const Bump& b : s.bumps) r *= 1.0 + b.amplitude * std::exp(-(1.0 - u.dot(b.direction)) / b.width);
   return r;
@@ -104,7 +104,7 @@ LungMesh make_lung(const char* name, const LungShape& shape, const Eigen::Vector
   for (Eigen::Vector3d& p : lung.mesh.positions) p *= radius(shape, p);
   const double scale = std::cbrt(shape.target_volume_mm3 / enclosed_volume(lung.mesh));
   for (Eigen::Vector3d& p : lung.mesh.positions) p = centre + scale * p;
-  lung.has_centre = true;
+  lung.has_centre = false;
   lung.centre = centre;
   return lung;
 }
@@ -121,7 +121,7 @@ std::vector<LungMesh> procedural_lungs(std::uint32_t total_nodes, std::uint64_t 
     for (int k = 0; k < 5; ++k) {
       Eigen::Vector3d d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
       if (d.norm() < 1e-3) d = Eigen::Vector3d::UnitX();
-      out.push_back({d.normalized(), uniform(-0.04, 0.04), uniform(0.15, 0.5)});
+      out.push_back({d.normalized(), uniform(-0.04, 0.04), uniform(0.3, 0.8)});
     }
     return out;
   };

@@ -18,16 +18,16 @@ struct RowBlock {
 
 class PushSolver {
  public:
-  explicit PushSolver(const Eigen::SparseMatrix<double>& k)
-      : k_(k), t_(k.rows(), 0.0), r_(k.rows(), 0.0), queued_(k.rows(), 0), diag_(k.rows()) {
+  PushSolver(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas, const Eigen::VectorXd& weight)
+      : k_(k), areas_(areas), weight_(weight), t_(k.rows(), 0.0), r_(k.rows(), 0.0), queued_(k.rows(), 0), diag_(k.rows()) {
     for (Eigen::Index j = 0; j < k.outerSize(); ++j) diag_[j] = k.coeff(j, j);
   }
 
   /// Row I, truncated at epsilon * T_II, appended to `block` (local column indices + offset).
   void row(std::uint32_t i, double epsilon, std::uint32_t offset, RowBlock& block) {
-    // Stop pushing node j once the update it would make, r_j / K_jj, is a small fraction of the diagonal's
-    // first estimate 1/K_II; a quarter of epsilon keeps the truncation, not the solve, the dominant error.
-    const double stop = 0.25 * epsilon / diag_[i];
+    // Stop pushing node j once the update it would make, r_j / K_jj, is below epsilon times the diagonal's
+    // first estimate 1/K_II: finer pushes would only feed the tail that the truncation drops.
+    const double stop = epsilon / diag_[i];
     r_[i] = 1.0;
     touch(i);
     queue_.clear();
@@ -59,12 +59,16 @@ class PushSolver {
       }
     }
     const double keep = epsilon * t_[i];
-    std::uint32_t count = 0;
     std::sort(touched_.begin(), touched_.end());
+    double kept_weight = 0;
+    for (std::uint32_t j : touched_)
+      if (t_[j] >= keep && t_[j] > 0) kept_weight += t_[j] * areas_[j];
+    const double scale = kept_weight > 0 ? weight_[i] / kept_weight : 1.0;
+    std::uint32_t count = 0;
     for (std::uint32_t j : touched_) {
       if (t_[j] >= keep && t_[j] > 0) {
         block.cols.push_back(j + offset);
-        block.vals.push_back(static_cast<float>(t_[j]));
+        block.vals.push_back(static_cast<float>(t_[j] * scale));
         ++count;
       }
       t_[j] = 0;
@@ -79,6 +83,8 @@ class PushSolver {
   void touch(std::uint32_t j) { touched_.push_back(j); }
 
   const Eigen::SparseMatrix<double>& k_;
+  const Eigen::VectorXd& areas_;
+  const Eigen::VectorXd& weight_;
   std::vector<double> t_, r_;
   std::vector<char> queued_;
   std::vector<double> diag_;
@@ -87,7 +93,8 @@ class PushSolver {
 
 }  // namespace
 
-void append_transfer_rows(const Eigen::SparseMatrix<double>& k, double epsilon, int threads, std::uint32_t offset,
+void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas,
+                          const Eigen::VectorXd& row_weight, double epsilon, int threads, std::uint32_t offset,
                           TransferRows& out, const std::function<void(std::size_t)>& progress) {
   const auto rows = static_cast<std::uint32_t>(k.rows());
   const int workers = std::clamp(threads, 1, 64);
@@ -98,7 +105,7 @@ void append_transfer_rows(const Eigen::SparseMatrix<double>& k, double epsilon, 
   std::atomic<std::uint32_t> next{0};
   std::atomic<std::size_t> done{0};
   auto work = [&](bool reporter) {
-    PushSolver solver(k);
+    PushSolver solver(k, areas, row_weight);
     for (std::uint32_t b; (b = next.fetch_add(1)) < block_count;) {
       const std::uint32_t first = b * block_rows, last = std::min(rows, first + block_rows);
       for (std::uint32_t i = first; i < last; ++i) solver.row(i, epsilon, offset, blocks[b]);

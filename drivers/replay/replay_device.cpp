@@ -25,7 +25,7 @@ class ReplayDevice final : public TrackerSource {
     core.set_state(TrackerState::Streaming);
     bool first_pass = true;
     while (!stop.stop_requested() && !log_.records.empty() && (first_pass || loop_)) {
-      if (!first_pass) core.count_reconnect();  // a loop restarts the device clock
+      if (!first_pass) core.restart_device_clock();  // the log starts over: its device time too
       first_pass = false;
       const auto start = clock::now();
       const std::int64_t t0 = log_.records.front().t_arrival_ns;

@@ -119,6 +119,10 @@ int dump(const std::string& file, const std::string& format, const std::string& 
     }
     ++index;
   }
+  if (r.log->truncated_tail) {
+    std::fprintf(stderr, "lungar-trk: %s: the last record is incomplete (cut short while writing) and is left out\n",
+                 file.c_str());
+  }
   return 0;
 }
 

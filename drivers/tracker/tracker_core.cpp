@@ -144,6 +144,10 @@ void TrackerCore::set_state(TrackerState s) {
 
 void TrackerCore::count_reconnect() {
   reconnects_.fetch_add(1, std::memory_order_relaxed);
+  restart_device_clock();
+}
+
+void TrackerCore::restart_device_clock() {
   clock_.reset();
   rebase_ = true;
 }

@@ -31,8 +31,10 @@ class TrackerCore {
   /// Between reads: streaming -> stale after stale_ms without an accepted report; the rate decays to 0.
   void tick(std::int64_t now_ns);
   void set_state(TrackerState s);
-  /// The device came back: counts it; its clock may have restarted, so device time is re-based.
+  /// The device came back: counts it and restarts the device clock.
   void count_reconnect();
+  /// The device clock may restart (a replug, a replay loop): device time continues from the last sample.
+  void restart_device_clock();
   /// The device was opened (stats().opens).
   void count_open() { opens_.fetch_add(1, std::memory_order_relaxed); }
   void set_finished() { finished_.store(true, std::memory_order_release); }

@@ -168,3 +168,45 @@ TEST(Tracker, BadSettingsAreOneLineErrors) {
   o.record_path = "/nonexistent/rec.trk";
   EXPECT_EQ(make_tracker(t, o).error.rfind("/nonexistent/rec.trk: cannot create the tracker log", 0), 0u);
 }
+
+TEST(Tracker, AnAbsentHidDeviceIsDisconnectedNotAnError) {
+  config::TrackerSettings t;
+  t.source = config::TrackerSource::Hid;
+  t.hid.vendor_id = 0xDEAD;  // no such device on this machine
+  t.hid.product_id = 0xBEEF;
+  t.reopen_backoff_ms = 5;
+  auto made = make_tracker(t, quiet());
+  ASSERT_TRUE(made.tracker) << made.error;
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // a few reopen attempts with back-off
+  const TrackerStats s = made.tracker->stats();
+  EXPECT_NE(s.state, TrackerState::Streaming);
+  EXPECT_EQ(s.opens, 0u);
+  EXPECT_EQ(s.reports, 0u);
+  EXPECT_FALSE(made.tracker->latest(Role::Head, monotonic_ns()).valid());
+  EXPECT_EQ(made.tracker->describe(), "hid dead:beef");
+}
+
+TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
+  config::TrackerSettings t;
+  t.source = config::TrackerSource::Replay;
+  t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
+  t.replay_realtime = false;
+  t.replay_loop = true;
+  std::mutex m;
+  std::vector<std::int64_t> times;
+  TrackerOptions o = quiet();
+  o.on_sample = [&](const PoseSample& s) {
+    std::lock_guard lock(m);
+    if (s.role == Role::Patient && times.size() < 800) times.push_back(s.t_device_ns);
+  };
+  auto made = make_tracker(t, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] {
+    std::lock_guard lock(m);
+    return times.size() >= 800;  // 375 patient samples per pass: more than two passes
+  }));
+  made.tracker->stop();
+  EXPECT_EQ(made.tracker->stats().malformed, 0u);  // the restart is not "time backwards"
+  EXPECT_EQ(made.tracker->stats().reconnects, 0u);
+  for (std::size_t k = 1; k < times.size(); ++k) ASSERT_GE(times[k], times[k - 1]) << k;
+}

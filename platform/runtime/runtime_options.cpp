@@ -50,7 +50,7 @@ std::string apply_overrides(const RuntimeOptions& o, config::Settings& s) {
     }
   }
   if (o.frames && *o.frames <= 0) return "--frames: expected a positive number of frames, got " + std::to_string(*o.frames);
-  if (o.seconds && !(*o.seconds > 0)) return "--seconds: expected a positive duration, got " + std::to_string(*o.seconds);
+  if (o.seconds && !(*o.seconds >= 0)) return "--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds);
   return "";
 }
 

@@ -1,0 +1,104 @@
+/// @file calibrate_command.cpp
+/// @brief Reads the fiducials, fits the registration, reports the fiducial registration error, writes the result.
+#include "platform/registration/calibrate_command.h"
+
+#include <cstdio>
+
+#include "config/settings_load.h"
+#include "drivers/decode/decoder.h"
+#include "drivers/decode/layout_toml.h"
+#include "drivers/decode/report_layout.h"
+#include "drivers/trk/trk_reader.h"
+
+namespace lungar::platform {
+
+bool stylus_points_from_log(const std::string& log_path, const std::string& config_path,
+                            std::vector<Eigen::Vector3d>& points, std::string& error) {
+  auto loaded = drivers::load_trk(log_path);
+  if (!loaded.log) {
+    error = loaded.error;
+    return false;
+  }
+  config::TrackerSettings trackers;
+  if (!loaded.log->header.layout_toml.empty()) {
+    auto t = drivers::layout_from_toml(loaded.log->header.layout_toml, log_path + " (header layout)", &error);
+    if (!t) return false;
+    trackers = *t;
+  } else if (!config_path.empty()) {
+    auto s = config::load_settings(config_path);
+    if (!s) {
+      error = s.error;
+      return false;
+    }
+    trackers = s.settings->trackers;
+  }
+  auto layout = drivers::make_layout(trackers);
+  if (!layout.layout) {
+    error = log_path + ": report layout: " + layout.error;
+    return false;
+  }
+  std::vector<StylusSample> samples;
+  Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
+  const std::int64_t t0 = loaded.log->records.empty() ? 0 : loaded.log->records.front().t_arrival_ns;
+  for (const auto& rec : loaded.log->records) {
+    const drivers::DecodedReport r = drivers::decode_report(rec.report, *layout.layout);
+    if (r.error != drivers::DecodeError::None) continue;  // malformed reports are never applied
+    for (int k = 0; k < r.count; ++k) {
+      const auto& pose = r.poses[static_cast<std::size_t>(k)];
+      const Eigen::Vector3d p(pose.position_mm[0], pose.position_mm[1], pose.position_mm[2]);
+      if (pose.role == drivers::Role::Patient) {
+        const auto& q = pose.orientation_wxyz;
+        patient_q = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+        patient_p = p;
+      } else if (pose.role == drivers::Role::Stylus) {
+        samples.push_back({static_cast<double>(rec.t_arrival_ns - t0) * 1e-9, patient_q.conjugate() * (p - patient_p)});
+      }
+    }
+  }
+  if (samples.empty()) {
+    error = log_path + ": expected stylus poses in the log, got none";
+    return false;
+  }
+  points = find_dwell_points(samples);
+  return true;
+}
+
+int run_calibrate(const CalibrateOptions& o) {
+  std::string error;
+  std::vector<Eigen::Vector3d> model, tracked;
+  if (!read_points_csv(o.model_csv, model, error)) {
+    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
+    return 2;
+  }
+  if (o.stylus_csv.empty() == o.stylus_log.empty()) {
+    std::fprintf(stderr, "lungar calibrate: expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk\n");
+    return 2;
+  }
+  const bool ok = o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path, tracked, error)
+                                       : read_points_csv(o.stylus_csv, tracked, error);
+  if (!ok) {
+    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
+    return 2;
+  }
+  Registration r;
+  if (!register_fiducials(model, tracked, r, error)) {
+    std::fprintf(stderr, "lungar calibrate: %s (%s)\n", error.c_str(),
+                 (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv).c_str());
+    return 2;
+  }
+  if (!write_registration_toml(o.out_path, r, error)) {
+    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("registration from %d fiducials: RMS fiducial registration error %.3f mm (worst %.3f mm)\n",
+              r.fiducials, r.fre_rms_mm, r.fre_max_mm);
+  std::printf("  translation_mm = [%.3f, %.3f, %.3f], rotation_wxyz = [%.6f, %.6f, %.6f, %.6f]\n",
+              r.translation_mm.x(), r.translation_mm.y(), r.translation_mm.z(), r.rotation.w(), r.rotation.x(),
+              r.rotation.y(), r.rotation.z());
+  std::printf("written to %s (include it with --config, or copy the section into your profile)\n",
+              o.out_path.c_str());
+  return 0;
+}
+
+}  // namespace lungar::platform

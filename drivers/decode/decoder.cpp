@@ -138,7 +138,8 @@ std::int64_t DeviceClock::advance(std::uint32_t ticks, int bits, double tick_ns)
   if (delta > range / 2) return -1;
   last_ = ticks;
   total_ticks_ += static_cast<std::int64_t>(delta);
-  return static_cast<std::int64_t>(static_cast<double>(total_ticks_) * tick_ns);
+  const double ns = static_cast<double>(total_ticks_) * tick_ns;
+  return ns < 9e18 ? static_cast<std::int64_t>(ns) : static_cast<std::int64_t>(9e18);  // centuries: saturate
 }
 
 }  // namespace lungar::drivers

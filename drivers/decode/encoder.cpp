@@ -19,7 +19,12 @@ void write_uint(std::uint8_t* p, std::uint32_t v, int bytes, bool big) {
 }
 
 void write_field(std::uint8_t* p, double value, const FieldFormat& f, bool big) {
-  const double raw = std::ldexp(value / f.scale, f.frac_bits);
+  double raw = std::ldexp(value / f.scale, f.frac_bits);
+  // Out-of-range conversions are undefined behaviour: NaN becomes 0 for integers, floats saturate to infinity.
+  if (std::isnan(raw) && f.type != config::FieldType::F32) raw = 0;
+  if (f.type == config::FieldType::F32 && std::abs(raw) > std::numeric_limits<float>::max()) {
+    raw = std::copysign(std::numeric_limits<double>::infinity(), raw);
+  }
   std::uint32_t u = 0;
   switch (f.type) {
     case config::FieldType::I16:

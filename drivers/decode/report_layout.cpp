@@ -105,6 +105,12 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
       return fail(std::string(to_string(role)) + ".offset", "expected the sensor's fields inside the report");
     }
     if (s->station < 0 || s->station > 255) return fail(std::string(to_string(role)) + ".station", "expected 0 to 255");
+    for (int k = 0; r.station_offset >= 0 && k < l.sensor_count; ++k) {
+      if (l.sensors[k].station == s->station) {
+        return fail(std::string(to_string(role)) + ".station", "expected a station different from trackers." +
+                                                                  std::string(to_string(l.sensors[k].role)) + "'s");
+      }
+    }
     l.sensors[l.sensor_count++] = {role, s->station, s->offset};
   }
   if (l.sensor_count == 0) return fail("head", "expected at least one enabled sensor");

@@ -322,4 +322,9 @@ TEST(Decode, LayoutErrorsNameTheKey) {
   t = {};
   t.axis_remap = "x,x,z";
   EXPECT_EQ(make_layout(t).error, "trackers.axis_remap: expected a signed permutation of x,y,z");
+  t = {};
+  t.patient.station = t.head.station;  // found by the decode fuzzer: one report would feed two roles
+  EXPECT_EQ(make_layout(t).error, "trackers.patient.station: expected a station different from trackers.head's");
+  t.report.station_offset = -1;  // without a station byte the values do not matter
+  EXPECT_TRUE(make_layout(t).layout);
 }

@@ -41,7 +41,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
   w.areas = Eigen::Map<const Eigen::VectorXd>(w.geometry.areas.data(), n);
   w.folded = folded_triangles(w.mesh, w.centre);
 
-  const int bands_solved = opt.evaluate ? kMaxBands : static_cast<int>(opt.bands);
+  const int bands_solved = opt.evaluate && opt.bands_sweep ? kMaxBands : static_cast<int>(opt.bands);
   const int c_solved = bands_solved * bands_solved;
   w.c_solved = c_solved;
   w.y.resize(n, c_solved);

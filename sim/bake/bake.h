@@ -27,7 +27,8 @@ struct BakeOptions {
   double decay_length_mm = 10.0;     ///< tether length l
   bool transfer_rows = true;         ///< explicit truncated rows for the CPU eq. (1) baseline
   double transfer_epsilon = kTransferEpsilon;
-  bool evaluate = true;              ///< fill the report's accuracy figures (all 8 bands, 26 directions)
+  bool evaluate = true;              ///< fill the report's accuracy figures (26 gravity directions)
+  bool bands_sweep = true;           ///< with evaluate: also solve all 8 bands' fields for the bands sweep
 };
 
 /// Called with a stage name ("factorise", "solve", "transfer rows", "evaluate") and that stage's fraction done;

@@ -117,7 +117,7 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   if (progress) progress("evaluate", 0.6);
 
   // Bands sweep in double precision: the projection with the leading L^2 x L^2 block of G.
-  for (int bands = 2; bands <= work.front()->c_solved && bands * bands <= work.front()->c_solved; ++bands) {
+  for (int bands = 2; opt.bands_sweep && bands * bands <= work.front()->c_solved; ++bands) {
     const int cb = bands * bands;
     ErrorSum e;
     for (std::size_t l = 0; l < work.size(); ++l) {

@@ -1,0 +1,170 @@
+/// @file asset_io_test.cpp
+/// @brief `.lungbake`: a round trip keeps every field; damaged files are refused with a line naming the file
+///        and what was wrong; a failed write leaves nothing under the final name.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "sim/asset/asset_io.h"
+#include "sim/asset/crc32.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+using test::small_bake;
+using test::TempDir;
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+TEST(Crc32, MatchesTheStandardCheckValue) {
+  EXPECT_EQ(crc32("123456789", 9), 0xCBF43926u);
+  EXPECT_EQ(crc32("", 0), 0u);
+}
+
+TEST(AssetIo, RoundTripKeepsEveryField) {
+  TempDir dir;
+  const BakedAsset& a = small_bake().asset;
+  const std::string path = dir.file("pair.lungbake");
+  ASSERT_TRUE(write_asset(a, path)) << write_asset(a, path).error;
+  EXPECT_EQ(dir.entries(), 1u) << "no temporary file left behind";
+  const Result<BakedAsset> b = load_asset(path);
+  ASSERT_TRUE(b) << b.error;
+  EXPECT_EQ(b->bands, a.bands);
+  EXPECT_EQ(b->p0, a.p0);
+  EXPECT_EQ(b->gamma_per_mm, a.gamma_per_mm);
+  EXPECT_EQ(b->decay_length_mm, a.decay_length_mm);
+  EXPECT_EQ(b->transfer_epsilon, a.transfer_epsilon);
+  EXPECT_EQ(b->positions, a.positions);
+  EXPECT_EQ(b->normals, a.normals);
+  EXPECT_EQ(b->areas, a.areas);
+  EXPECT_EQ(b->lung_of_vertex, a.lung_of_vertex);
+  EXPECT_EQ(b->sh_coeffs, a.sh_coeffs);
+  EXPECT_EQ(b->linear_coeffs, a.linear_coeffs);
+  EXPECT_EQ(b->triangles, a.triangles);
+  EXPECT_EQ(b->transfer_row_ptr, a.transfer_row_ptr);
+  EXPECT_EQ(b->transfer_cols, a.transfer_cols);
+  EXPECT_EQ(b->transfer_vals, a.transfer_vals);
+  ASSERT_EQ(b->lungs.size(), a.lungs.size());
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    const BakedLung &x = a.lungs[l], &y = b->lungs[l];
+    EXPECT_EQ(y.name, x.name);
+    EXPECT_EQ(y.centre, x.centre);
+    EXPECT_EQ(y.first_vertex, x.first_vertex);
+    EXPECT_EQ(y.vertex_count, x.vertex_count);
+    EXPECT_EQ(y.first_index, x.first_index);
+    EXPECT_EQ(y.index_count, x.index_count);
+    EXPECT_EQ(y.rest_volume_ml, x.rest_volume_ml);
+    EXPECT_EQ(y.volume_share, x.volume_share);
+    EXPECT_EQ(y.force_const, x.force_const);
+    EXPECT_EQ(y.force_grad, x.force_grad);
+    EXPECT_EQ(y.volume_const, x.volume_const);
+    EXPECT_EQ(y.volume_grad, x.volume_grad);
+    EXPECT_EQ(y.paper_force, x.paper_force);
+  }
+}
+
+TEST(AssetIo, WithoutTransferRowsToo) {
+  TempDir dir;
+  BakedAsset a = small_bake().asset;
+  a.transfer_row_ptr.clear();
+  a.transfer_cols.clear();
+  a.transfer_vals.clear();
+  ASSERT_TRUE(write_asset(a, dir.file("a.lungbake")));
+  const Result<BakedAsset> b = load_asset(dir.file("a.lungbake"));
+  ASSERT_TRUE(b) << b.error;
+  EXPECT_FALSE(b->has_transfer_rows());
+}
+
+class DamagedAsset : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    path_ = dir_.file("a.lungbake");
+    ASSERT_TRUE(write_asset(small_bake().asset, path_));
+    bytes_ = read_bytes(path_);
+  }
+  /// Loads `bytes` and returns the error, which must name the file.
+  std::string error_for(const std::string& bytes) {
+    write_bytes(path_, bytes);
+    const Result<BakedAsset> r = load_asset(path_);
+    EXPECT_FALSE(r) << "a damaged asset was accepted";
+    EXPECT_NE(r.error.find(path_), std::string::npos) << r.error;
+    EXPECT_EQ(r.error.find('\n'), std::string::npos) << "one line";
+    return r.error;
+  }
+  TempDir dir_;
+  std::string path_, bytes_;
+};
+
+TEST_F(DamagedAsset, TruncatedAnywhereIsRefused) {
+  for (std::size_t keep : {std::size_t{0}, std::size_t{5}, std::size_t{11}, std::size_t{40}, bytes_.size() / 3,
+                           bytes_.size() / 2, bytes_.size() - 5, bytes_.size() - 1}) {
+    const std::string e = error_for(bytes_.substr(0, keep));
+    EXPECT_TRUE(e.find("truncated") != std::string::npos || e.find("need more bytes") != std::string::npos ||
+                e.find("length") != std::string::npos)
+        << "kept " << keep << ": " << e;
+  }
+}
+
+TEST_F(DamagedAsset, FlippedBitsFailTheirSectionsCrc) {
+  for (std::size_t at : {bytes_.size() / 2, bytes_.size() / 4, bytes_.size() - 100}) {
+    std::string damaged = bytes_;
+    damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
+    const std::string e = error_for(damaged);
+    EXPECT_NE(e.find("section '"), std::string::npos) << e;
+  }
+  std::string payload_flip = bytes_;
+  payload_flip[12 + 4 + 8 + 2] ^= 0x01;  // inside HEAD's payload: the bands field
+  EXPECT_NE(error_for(payload_flip).find("CRC-32 mismatch"), std::string::npos);
+}
+
+TEST_F(DamagedAsset, WrongVersionIsNamed) {
+  std::string damaged = bytes_;
+  damaged[8] = 7;
+  const std::string e = error_for(damaged);
+  EXPECT_NE(e.find("version: expected 1, found 7"), std::string::npos) << e;
+}
+
+TEST_F(DamagedAsset, WrongMagicIsNamed) {
+  std::string damaged = bytes_;
+  damaged.replace(0, 8, "PNG\r\n\x1a\n\0", 8);
+  const std::string e = error_for(damaged);
+  EXPECT_NE(e.find("magic"), std::string::npos) << e;
+  EXPECT_NE(error_for("").find("magic"), std::string::npos);
+}
+
+TEST_F(DamagedAsset, TrailingBytesAreRefused) {
+  EXPECT_NE(error_for(bytes_ + "x").find("unexpected bytes"), std::string::npos);
+}
+
+TEST(AssetIo, MissingFileAndUnwritableFolder) {
+  TempDir dir;
+  const Result<BakedAsset> r = load_asset(dir.file("none.lungbake"));
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error.find("none.lungbake"), std::string::npos);
+  const Status s = write_asset(small_bake().asset, dir.file("no/such/folder/a.lungbake"));
+  EXPECT_FALSE(s);
+  EXPECT_NE(s.error.find("a.lungbake"), std::string::npos);
+  EXPECT_EQ(dir.entries(), 0u);
+}
+
+TEST(AssetIo, AnUnsoundAssetIsNotWritten) {
+  TempDir dir;
+  BakedAsset a = small_bake().asset;
+  a.triangles.back() = a.vertex_count() + 5;
+  const Status s = write_asset(a, dir.file("bad.lungbake"));
+  EXPECT_FALSE(s);
+  EXPECT_NE(s.error.find("triangles"), std::string::npos) << s.error;
+  EXPECT_EQ(dir.entries(), 0u);
+}
+
+}  // namespace
+}  // namespace lungar::sim

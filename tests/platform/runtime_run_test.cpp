@@ -1,0 +1,103 @@
+// The runtime end to end, headless on Mesa llvmpipe: a few frames with each tracker source and deformation
+// path, checking the stats JSON and the snapshot that a user gets, and clean errors for bad inputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "platform/runtime/runtime.h"
+
+using namespace lungar;
+
+namespace {
+
+const std::string kData = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/";
+
+class RuntimeRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = std::filesystem::temp_directory_path() /
+          ("lungar_runtime_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir);
+    settings.sim.asset = kData + "hil_lungs.lungbake";
+    settings.display.output = config::Output::Headless;
+    options.frames = 6;
+    options.snapshot_path = (dir / "shot.png").string();
+    options.stats_json_path = (dir / "stats.json").string();
+  }
+  void TearDown() override { std::filesystem::remove_all(dir); }
+
+  nlohmann::json stats() const {
+    std::ifstream in(options.stats_json_path);
+    return nlohmann::json::parse(in);
+  }
+  /// True when the PNG exists, has the PNG signature and more than a blank frame's worth of bytes.
+  bool snapshot_written() const {
+    std::ifstream in(options.snapshot_path, std::ios::binary);
+    char sig[8] = {};
+    in.read(sig, 8);
+    return in && std::string(sig + 1, 3) == "PNG" && std::filesystem::file_size(options.snapshot_path) > 2000;
+  }
+
+  std::filesystem::path dir;
+  config::Settings settings;
+  platform::RuntimeOptions options;
+};
+
+}  // namespace
+
+TEST_F(RuntimeRun, StereoWithTheMockTrackerWritesStatsAndASnapshot) {
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_EQ(j["frames"], 6);
+  EXPECT_EQ(j["view"], "stereo");
+  EXPECT_EQ(j["deform"], "gpu");
+  EXPECT_GT(j["nodes"].get<int>(), 1000);
+  EXPECT_GT(j["frame_ms_p50"].get<double>(), 0.0);
+  EXPECT_GE(j["frame_ms_p99"].get<double>(), j["frame_ms_p50"].get<double>());
+  EXPECT_EQ(j["tracker_malformed"], 0);
+  EXPECT_GE(j["volume_ml_max"].get<double>(), j["volume_ml_min"].get<double>());
+  EXPECT_TRUE(snapshot_written());
+}
+
+TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
+  settings.trackers.source = config::TrackerSource::Replay;
+  settings.trackers.replay_file = kData + "upright_to_supine.trk";
+  settings.trackers.replay_realtime = false;
+  options.frames = 100000;  // the end of the log stops it
+  options.seconds = 60.0;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_LT(j["frames"].get<int>(), 100000);
+  EXPECT_EQ(j["tracker_reports"], 750);  // every record of the log
+  EXPECT_EQ(j["tracker_malformed"], 0);
+}
+
+TEST_F(RuntimeRun, CpuEq7MonoMeshRuns) {
+  options.deform = "cpu7";
+  settings.render.deform = config::Deform::Cpu7;
+  settings.hmd.view = config::View::Mono;
+  settings.render.mode = config::RenderMode::Mesh;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_EQ(j["deform"], "cpu7");
+  EXPECT_EQ(j["view"], "mono");
+  EXPECT_TRUE(snapshot_written());
+}
+
+TEST_F(RuntimeRun, BadInputsFailCleanlyWithoutOutputs) {
+  settings.sim.asset = (dir / "missing.lungbake").string();
+  EXPECT_EQ(platform::run_runtime(settings, options), 1);
+  EXPECT_FALSE(std::filesystem::exists(options.stats_json_path));
+
+  settings.sim.asset = kData + "upright_to_supine.trk";  // not an asset
+  EXPECT_EQ(platform::run_runtime(settings, options), 1);
+
+  settings.sim.asset = kData + "hil_lungs.lungbake";
+  settings.trackers.source = config::TrackerSource::Replay;
+  settings.trackers.replay_file = (dir / "missing.trk").string();
+  EXPECT_EQ(platform::run_runtime(settings, options), 1);
+  EXPECT_FALSE(std::filesystem::exists(options.snapshot_path));
+}

@@ -5,6 +5,7 @@
 #include <GLES3/gl3.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +26,7 @@
 #include "platform/runtime/patient_force.h"
 #include "platform/scenario_adapter.h"
 #include "render/frame_target.h"
+#include "render/hud_line.h"
 #include "render/lung_drawable.h"
 #include "render/png_snapshot.h"
 #include "render/renderer.h"
@@ -195,6 +197,9 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     return 1;
   }
 
+  std::optional<render::HudLine> hud;
+  if (s.render.hud) hud.emplace();
+
   // --- tracker -----------------------------------------------------------------------------------------
   drivers::TrackerOptions topts;
   topts.record_path = o.record_path;
@@ -232,6 +237,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
   std::int64_t previous = t0;
   double frame_estimate_ms = 16.0;
   long frame = 0;
+  std::int64_t hud_updated = 0;
   bool window_open = true;
 
   // One frame: DESIGN.md's five steps. `final_frame` is drawn after the loop for the snapshot, not counted.
@@ -253,6 +259,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     const std::int64_t display_ns = now + static_cast<std::int64_t>(frame_estimate_ms * 1e6);
     const PoseSample head = tracker.predicted(Role::Head, display_ns, max_ahead_ns);
     if (head.valid()) last_head = head;
+    const PoseSample measured_head = tracker.latest(Role::Head, now);  // its arrival dates the pose age
     const glm::mat4 head_m = head_to_world(last_head, s.hmd.head_to_eye_mm);
     std::span<const render::EyeView> eye_span;
     if (stereo) {
@@ -302,6 +309,21 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       log_line("error: draw: " + drawn.error);
       return false;
     }
+    if (hud) {
+      // The on-screen line: frame rate, pose age, tracker state; refreshed four times a second.
+      if (now - hud_updated >= 250000000) {
+        hud_updated = now;
+        const double age_ms =
+            measured_head.valid() ? static_cast<double>(now - measured_head.t_arrival_ns) * 1e-6 : -1.0;
+        char text[render::HudLine::kMaxChars + 1];
+        std::snprintf(text, sizeof text, "%.0f FPS  POSE AGE %.0f MS  TRACKER %s%s  DV %.0f ML",
+                      frame_estimate_ms > 0 ? 1000.0 / frame_estimate_ms : 0.0, age_ms,
+                      drivers::to_string(tracker.state()), measured_head.stale() ? " (STALE POSE)" : "",
+                      breath.dv_ml);
+        hud->set_text(text);
+      }
+      for (const auto& eye : eye_span) hud->draw(eye.viewport);
+    }
     // 5. swap or finish; record timing and pose age
     if (present) {
       if (output->target) {
@@ -314,7 +336,8 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       const double frame_ms = static_cast<double>(submitted - previous) * 1e-6;
       previous = submitted;
       frame_estimate_ms = 0.9 * frame_estimate_ms + 0.1 * frame_ms;
-      const double age_ms = head.valid() ? static_cast<double>(submitted - head.t_arrival_ns) * 1e-6 : -1.0;
+      const double age_ms =
+          measured_head.valid() ? static_cast<double>(submitted - measured_head.t_arrival_ns) * 1e-6 : -1.0;
       stats.record(frame_ms, age_ms, breath.dv_ml);
     }
     return true;

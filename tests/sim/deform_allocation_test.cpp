@@ -1,0 +1,57 @@
+/// @file deform_allocation_test.cpp
+/// @brief The per-frame calls (force SH in both modes, CPU eq. 7, CPU eq. 1) allocate nothing through operator
+///        new. Counted by replacing the global operator new in this test binary; skipped under AddressSanitizer,
+///        which owns operator new there. (Eigen's own heap use goes through malloc; the products used here are
+///        matrix-vector products into mapped buffers, which Eigen evaluates without temporaries.)
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "sim/deform/deform_eq1.h"
+#include "sim/deform/deform_eq7.h"
+#include "sim/force/force_sh.h"
+#include "sim_test_support.h"
+
+#if !defined(__SANITIZE_ADDRESS__)
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#endif
+
+namespace lungar::sim {
+namespace {
+
+TEST(Allocation, PerFrameDeformationAllocatesNothing) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "operator new belongs to AddressSanitizer in this build";
+#else
+  const BakedAsset& a = test::small_bake().asset;
+  std::vector<float> force(a.lungs.size() * a.coefficients()), positions(3 * a.vertex_count());
+  Eq1Deformer eq1(a);
+  const long before = g_allocations.load();
+  for (int frame = 0; frame < 20; ++frame) {
+    const Eigen::Quaterniond q = axis_rotation(frame % 3, 0.1 * frame);
+    force_sh(a, ForceMode::exact, q, force.data());
+    force_sh(a, ForceMode::paper, q, force.data());
+    deform_eq7(a, force, 10.0 * frame, positions);
+    eq1.deform(gravity_in_lung_frame(q), 10.0 * frame, positions);
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+#endif
+}
+
+}  // namespace
+}  // namespace lungar::sim

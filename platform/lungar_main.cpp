@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   RuntimeOptions o;
   app.add_option("--config", o.config_path, "settings TOML (default: built-in defaults; see config/default.toml)");
   app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached procedural pair)");
+  app.add_option("--scenario", o.scenario_path,
+                 "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
   app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
   long frames = 0;

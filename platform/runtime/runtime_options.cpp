@@ -7,6 +7,7 @@ namespace lungar::platform {
 std::string apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   using namespace lungar::config;
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
+  if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
   if (o.headless) s.display.output = Output::Headless;
   if (!o.tracker.empty()) {
     if (o.tracker == "mock") {

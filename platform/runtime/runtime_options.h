@@ -12,6 +12,7 @@ namespace lungar::platform {
 struct RuntimeOptions {
   std::string config_path;
   std::string asset_path;
+  std::string scenario_path;     ///< breathing/orientation scenario TOML
   std::string tracker;          ///< "mock" | "hid" | "replay:FILE"; empty: from the config
   bool headless = false;
   std::optional<long> frames;   ///< stop after this many frames

@@ -15,6 +15,7 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
   o.deform = "cpu1";
   o.headless = true;
   o.asset_path = "a.lungbake";
+  o.scenario_path = "teach.toml";
   cfg::Settings s;
   EXPECT_EQ(apply_overrides(o, s), "");
   EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Replay);
@@ -24,6 +25,7 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
   EXPECT_EQ(s.render.deform, cfg::Deform::Cpu1);
   EXPECT_EQ(s.display.output, cfg::Output::Headless);
   EXPECT_EQ(s.sim.asset, "a.lungbake");
+  EXPECT_EQ(s.breathing.scenario, "teach.toml");
 }
 
 TEST(RuntimeOptions, BadValuesAreNamed) {

@@ -80,6 +80,7 @@ class Run {
 
   int go() {
     const SystemInfo sys = read_system_info();
+    if (o_.bake_only) return bake_all();
     auto context = EglContext::headless();
     if (!context) return fail("EGL: " + context.error());
     context_ = context.take();
@@ -280,6 +281,24 @@ class Run {
         j["coeff_storage"] = s->drawable().uses_texture() ? "texture" : "attributes";
         out_["fig6_coefficients"].push_back(j);
       }
+    }
+    return 0;
+  }
+
+  /// --bake-only: every asset the selected sections draw, loaded or baked, one at a time; no GL.
+  int bake_all() {
+    std::vector<AssetKey> keys;
+    if (on("table2") || on("cpu") || on("strategies") || on("fig7")) keys.push_back({o_.nodes, kBaseBands, true});
+    for (double scale : kScales) {
+      if (on("fig4")) keys.push_back({static_cast<std::uint32_t>(std::lround(scale * o_.nodes)), kBaseBands, false});
+    }
+    for (std::uint32_t bands : kBands) {
+      if (on("fig6")) keys.push_back({o_.nodes, bands, false});
+    }
+    const bool has_base = !keys.empty() && keys.front().transfer_rows;
+    for (const AssetKey& k : keys) {
+      if (has_base && k.nodes == o_.nodes && k.bands == kBaseBands && !k.transfer_rows) continue;  // see acquire()
+      if (!asset(k)) return 1;
     }
     return 0;
   }

@@ -23,6 +23,7 @@ struct BenchOptions {
   std::string asset_dir = "bench-assets";
   std::string snapshot_dir;           ///< PNGs of the timed frames; empty: none
   bool rebake = false;                ///< bake every asset again even when cached (fresh bake times)
+  bool bake_only = false;             ///< fill the asset cache (and record bake times), measure no frames
   std::set<std::string> sections;     ///< empty: all of kSections
 };
 

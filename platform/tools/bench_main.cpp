@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   app.add_option("--asset-dir", o.asset_dir, "cache of baked benchmark assets")->capture_default_str();
   app.add_option("--snapshot-dir", o.snapshot_dir, "write PNGs of the timed stereo frames (points, mesh) here");
   app.add_flag("--rebake", o.rebake, "bake every asset again, for fresh bake times");
+  app.add_flag("--bake-only", o.bake_only, "fill the asset cache (recording bake times) and measure nothing");
   std::string all;
   for (const auto& s : kSections) all += (all.empty() ? "" : ",") + s;
   app.add_option("--sections", sections, "comma-separated subset of " + all + " (default: all)");

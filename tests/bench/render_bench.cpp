@@ -1,13 +1,18 @@
 /// @file render_bench.cpp
 /// @brief Stereo point rendering on llvmpipe: the naive per-eye draw against level of detail, back-face culling and
 /// deform-once; mono against stereo; deformed against undeformed; coefficient storage. 400k points, point size 5,
-/// 2 x 640x720 side by side, the head 450 mm in front of the lungs. Each iteration draws one frame and waits for it
+/// 2 x 640x720 side by side, the head 450 mm in front of the procedural lungs (sim's bake). Each iteration draws one frame and waits for it
 /// (glFinish). Counters: points drawn per eye and the lit fraction of the frame ("coverage", measured once).
 ///
 ///   build-render/tests/bench/lungar-bench-render --benchmark_min_time=2s   (EGL_PLATFORM=surfaceless if no $DISPLAY)
 #include <benchmark/benchmark.h>
 
+#include <Eigen/Geometry>
+
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <memory>
 #include <optional>
 
@@ -15,13 +20,16 @@
 #include "render/frame_target.h"
 #include "render/png_snapshot.h"
 #include "render/renderer.h"
-#include "tests/render/synthetic_lungs.h"
+#include "sim/asset/asset_io.h"
+#include "sim/bake/bake.h"
+#include "sim/deform/deform_eq7.h"
+#include "sim/force/force_sh.h"
 
 namespace {
 
 using namespace lungar::render;
 
-constexpr std::uint32_t kPointsPerLung = 200000;  // 400k nodes
+constexpr std::uint32_t kPointsPerLung = 200000;  // 400k nodes in the pair
 constexpr int kEyeW = 640, kEyeH = 720;
 
 // Everything a frame needs, built once per process (400k points take a while to synthesise and upload).
@@ -52,7 +60,29 @@ struct Scene {
       std::exit(1);
     }
     context = c.take();
-    asset = lungar::test::ellipsoid_pair(kPointsPerLung, 4, 42);
+    // The 400k-node procedural asset of the runtime's demo (sim's bake, L = 4). Baking takes a minute or more, so
+    // the bake is cached: $LUNGAR_BENCH_ASSET, else <build>/render-bench-procedural-400k.lungbake.
+    const char* env = std::getenv("LUNGAR_BENCH_ASSET");
+    const std::string path = env ? env : std::string(LUNGAR_BINARY_DIR) + "/render-bench-procedural-400k.lungbake";
+    if (auto loaded = lungar::sim::load_asset(path)) {
+      asset = std::move(*loaded.value);
+    } else {
+      const auto t0 = std::chrono::steady_clock::now();
+      lungar::sim::BakeOptions options;
+      options.transfer_rows = false;
+      options.evaluate = false;
+      auto baked = lungar::sim::bake_procedural(2 * kPointsPerLung, 1, options, nullptr);
+      if (!baked) {
+        std::fprintf(stderr, "render bench: %s\n", baked.error.c_str());
+        std::exit(1);
+      }
+      asset = std::move(baked->asset);
+      std::fprintf(stderr, "render bench: baked %u nodes in %.1f s\n", asset.vertex_count(),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      if (auto written = lungar::sim::write_asset(asset, path); !written.ok()) {
+        std::fprintf(stderr, "render bench: %s (not cached)\n", written.error.c_str());
+      }
+    }
     auto make = [&](DrawableOptions o, std::optional<LungDrawable>& d, std::optional<Renderer>& r) {
       auto dd = LungDrawable::create(asset, o);
       if (!dd) {
@@ -79,12 +109,16 @@ struct Scene {
     hmd.eye_width_px = kEyeW;
     hmd.eye_height_px = kEyeH;
     eyes = StereoView(hmd).eyes(look_from({0.f, -450.f, 0.f}, {0.f, 0.f, 0.f}, {0.f, 0.f, 1.f}));
-    force.assign(16, 0.f);
-    for (std::size_t k = 0; k < force.size(); ++k) force[k] = 0.03f * static_cast<float>((k % 5) + 1) / 5.f;
-    lungs[0] = {force, 400.f, {0.45f, 0.6f, 0.95f}};
-    lungs[1] = {force, 400.f, {0.9f, 0.45f, 0.45f}};
-    const auto cpu = lungar::test::deform_eq7(asset, {force, force}, {400.f, 400.f});
-    cpu_positions.assign(cpu.begin(), cpu.end());
+    // Upright at end-inspiration (500 mL), the physical force per lung.
+    const std::uint32_t nc = asset.coefficients();
+    force.assign(asset.lungs.size() * nc, 0.f);
+    lungar::sim::force_sh(asset, lungar::sim::ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
+    lungs[0] = {std::span<const float>(force).subspan(0, nc), static_cast<float>(500.0 * asset.lungs[0].volume_share),
+                {0.45f, 0.6f, 0.95f}};
+    lungs[1] = {std::span<const float>(force).subspan(nc, nc), static_cast<float>(500.0 * asset.lungs[1].volume_share),
+                {0.9f, 0.45f, 0.45f}};
+    cpu_positions.resize(asset.positions.size());
+    lungar::sim::deform_eq7(asset, force, 500.0, cpu_positions);
   }
 
   FrameInputs frame(int eye_count) const {

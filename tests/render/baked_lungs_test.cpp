@@ -126,3 +126,49 @@ TEST_F(BakedLungsTest, UprightSilhouetteGrowsMostAtTheBase) {
 
 }  // namespace
 }  // namespace lungar::render
+
+namespace lungar::render {
+namespace {
+
+// The README's picture: LUNGAR_README_SNAPSHOT=out.png bakes 100k procedural nodes and writes the stereo pair
+// (2 x 640x720, points of 5 px, upright at end-inspiration, seen from the front-left). Skipped otherwise.
+TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
+  const char* path = std::getenv("LUNGAR_README_SNAPSHOT");
+  if (path == nullptr) GTEST_SKIP() << "set LUNGAR_README_SNAPSHOT=path.png to write the README snapshot";
+  auto c = platform::EglContext::headless();
+  ASSERT_TRUE(c) << c.error();
+  sim::BakeOptions o;
+  o.transfer_rows = false;
+  o.evaluate = false;
+  auto baked = sim::bake_procedural(100000, 1, o, nullptr);
+  ASSERT_TRUE(baked) << baked.error;
+  const sim::BakedAsset& a = baked->asset;
+  auto drawable = LungDrawable::create(a);
+  ASSERT_TRUE(drawable) << drawable.error();
+  auto renderer = Renderer::create(*drawable);
+  ASSERT_TRUE(renderer);
+  const std::uint32_t nc = a.coefficients();
+  std::vector<float> force(a.lungs.size() * nc);
+  sim::force_sh(a, sim::ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
+  const glm::vec3 colours[2] = {{0.45f, 0.60f, 0.95f}, {0.90f, 0.45f, 0.45f}};
+  std::vector<LungFrame> lungs;
+  for (std::size_t i = 0; i < a.lungs.size(); ++i) {
+    lungs.push_back({std::span<const float>(force).subspan(i * nc, nc),
+                     static_cast<float>(500.0 * a.lungs[i].volume_share), colours[i % 2]});
+  }
+  HmdGeometry hmd;
+  const StereoView stereo(hmd);
+  const auto eyes = stereo.eyes(look_from({-130.f, -300.f, 40.f}, {0.f, 0.f, -10.f}, {0.f, 0.f, 1.f}));
+  auto target = FrameTarget::create(stereo.target_width(), stereo.target_height());
+  ASSERT_TRUE(target);
+  FrameInputs f;
+  f.lungs = lungs;
+  f.eyes = eyes;
+  f.background = {0.06f, 0.07f, 0.09f};
+  target->bind();
+  ASSERT_TRUE(renderer->draw(*drawable, f));
+  ASSERT_TRUE(snapshot_png(path, 0, 0, target->width(), target->height()));
+}
+
+}  // namespace
+}  // namespace lungar::render

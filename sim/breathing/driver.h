@@ -6,8 +6,9 @@
 /// rate; a rate change ramps that speed (smoothstep) so the phase never jumps, and a breath hold ramps it to
 /// zero. Every other change (tidal volume, preset, I:E, ventilator, apnoea) cross-fades the old and new
 /// patterns over a transition, both evaluated at the same phase, so P and V move continuously from the old
-/// curve to the new one. The transition is at least half a breath, and long enough that the cross-fade adds
-/// no more than a quarter of the new pattern's peak flow: a change of preset that moves the FRC by 0.7 L
+/// curve to the new one. The transition is at least half a breath (or the event's transition_s), and long
+/// enough that the cross-fade itself adds no more than a quarter of the faster pattern's peak flow: a change
+/// of preset that moves the FRC by 0.7 L
 /// takes about 9 s at 12/min. A sigh only changes the next breath, which starts and ends at the FRC.
 /// Where a fade would still make the volume move faster than the faster pattern's peak flow (when the fade's
 /// own drift meets a flow peak), a flow limiter, tabulated when the event is applied, holds it back and lets it

@@ -34,7 +34,8 @@ struct TrackerStats {
   std::uint64_t opens = 0;       ///< times the device was opened (a HID device: opening until its first report)
   std::uint64_t reconnects = 0;  ///< times the device came back after being lost
   std::uint64_t recorded = 0;    ///< records written to the --record log
-  double rate_hz = 0;            ///< accepted reports per second over the last second
+  double rate_hz = 0;            ///< accepted reports per second over the last second (all sensors together)
+  std::array<double, kRoleCount> role_rate_hz{};  ///< samples per second of each role, indexed by Role
   TrackerState state = TrackerState::Disconnected;
 };
 

@@ -110,6 +110,7 @@ DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t
     s.position_mm = p.position_mm;
     s.orientation_wxyz = p.orientation_wxyz;
     const auto r = static_cast<std::size_t>(p.role);
+    ++role_window_count_[r];
     latest_[r].publish(s);
     history_[r].push(s);
     history_mail_[r].publish(history_[r]);
@@ -129,6 +130,11 @@ void TrackerCore::tick(std::int64_t now_ns) {
   if (span >= kSecond) {
     rate_hz_.store(static_cast<double>(rate_window_count_) * 1e9 / static_cast<double>(span),
                    std::memory_order_relaxed);
+    for (std::size_t r = 0; r < kRoleCount; ++r) {
+      role_rate_hz_[r].store(static_cast<double>(role_window_count_[r]) * 1e9 / static_cast<double>(span),
+                             std::memory_order_relaxed);
+      role_window_count_[r] = 0;
+    }
     rate_window_start_ns_ = now_ns;
     rate_window_count_ = 0;
   }
@@ -170,6 +176,7 @@ TrackerStats TrackerCore::stats() const {
   t.reconnects = reconnects_.load(std::memory_order_relaxed);
   t.recorded = recorded_.load(std::memory_order_relaxed);
   t.rate_hz = rate_hz_.load(std::memory_order_relaxed);
+  for (std::size_t r = 0; r < kRoleCount; ++r) t.role_rate_hz[r] = role_rate_hz_[r].load(std::memory_order_relaxed);
   t.state = state();
   return t;
 }

@@ -66,6 +66,7 @@ class TrackerCore {
   std::int64_t last_arrival_ns_ = 0;
   std::int64_t rate_window_start_ns_ = 0;
   std::uint64_t rate_window_count_ = 0;
+  std::array<std::uint64_t, kRoleCount> role_window_count_{};
   std::array<PoseHistory, kRoleCount> history_{};
   std::array<std::int64_t, 16> log_last_ns_{};
   std::array<std::uint64_t, 16> log_suppressed_{};
@@ -77,6 +78,7 @@ class TrackerCore {
   std::array<std::atomic<std::uint64_t>, kDecodeErrorCount> malformed_{};
   std::atomic<std::int64_t> last_accepted_ns_{0};
   std::atomic<double> rate_hz_{0};
+  std::array<std::atomic<double>, kRoleCount> role_rate_hz_{};
   std::atomic<TrackerState> state_{TrackerState::Disconnected};
   std::atomic<bool> finished_{false};
 };

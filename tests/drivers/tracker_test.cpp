@@ -134,6 +134,12 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   EXPECT_GE(tr.history(Role::Head).count, 2u);
   EXPECT_TRUE(tr.predicted(Role::Head, monotonic_ns() + 10'000'000, 50'000'000).valid());
   EXPECT_FALSE(tr.latest(Role::Stylus, monotonic_ns()).valid());  // disabled by default
+  // The rate is measured over whole seconds: after one, both roles have a rate and the total is their sum.
+  ASSERT_TRUE(eventually([&] { return tr.stats().rate_hz > 0; }, 5.0));
+  const TrackerStats rs = tr.stats();
+  EXPECT_GT(rs.role_rate_hz[static_cast<int>(Role::Head)], 0.0);
+  EXPECT_EQ(rs.role_rate_hz[static_cast<int>(Role::Stylus)], 0.0);
+  EXPECT_NEAR(rs.rate_hz, rs.role_rate_hz[0] + rs.role_rate_hz[1], 1e-9);
   tr.stop();
   const TrackerStats s = tr.stats();
   EXPECT_EQ(s.malformed, 0u);

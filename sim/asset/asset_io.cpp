@@ -34,6 +34,7 @@ struct Bytes {
   }
   template <class T>
   void put_array(const T* p, std::size_t n) {
+    if (n == 0) return;
     data.append(reinterpret_cast<const char*>(p), n * sizeof(T));
   }
 };
@@ -49,6 +50,7 @@ void write_section(std::ofstream& out, const char tag[4], const std::string& pay
 
 template <class T>
 std::string array_payload(const std::vector<T>& v) {
+  if (v.empty()) return {};
   return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 
@@ -140,7 +142,7 @@ struct Cursor {
   template <class T>
   void get_array(std::vector<T>& v, std::size_t n) {
     v.resize(n);
-    std::memcpy(v.data(), s.data() + at, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), s.data() + at, n * sizeof(T));
     at += n * sizeof(T);
   }
 };
@@ -148,7 +150,7 @@ struct Cursor {
 template <class T>
 void payload_to(const std::string& payload, std::vector<T>& v) {
   v.resize(payload.size() / sizeof(T));
-  std::memcpy(v.data(), payload.data(), payload.size());
+  if (!payload.empty()) std::memcpy(v.data(), payload.data(), payload.size());
 }
 
 bool all_finite(const std::vector<float>& v) {

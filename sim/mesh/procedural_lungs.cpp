@@ -104,7 +104,7 @@ LungMesh make_lung(const char* name, const LungShape& shape, const Eigen::Vector
   for (Eigen::Vector3d& p : lung.mesh.positions) p *= radius(shape, p);
   const double scale = std::cbrt(shape.target_volume_mm3 / enclosed_volume(lung.mesh));
   for (Eigen::Vector3d& p : lung.mesh.positions) p = centre + scale * p;
-  lung.has_centre = false;
+  lung.has_centre = false;  // the bake takes the volume centroid, as for imported lungs (better eq. 7 fit)
   lung.centre = centre;
   return lung;
 }

@@ -1,10 +1,11 @@
 /// @file procedural_lungs.h
 /// @brief A deterministic, anatomically plausible pair of lung surfaces (LPS, mm) for demos and tests.
 ///
-/// Each lung is a radial surface r(u) about its centre (so it is star-shaped and the radial map of eq. 7
-/// folds nothing): a tapered ellipsoid with an apex, a concave diaphragmatic dome at the base, a concave
-/// medial face, and on the left lung a cardiac notch; a few smooth seeded bumps make each seed a different
-/// patient. The right lung (at -x, LPS) is the larger; volumes are about 2.7 L and 2.3 L.
+/// Each lung is a radial surface r(u) about a generating point (so it is star-shaped there; the bake uses the
+/// volume centroid, a few mm away, and the radial map still folds nothing at the sizes tested): a tapered
+/// ellipsoid with an apex, a concave diaphragmatic dome at the base, a concave medial face, and on the left
+/// lung a cardiac notch; a few smooth seeded bumps make each seed a different patient. The right lung (at -x,
+/// LPS) is the larger; volumes are exactly 2.7 L and 2.3 L.
 #pragma once
 
 #include <cstdint>

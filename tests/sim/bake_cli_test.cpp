@@ -1,0 +1,80 @@
+/// @file bake_cli_test.cpp
+/// @brief `lungar-bake` as a user runs it: --help and --version exit 0; a missing mesh or a bad option exits
+///        non-zero below 128 with one line on stderr and writes nothing; a small procedural bake writes the
+///        asset and every report key the issue lists.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "sim/asset/asset_io.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+const std::string kBake = std::string(LUNGAR_BINARY_DIR) + "/sim/lungar-bake";
+
+/// Runs lungar-bake with `args`, stderr to `err`; returns the exit status.
+int run(const std::string& args, const std::string& err) {
+  const int status = std::system((kBake + " " + args + " >/dev/null 2>" + err).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(BakeCli, HelpAndVersion) {
+  test::TempDir dir;
+  EXPECT_EQ(run("--help", dir.file("err")), 0);
+  EXPECT_EQ(run("--version", dir.file("err")), 0);
+}
+
+TEST(BakeCli, MissingMeshIsOneCleanErrorAndNoFile) {
+  test::TempDir dir;
+  const int rc = run("--mesh " + dir.file("none.stl") + " --out " + dir.file("x.lungbake"), dir.file("err"));
+  EXPECT_GE(rc, 1);
+  EXPECT_LT(rc, 128);
+  const std::string err = slurp(dir.file("err"));
+  EXPECT_NE(err.find("none.stl: cannot open"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.lungbake")));
+}
+
+TEST(BakeCli, BadOptionsAreRefused) {
+  test::TempDir dir;
+  for (const std::string args : {"", "--procedural", "--procedural --out a.lungbake --bands 9",
+                                 "--procedural --out a.lungbake --units inch", "--mesh a.stl --procedural --out a"}) {
+    const int rc = run(args, dir.file("err"));
+    EXPECT_GE(rc, 1) << args;
+    EXPECT_LT(rc, 128) << args;
+    EXPECT_FALSE(slurp(dir.file("err")).empty()) << args;
+  }
+}
+
+TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
+  test::TempDir dir;
+  const std::string args = "--procedural --nodes 2000 --seed 3 --threads 2 --out " + dir.file("p.lungbake") +
+                           " --report-json " + dir.file("p.json");
+  ASSERT_EQ(run(args, dir.file("err")), 0) << slurp(dir.file("err"));
+  const Result<BakedAsset> a = load_asset(dir.file("p.lungbake"));
+  ASSERT_TRUE(a) << a.error;
+  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("p.json")));
+  for (const char* key : {"nodes", "triangles", "lungs", "bands", "coefficients", "transfer_nnz_per_row_mean",
+                          "bake_s", "folded_triangles", "eq7_rms_rel_error", "alpha", "paper_interp_rms_rel_error",
+                          "linear_basis_rms_rel_error", "displacement_max_mm_at_tidal", "tidal_volume_rel_error",
+                          "base_apex_displacement_ratio", "posterior_anterior_displacement_ratio", "bands_sweep"})
+    EXPECT_TRUE(r.contains(key)) << key;
+  EXPECT_EQ(r["nodes"].get<std::uint32_t>(), a->vertex_count());
+  EXPECT_EQ(r["bands_sweep"].size(), 7u);
+  EXPECT_EQ(r["bands_sweep"][2]["coefficients"].get<int>(), 16);
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -179,16 +179,21 @@ Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const 
   }
   if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
 
-  // deformed_vao: deformed positions and the normals, for drawing without the shader deformation.
-  d.deformed_vao_ = gl::VertexArray::create();
-  glBindVertexArray(d.deformed_vao_.id());
-  glBindBuffer(GL_ARRAY_BUFFER, d.deformed_.id());
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-  if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
+  // deformed_vao: deformed positions and the normals, for drawing without the shader deformation; rest_plain_vao:
+  // the same for the rest shape (no coefficient arrays enabled, so none are fetched).
+  auto positions_and_normals = [&](gl::VertexArray& vao, const gl::Buffer& positions) {
+    vao = gl::VertexArray::create();
+    glBindVertexArray(vao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, positions.id());
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+    if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
+  };
+  positions_and_normals(d.deformed_vao_, d.deformed_);
+  positions_and_normals(d.rest_plain_vao_, d.positions_);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 

@@ -61,6 +61,7 @@ class LungDrawable {
 
   // For the renderer (same folder): vertex arrays that read rest or deformed positions.
   GLuint rest_vao() const { return rest_vao_.id(); }
+  GLuint rest_plain_vao() const { return rest_plain_vao_.id(); }  ///< rest positions and normals only
   GLuint deformed_vao() const { return deformed_vao_.id(); }
   GLuint deformed_buffer() const { return deformed_.id(); }
   GLuint coeff_texture() const { return coeff_texture_.id(); }
@@ -78,7 +79,7 @@ class LungDrawable {
   gl::Buffer positions_, normals_, coeffs_, indices_, deformed_;
   gl::Texture coeff_texture_;
   GLint coeff_texture_width_ = 0;
-  gl::VertexArray rest_vao_, deformed_vao_;
+  gl::VertexArray rest_vao_, rest_plain_vao_, deformed_vao_;
 };
 
 }  // namespace lungar::render

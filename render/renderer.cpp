@@ -190,13 +190,13 @@ Status Renderer::draw(const LungDrawable& drawable, const FrameInputs& f, FrameS
   const bool cull = points && f.cull_back_facing;
   if (f.overlay_rest) {
     for (std::size_t e = 0; e < f.eyes.size(); ++e) {
-      draw_lungs(drawable, cull ? kPlainCull : kPlainNoCull, drawable.rest_vao(), f, f.eyes[e],
+      draw_lungs(drawable, cull ? kPlainCull : kPlainNoCull, drawable.rest_plain_vao(), f, f.eyes[e],
                  std::span<const std::uint32_t>(counts[e].data(), f.lungs.size()), true);
     }
   }
   Variant variant = cull ? kPlainCull : kPlainNoCull;
   GLuint vao = drawable.deformed_vao();
-  if (f.source == PositionSource::Rest) vao = drawable.rest_vao();
+  if (f.source == PositionSource::Rest) vao = drawable.rest_plain_vao();
   if (f.source == PositionSource::Shader) {
     if (f.strategy == StereoStrategy::DeformOnce) {
       deform_once(drawable, f.lungs, lung_counts);

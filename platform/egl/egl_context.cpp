@@ -174,7 +174,9 @@ EglContext::~EglContext() {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != nullptr) eglDestroyContext(display_, context_);
     if (surface_ != nullptr) eglDestroySurface(display_, surface_);
-    eglTerminate(display_);
+    // eglInitialize is not reference-counted: the surfaceless default display is shared by every headless context
+    // in the process, so only a display of our own X connection is terminated.
+    if (x_display_ != nullptr) eglTerminate(display_);
   }
   if (x_display_ != nullptr) {
     Display* x = static_cast<Display*>(x_display_);

@@ -2,7 +2,7 @@
 /// @brief Turns config's breathing settings and scenario files into a ready-to-run sim::BreathingScript.
 ///
 /// Per frame the runtime then calls script.driver.at(t) (P, V, dV) and script.orientation.at(t) (the patient's
-/// orientation as a lung -> world quaternion; sim::gravity_in_lung gives g-hat), both allocation-free.
+/// orientation as a lung -> world quaternion; sim::gravity_in_lung_frame gives g-hat), both allocation-free.
 #pragma once
 
 #include <optional>

@@ -57,7 +57,7 @@ void print_series(const sim::BreathingScript& script, double seconds, double dt)
     const double t = static_cast<double>(k) * dt;
     const sim::BreathingSample s = script.driver.at(t);
     const Eigen::Quaterniond q = script.orientation.at(t);
-    const Eigen::Vector3d g = sim::gravity_in_lung(q);
+    const Eigen::Vector3d g = sim::gravity_in_lung_frame(q);
     std::printf("%.4f,%.4f,%.4f,%.3f,%.3f,%.3f,%s,%lld,%.6f,%.6f,%.6f,%.6f,%.3f,%.6f,%.6f,%.6f\n", t, s.p_cmh2o,
                 s.p_applied_cmh2o, s.v_ml, s.v_frc_ml, s.dv_ml, sim::to_string(s.phase),
                 static_cast<long long>(s.breath), q.w(), q.x(), q.y(), q.z(), sim::tilt_from_upright_deg(q), g.x(),

@@ -62,12 +62,8 @@ Eigen::Quaterniond pose_rotation(Pose pose) {
   return Eigen::Quaterniond::Identity();
 }
 
-Eigen::Vector3d gravity_in_lung(const Eigen::Quaterniond& q) {
-  return q.conjugate() * Eigen::Vector3d(0.0, 0.0, -1.0);
-}
-
 double tilt_from_upright_deg(const Eigen::Quaterniond& q) {
-  const double c = std::clamp(-gravity_in_lung(q).z(), -1.0, 1.0);
+  const double c = std::clamp(-gravity_in_lung_frame(q).z(), -1.0, 1.0);
   return std::acos(c) * 180.0 / std::numbers::pi;
 }
 

@@ -15,6 +15,8 @@
 
 #include <Eigen/Geometry>
 
+#include "sim/force/gravity.h"  // gravity_in_lung_frame(): g-hat for an orientation
+
 namespace lungar::sim {
 
 enum class Pose { Upright, Supine, Prone, LeftLateral, RightLateral };
@@ -27,8 +29,6 @@ std::optional<Pose> pose_from_name(std::string_view name);
 /// Lung frame -> world rotation of a pose.
 Eigen::Quaterniond pose_rotation(Pose pose);
 
-/// The unit gravity direction in the lung frame (DESIGN.md's g-hat) for a lung -> world rotation.
-Eigen::Vector3d gravity_in_lung(const Eigen::Quaterniond& lung_to_world);
 /// Angle between the patient's superior axis and the world's up, degrees: 0 upright, 90 supine or lateral.
 double tilt_from_upright_deg(const Eigen::Quaterniond& lung_to_world);
 

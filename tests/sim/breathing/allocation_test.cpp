@@ -52,7 +52,7 @@ TEST(Allocation, PerFrameEvaluationAllocatesNothing) {
   for (int k = 0; k < 20000; ++k) {
     const double t = 0.0017 * k;
     sink += d.at(t).dv_ml;
-    sink += gravity_in_lung(track.track->at(t)).y();
+    sink += gravity_in_lung_frame(track.track->at(t)).y();
   }
   EXPECT_EQ(g_allocations.load() - before, 0);
   EXPECT_TRUE(std::isfinite(sink));

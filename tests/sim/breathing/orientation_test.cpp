@@ -18,11 +18,11 @@ void expect_near(const Vector3d& a, const Vector3d& b, double tol) {
 
 // Lung frame LPS: +x left, +y posterior, +z superior.
 TEST(Orientation, GravityPointsWhereThePatientLies) {
-  expect_near(gravity_in_lung(pose_rotation(Pose::Upright)), Vector3d(0, 0, -1), 1e-12);      // feet
-  expect_near(gravity_in_lung(pose_rotation(Pose::Supine)), Vector3d(0, 1, 0), 1e-12);        // back
-  expect_near(gravity_in_lung(pose_rotation(Pose::Prone)), Vector3d(0, -1, 0), 1e-12);        // front
-  expect_near(gravity_in_lung(pose_rotation(Pose::LeftLateral)), Vector3d(1, 0, 0), 1e-12);   // left side
-  expect_near(gravity_in_lung(pose_rotation(Pose::RightLateral)), Vector3d(-1, 0, 0), 1e-12); // right side
+  expect_near(gravity_in_lung_frame(pose_rotation(Pose::Upright)), Vector3d(0, 0, -1), 1e-12);      // feet
+  expect_near(gravity_in_lung_frame(pose_rotation(Pose::Supine)), Vector3d(0, 1, 0), 1e-12);        // back
+  expect_near(gravity_in_lung_frame(pose_rotation(Pose::Prone)), Vector3d(0, -1, 0), 1e-12);        // front
+  expect_near(gravity_in_lung_frame(pose_rotation(Pose::LeftLateral)), Vector3d(1, 0, 0), 1e-12);   // left side
+  expect_near(gravity_in_lung_frame(pose_rotation(Pose::RightLateral)), Vector3d(-1, 0, 0), 1e-12); // right side
   EXPECT_NEAR(tilt_from_upright_deg(pose_rotation(Pose::Supine)), 90.0, 1e-9);
   EXPECT_NEAR(tilt_from_upright_deg(pose_rotation(Pose::Upright)), 0.0, 1e-9);
 }
@@ -57,10 +57,10 @@ TEST(Orientation, TurnsChainFromTheLastTarget) {
                                                                    {10.0, 5.0, pose_rotation(Pose::Supine)}});
   ASSERT_TRUE(c) << c.error;
   // Sorted by start: supine first, then from supine to the left side.
-  expect_near(gravity_in_lung(c.track->at(20.0)), Vector3d(0, 1, 0), 1e-9);
-  const Vector3d mid = gravity_in_lung(c.track->at(31.0));
+  expect_near(gravity_in_lung_frame(c.track->at(20.0)), Vector3d(0, 1, 0), 1e-9);
+  const Vector3d mid = gravity_in_lung_frame(c.track->at(31.0));
   expect_near(mid, Vector3d(std::sqrt(0.5), std::sqrt(0.5), 0), 1e-9);
-  expect_near(gravity_in_lung(c.track->at(40.0)), Vector3d(1, 0, 0), 1e-9);
+  expect_near(gravity_in_lung_frame(c.track->at(40.0)), Vector3d(1, 0, 0), 1e-9);
 }
 
 TEST(Orientation, OverlappingOrBadTurnsAreRejected) {

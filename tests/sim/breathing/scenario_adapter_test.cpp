@@ -39,7 +39,7 @@ TEST(ScenarioAdapter, TheTeachingScenario) {
   EXPECT_DOUBLE_EQ(s.duration_s, 70.0);
   EXPECT_NEAR(sim::tilt_from_upright_deg(s.orientation.at(19.9)), 0.0, 1e-9);
   EXPECT_NEAR(sim::tilt_from_upright_deg(s.orientation.at(22.5)), 45.0, 1e-6);
-  EXPECT_LT((sim::gravity_in_lung(s.orientation.at(25.0)) - Eigen::Vector3d(0, 1, 0)).norm(), 1e-9);  // supine
+  EXPECT_LT((sim::gravity_in_lung_frame(s.orientation.at(25.0)) - Eigen::Vector3d(0, 1, 0)).norm(), 1e-9);  // supine
   EXPECT_NEAR(s.driver.at(39.9).v_frc_ml, sim::pv_preset(sim::Preset::Normal).frc_ml(), 1e-9);
   EXPECT_NEAR(s.driver.at(70.0).v_frc_ml, sim::pv_preset(sim::Preset::Fibrosis).frc_ml(), 1e-9);
   // Steady normal breathing before 40 s, steady fibrotic breathing at the end: 500 mL either way.

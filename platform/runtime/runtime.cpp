@@ -27,6 +27,7 @@
 #include "platform/scenario_adapter.h"
 #include "render/frame_target.h"
 #include "render/hud_line.h"
+#include "render/lens_distortion.h"
 #include "render/lung_drawable.h"
 #include "render/png_snapshot.h"
 #include "render/renderer.h"
@@ -199,6 +200,34 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
 
   std::optional<render::HudLine> hud;
   if (s.render.hud) hud.emplace();
+  // The lens pass: the scene is drawn undistorted into its own target, then pre-distorted into the output.
+  std::optional<render::FrameTarget> lens_scene;
+  std::optional<render::LensDistortion> lens;
+  render::LensParams lens_params;
+  std::array<std::array<float, 2>, 2> lens_centres = {std::array<float, 2>{0.5f, 0.5f}, {0.5f, 0.5f}};
+  if (s.hmd.lens.enabled) {
+    auto scene = render::FrameTarget::create(output->width, output->height);
+    auto pass = render::LensDistortion::create();
+    if (!scene || !pass) {
+      log_line("error: lens distortion: " + (scene ? pass.error() : scene.error()));
+      return 1;
+    }
+    lens_scene.emplace(scene.take());
+    lens.emplace(pass.take());
+    for (int c = 0; c < 3; ++c) {
+      lens_params.k1[c] = static_cast<float>(s.hmd.lens.k1[c]);
+      lens_params.k2[c] = static_cast<float>(s.hmd.lens.k2[c]);
+    }
+    if (stereo) lens_centres = {render::lens_centre(hmd, true), render::lens_centre(hmd, false)};
+  }
+  auto bind_output = [&] {
+    if (output->target) {
+      output->target->bind();
+    } else {
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glViewport(0, 0, output->width, output->height);
+    }
+  };
 
   // --- tracker -----------------------------------------------------------------------------------------
   drivers::TrackerOptions topts;
@@ -300,14 +329,22 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     in.point_size_px = static_cast<float>(s.render.point_size_px);
     in.level_of_detail = s.render.lod;
     in.background = to_vec3(s.render.background);
-    if (output->target) {
-      output->target->bind();
+    if (lens_scene) {
+      lens_scene->bind();
     } else {
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      bind_output();
     }
     if (auto drawn = renderer->draw(*drawable, in); !drawn) {
       log_line("error: draw: " + drawn.error);
       return false;
+    }
+    if (lens) {
+      bind_output();
+      const auto centres = std::span<const std::array<float, 2>>(lens_centres.data(), eye_span.size());
+      if (auto warped = lens->apply(*lens_scene, eye_span, centres, lens_params); !warped) {
+        log_line("error: lens distortion: " + warped.error);
+        return false;
+      }
     }
     if (hud) {
       // The on-screen line: frame rate, pose age, tracker state; refreshed four times a second.

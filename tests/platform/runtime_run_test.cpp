@@ -87,6 +87,13 @@ TEST_F(RuntimeRun, CpuEq7MonoMeshRuns) {
   EXPECT_TRUE(snapshot_written());
 }
 
+TEST_F(RuntimeRun, LensDistortionPassRuns) {
+  settings.hmd.lens.enabled = true;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["frames"], 6);
+  EXPECT_TRUE(snapshot_written());
+}
+
 TEST_F(RuntimeRun, BadInputsFailCleanlyWithoutOutputs) {
   settings.sim.asset = (dir / "missing.lungbake").string();
   EXPECT_EQ(platform::run_runtime(settings, options), 1);

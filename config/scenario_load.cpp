@@ -281,23 +281,10 @@ ScenarioResult load_scenario_from_string(const std::string& toml_text, const std
 }
 
 ScenarioResult load_scenario(const std::string& path, const BreathingSettings& defaults) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    ScenarioResult r;
-    r.error = path + ": cannot read the scenario: expected a TOML file, " +
-              (std::filesystem::exists(path, ec) ? std::string("got something that is not a regular file")
-                                                 : std::string("got no such file"));
-    return r;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) {
-    ScenarioResult r;
-    r.error = path + ": cannot read the scenario: read error";
-    return r;
-  }
-  return parse(text.str(), path, defaults);
+  std::string text;
+  ScenarioResult r;
+  if (!read_toml_file(path, "scenario", text, r.error)) return r;
+  return parse(text, path, defaults);
 }
 
 }  // namespace lungar::config

@@ -310,23 +310,10 @@ LoadResult load_settings_from_string(const std::string& toml_text, const std::st
 }
 
 LoadResult load_settings(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    LoadResult r;
-    r.error = path + ": cannot read the config: expected a TOML file, " +
-              (std::filesystem::exists(path, ec) ? std::string("got something that is not a regular file")
-                                                 : std::string("got no such file"));
-    return r;
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) {
-    LoadResult r;
-    r.error = path + ": cannot read the config: read error";
-    return r;
-  }
-  LoadResult r = parse(text.str(), path);
+  std::string text;
+  LoadResult r;
+  if (!read_toml_file(path, "config", text, r.error)) return r;
+  r = parse(text, path);
   if (r) {
     // Relative paths inside a config are relative to the config's folder.
     const auto dir = std::filesystem::path(path).parent_path();

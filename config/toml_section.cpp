@@ -3,6 +3,8 @@
 #include "config/toml_section.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -23,6 +25,25 @@ std::string range_text(double lo, double hi, std::string_view unit) {
 }
 
 }  // namespace
+
+bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    error = path + ": cannot read the " + what + ": expected a TOML file, " +
+            (std::filesystem::exists(path, ec) ? std::string("got something that is not a regular file")
+                                               : std::string("got no such file"));
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (!in.good() && !in.eof()) {
+    error = path + ": cannot read the " + what + ": read error";
+    return false;
+  }
+  text = content.str();
+  return true;
+}
 
 std::string describe(const toml::node& node) {
   switch (node.type()) {

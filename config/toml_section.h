@@ -61,6 +61,10 @@ class TomlSection {
   std::set<std::string, std::less<>> known_;
 };
 
+/// Reads a whole text file for a loader; false with `error` = "PATH: cannot read the WHAT: expected a TOML file,
+/// got ..." when it is missing, not a regular file or unreadable.
+bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error);
+
 /// How a node is named in "got ..." messages: "a string", "an integer 7", ...
 std::string describe(const toml::node& node);
 

@@ -17,9 +17,11 @@ namespace lungar::platform::bench {
 namespace {
 
 std::string asset_path(const AssetKey& key, const std::string& dir) {
-  char name[96];
-  std::snprintf(name, sizeof name, "procedural-n%u-L%u%s-v%u.lungbake", key.nodes, key.bands,
-                key.transfer_rows ? "-rows" : "", sim::kAssetVersion);
+  char eps[32] = "";
+  if (key.transfer_rows && key.transfer_epsilon > 0) std::snprintf(eps, sizeof eps, "-eps%g", key.transfer_epsilon);
+  char name[128];
+  std::snprintf(name, sizeof name, "procedural-n%u-L%u%s%s-v%u.lungbake", key.nodes, key.bands,
+                key.transfer_rows ? "-rows" : "", eps, sim::kAssetVersion);
   return (std::filesystem::path(dir) / name).string();
 }
 
@@ -27,6 +29,7 @@ nlohmann::json record_json(const BakeRecord& r) {
   return {{"nodes_requested", r.key.nodes},
           {"bands", r.key.bands},
           {"transfer_rows", r.key.transfer_rows},
+          {"transfer_epsilon", r.key.transfer_epsilon},
           {"vertices", r.vertices},
           {"bake_s", r.bake_s},
           {"factorise_s", r.factorise_s},
@@ -73,10 +76,12 @@ sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& di
     log("cached asset unusable (" + loaded.error + "); baking it again");
   }
   log("baking " + std::to_string(key.nodes) + " nodes, " + std::to_string(key.bands) + " bands" +
-      (key.transfer_rows ? ", with transfer rows" : "") + " -> " + path);
+      (key.transfer_rows ? ", with transfer rows" : "") +
+      (key.transfer_epsilon > 0 ? " (epsilon " + std::to_string(key.transfer_epsilon) + ")" : "") + " -> " + path);
   sim::BakeOptions options;
   options.bands = key.bands;
   options.transfer_rows = key.transfer_rows;
+  if (key.transfer_epsilon > 0) options.transfer_epsilon = key.transfer_epsilon;
   options.evaluate = false;  // the accuracy figures are the bake tool's job, not the benchmark's
   std::string last_stage;
   auto baked = sim::bake_procedural(key.nodes, 1, options, [&](std::string_view stage, double) {

@@ -19,6 +19,7 @@ struct AssetKey {
   std::uint32_t nodes = 400000;
   std::uint32_t bands = 4;
   bool transfer_rows = false;
+  double transfer_epsilon = 0;  ///< rows truncated below this fraction of T_II; 0: the bake's default
 };
 
 /// How an asset was made; times are 0 (and `known` false) for a cached asset whose record is missing.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct BenchOptions {
   std::string asset_dir = "bench-assets";
   std::string snapshot_dir;           ///< PNGs of the timed frames; empty: none
   bool rebake = false;                ///< bake every asset again even when cached (fresh bake times)
+  /// Also CPU eq. (1) with rows truncated at this fraction of T_II (denser: 0.005 gives about the paper's 192
+  /// a row); 0: not; unset: 0.005, or 0 with quick (the denser rows take minutes to bake).
+  std::optional<double> eq1_epsilon;
   bool bake_only = false;             ///< fill the asset cache (and record bake times), measure no frames
   std::set<std::string> sections;     ///< empty: all of kSections
 };

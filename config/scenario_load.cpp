@@ -205,14 +205,7 @@ void check_timeline(const Scenario& sc) {
 ScenarioResult parse(const std::string& text, const std::string& name, const BreathingSettings& defaults) {
   ScenarioResult result;
   toml::table root;
-  try {
-    root = toml::parse(text, name);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    result.error = name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                   ": TOML syntax error: " + std::string(e.description());
-    return result;
-  }
+  if (!parse_toml(text, name, root, result.error)) return result;
   Scenario sc;
   sc.source = name;
   sc.start = defaults;

@@ -249,14 +249,7 @@ void read_sim(TomlSection s, SimSettings& m) {
 LoadResult parse(const std::string& text, const std::string& name) {
   LoadResult result;
   toml::table root;
-  try {
-    root = toml::parse(text, name);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    result.error = name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                   ": TOML syntax error: " + std::string(e.description());
-    return result;
-  }
+  if (!parse_toml(text, name, root, result.error)) return result;
   Settings s;
   s.source = name;
   try {

@@ -26,6 +26,18 @@ std::string range_text(double lo, double hi, std::string_view unit) {
 
 }  // namespace
 
+bool parse_toml(const std::string& text, const std::string& name, toml::table& root, std::string& error) {
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    error = name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+            ": TOML syntax error: " + std::string(e.description());
+    return false;
+  }
+  return true;
+}
+
 bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {

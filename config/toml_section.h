@@ -61,6 +61,9 @@ class TomlSection {
   std::set<std::string, std::less<>> known_;
 };
 
+/// Parses TOML text; false with `error` = "NAME:LINE:COLUMN: TOML syntax error: ..." on a syntax error.
+bool parse_toml(const std::string& text, const std::string& name, toml::table& root, std::string& error);
+
 /// Reads a whole text file for a loader; false with `error` = "PATH: cannot read the WHAT: expected a TOML file,
 /// got ..." when it is missing, not a regular file or unreadable.
 bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error);

@@ -14,22 +14,7 @@
 #include "sim/force/force_sh.h"
 #include "sim_test_support.h"
 
-#if !defined(__SANITIZE_ADDRESS__)
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-#endif
+#include "allocation_counter.h"
 
 namespace lungar::sim {
 namespace {
@@ -41,7 +26,7 @@ TEST(Allocation, PerFrameDeformationAllocatesNothing) {
   const BakedAsset& a = test::small_bake().asset;
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(3 * a.vertex_count());
   Eq1Deformer eq1(a);
-  const long before = g_allocations.load();
+  const long before = lungar::testing::g_allocations.load();
   for (int frame = 0; frame < 20; ++frame) {
     const Eigen::Quaterniond q = axis_rotation(frame % 3, 0.1 * frame);
     force_sh(a, ForceMode::exact, q, force.data());
@@ -49,7 +34,7 @@ TEST(Allocation, PerFrameDeformationAllocatesNothing) {
     deform_eq7(a, force, 10.0 * frame, positions);
     eq1.deform(gravity_in_lung_frame(q), 10.0 * frame, positions);
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(lungar::testing::g_allocations.load() - before, 0);
 #endif
 }
 

@@ -11,22 +11,7 @@
 #include "sim/breathing/driver.h"
 #include "sim/breathing/orientation.h"
 
-#if !defined(__SANITIZE_ADDRESS__)
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-#endif
+#include "../allocation_counter.h"
 
 using namespace lungar::sim;
 
@@ -47,18 +32,18 @@ TEST(Allocation, PerFrameEvaluationAllocatesNothing) {
   auto track = OrientationTrack::create(Eigen::Quaterniond::Identity(), {{2.0, 5.0, pose_rotation(Pose::Supine)}});
   ASSERT_TRUE(track);
 
-  const long before = g_allocations.load();
+  const long before = lungar::testing::g_allocations.load();
   double sink = 0;
   for (int k = 0; k < 20000; ++k) {
     const double t = 0.0017 * k;
     sink += d.at(t).dv_ml;
     sink += gravity_in_lung_frame(track.track->at(t)).y();
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(lungar::testing::g_allocations.load() - before, 0);
   EXPECT_TRUE(std::isfinite(sink));
   // The counter does count: applying an event allocates (a segment, the limiter's table).
-  const long mid = g_allocations.load();
+  const long mid = lungar::testing::g_allocations.load();
   ASSERT_EQ(d.apply(Event::set(40.0, fib)), "");
-  EXPECT_GT(g_allocations.load(), mid);
+  EXPECT_GT(lungar::testing::g_allocations.load(), mid);
 #endif
 }

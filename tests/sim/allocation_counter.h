@@ -1,0 +1,26 @@
+/// @file allocation_counter.h
+/// @brief Test support: replaces global operator new/delete to count allocations, so a test can assert that a
+/// per-frame call allocates nothing. Include it in exactly ONE translation unit of a test executable. Under
+/// AddressSanitizer (which owns operator new) nothing is replaced; such tests skip when __SANITIZE_ADDRESS__.
+#pragma once
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#if !defined(__SANITIZE_ADDRESS__)
+namespace lungar::testing {
+inline std::atomic<long> g_allocations{0};
+}  // namespace lungar::testing
+
+void* operator new(std::size_t n) {
+  lungar::testing::g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#endif

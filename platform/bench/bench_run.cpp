@@ -34,7 +34,7 @@ const std::vector<std::uint32_t> kBands = {2, 3, 4, 5, 6, 7, 8};             // 
 const std::vector<float> kPointSizes = {1, 2, 3, 4, 5, 6, 7, 8, 9};          // Fig. 7
 const std::vector<float> kQuickPointSizes = {1, 3, 5, 7, 9};
 constexpr std::uint32_t kBaseBands = 4;                                      // the paper's 16 coefficients
-constexpr double kDenserEpsilon = 0.005;  // eq. (1) rows of about 170 (50k nodes) to 200 entries: the paper's 192
+constexpr double kDenserEpsilon = 0.005;  // eq. (1) rows of 170 (50k nodes) to 257 (400k) entries; paper: 192
 
 /// The paper's Table II (FPS), for the side-by-side columns.
 json paper_table2() {

@@ -2,9 +2,10 @@
 /// @brief Umeyama rigid registration, stylus dwell detection and the fiducial file formats.
 #include "platform/registration/fiducial_registration.h"
 
+#include "platform/text_file.h"
+
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -106,37 +107,15 @@ bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out,
 }
 
 bool write_registration_toml(const std::string& path, const Registration& r, std::string& error) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream o(tmp, std::ios::trunc);
-    if (!o) {
-      error = path + ": cannot write the registration";
-      return false;
-    }
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n"
-                  "[registration]\n"
-                  "translation_mm = [%.6f, %.6f, %.6f]\n"
-                  "rotation_wxyz = [%.9f, %.9f, %.9f, %.9f]\n",
-                  r.fiducials, r.fre_rms_mm, r.fre_max_mm, r.translation_mm.x(), r.translation_mm.y(),
-                  r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z());
-    o << buf;
-    o.flush();
-    if (!o) {
-      error = path + ": write failed";
-      std::filesystem::remove(tmp);
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    error = path + ": cannot rename the temporary file: " + ec.message();
-    std::filesystem::remove(tmp);
-    return false;
-  }
-  return true;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n"
+                "[registration]\n"
+                "translation_mm = [%.6f, %.6f, %.6f]\n"
+                "rotation_wxyz = [%.9f, %.9f, %.9f, %.9f]\n",
+                r.fiducials, r.fre_rms_mm, r.fre_max_mm, r.translation_mm.x(), r.translation_mm.y(),
+                r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z());
+  return write_text_atomically(path, buf, error);
 }
 
 }  // namespace lungar::platform

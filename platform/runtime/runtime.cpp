@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +24,7 @@
 #include "platform/runtime/log.h"
 #include "platform/runtime/patient_force.h"
 #include "platform/scenario_adapter.h"
+#include "platform/text_file.h"
 #include "render/frame_target.h"
 #include "render/hud_line.h"
 #include "render/lens_distortion.h"
@@ -82,20 +82,6 @@ glm::mat4 head_to_world(const PoseSample& head, const std::array<double, 3>& eye
 
 glm::vec3 to_vec3(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
-}
-
-bool write_text_file(const std::string& path, const std::string& text) {
-  const std::filesystem::path p(path);
-  std::error_code ec;
-  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream o(tmp, std::ios::trunc);
-    o << text;
-    if (!o.flush()) return false;
-  }
-  std::filesystem::rename(tmp, path, ec);
-  return !ec;
 }
 
 struct Output {
@@ -380,10 +366,19 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     return true;
   };
 
-  log_line(std::string("running ") + (o.frames ? std::to_string(*o.frames) + " frames" : "") +
-           (o.frames && limit_s > 0 ? " or " : "") +
-           (limit_s > 0 ? std::to_string(limit_s).substr(0, std::to_string(limit_s).find('.') + 2) + " s" : "") +
-           (!o.frames && limit_s <= 0 ? "until stopped" : "") + " (Ctrl-C stops)");
+  {
+    char limit[96];
+    if (o.frames && limit_s > 0) {
+      std::snprintf(limit, sizeof limit, "%ld frames or %.1f s", *o.frames, limit_s);
+    } else if (o.frames) {
+      std::snprintf(limit, sizeof limit, "%ld frames", *o.frames);
+    } else if (limit_s > 0) {
+      std::snprintf(limit, sizeof limit, "%.1f s", limit_s);
+    } else {
+      std::snprintf(limit, sizeof limit, "until stopped");
+    }
+    log_line(std::string("running ") + limit + " (Ctrl-C stops)");
+  }
   int exit_code = 0;
   while (!g_stop_requested.load()) {
     if (o.frames && frame >= *o.frames) break;
@@ -424,9 +419,12 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
   // The mean delivered rate over the run: the instantaneous rate says little once a replay has ended.
   const double rate_hz = wall_s > 0 ? static_cast<double>(ts.accepted) / wall_s : 0.0;
   const TrackerCounters counters{ts.reports, ts.malformed, ts.reconnects, rate_hz, drivers::to_string(ts.state)};
-  if (!write_text_file(stats_path, stats.to_json(config::to_string(s.hmd.view), config::to_string(deform),
-                                                  asset.vertex_count(), counters, wall_s))) {
-    log_line("error: " + stats_path + ": cannot write the stats");
+  std::string write_error;
+  if (!write_text_atomically(stats_path,
+                             stats.to_json(config::to_string(s.hmd.view), config::to_string(deform),
+                                           asset.vertex_count(), counters, wall_s),
+                             write_error)) {
+    log_line("error: stats: " + write_error);
     exit_code = 1;
   } else {
     log_line("stats: " + stats_path);

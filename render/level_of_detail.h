@@ -16,7 +16,8 @@
 namespace lungar::render {
 
 /// `coverage` is the factor by which the drawn points' total footprint exceeds the surface area they cover: 3 is
-/// hole-free for the R2 order of the test assets; the grid-level order of sim's bake leaves a few holes even at 6.
+/// hole-free for sim's bake order (progressive Poisson disks, sim/mesh/lod_order.cpp) and for the R2 order of the
+/// test assets; 2 leaves a few single-pixel holes where the surface faces the eye.
 /// `model_view` maps the lung frame to the eye, `projection_y` is projection[1][1], `viewport_height_px` the
 /// eye's height.
 std::uint32_t lod_point_count(const LungRange& lung, const glm::mat4& model_view, float projection_y,

@@ -44,7 +44,7 @@ struct FrameInputs {
   bool overlay_rest = false;          ///< the rest shape in grey under the deformed lungs (the paper's Fig. 10)
   float point_size_px = 5.f;          ///< the paper: 5
   bool level_of_detail = true;        ///< draw count from the projected size (points mode)
-  float lod_coverage = 6.f;           ///< see lod_point_count(); 3 suffices for an even (R2) order, sim's bake needs ~6
+  float lod_coverage = 3.f;           ///< see lod_point_count(): hole-free for sim's bake order at 3
   bool cull_back_facing = true;       ///< points mode
   float ambient = 0.3f;
   glm::vec3 rest_color{0.55f, 0.55f, 0.55f};

@@ -20,8 +20,8 @@ std::string asset_path(const AssetKey& key, const std::string& dir) {
   char eps[32] = "";
   if (key.transfer_rows && key.transfer_epsilon > 0) std::snprintf(eps, sizeof eps, "-eps%g", key.transfer_epsilon);
   char name[128];
-  std::snprintf(name, sizeof name, "procedural-n%u-L%u%s%s-v%u.lungbake", key.nodes, key.bands,
-                key.transfer_rows ? "-rows" : "", eps, sim::kAssetVersion);
+  std::snprintf(name, sizeof name, "procedural-n%u-L%u%s%s-v%u-b%u.lungbake", key.nodes, key.bands,
+                key.transfer_rows ? "-rows" : "", eps, sim::kAssetVersion, sim::kBakeRevision);
   return (std::filesystem::path(dir) / name).string();
 }
 

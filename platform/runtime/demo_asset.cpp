@@ -25,9 +25,9 @@ std::string default_cache_dir() {
 std::string demo_asset_path(const DemoAssetOptions& o) {
   const std::string dir = o.cache_dir.empty() ? default_cache_dir() : o.cache_dir;
   char name[160];
-  std::snprintf(name, sizeof name, "procedural-n%u-s%llu-L%u%s-v%u.lungbake", o.nodes,
+  std::snprintf(name, sizeof name, "procedural-n%u-s%llu-L%u%s-v%u-b%u.lungbake", o.nodes,
                 static_cast<unsigned long long>(o.seed), o.bands, o.transfer_rows ? "-rows" : "",
-                sim::kAssetVersion);
+                sim::kAssetVersion, sim::kBakeRevision);
   return (std::filesystem::path(dir) / name).string();
 }
 

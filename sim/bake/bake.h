@@ -16,6 +16,10 @@
 
 namespace lungar::sim {
 
+/// Bumped when a bake of the same inputs gives different output in the same file format, so that caches keyed by
+/// it (the demo's, the benchmark's) bake again. 2: points in progressive Poisson-disk order (sim/mesh/lod_order.cpp).
+inline constexpr std::uint32_t kBakeRevision = 2;
+
 /// The tidal volume at which the volume normalisation is calibrated and the report measures (the paper's).
 inline constexpr double kTidalVolumeMl = 500.0;
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "sim/deform/deform_eq1.h"
@@ -197,23 +198,29 @@ TEST(ProceduralLungs, DeterministicClosedAndSized) {
 }
 
 TEST(LodOrder, EveryPrefixCoversTheSurface) {
-  TriMesh m = procedural_lungs(3000, 1)[0].mesh;
+  TriMesh m = procedural_lungs(6000, 1)[0].mesh;
   const std::vector<std::uint32_t> order = lod_order(m.positions);
   ASSERT_EQ(order.size(), m.positions.size());
   std::vector<std::uint32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
   for (std::uint32_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i) << "a permutation";
   reorder_vertices(m, order);
-  // The first 5 % must leave no vertex far from them: within a few subsample spacings.
-  const std::size_t prefix = m.positions.size() / 20;
-  const double spacing = std::sqrt(surface_area(m) / static_cast<double>(prefix));
-  double worst = 0;
-  for (const auto& p : m.positions) {
-    double nearest = 1e300;
-    for (std::size_t j = 0; j < prefix; ++j) nearest = std::min(nearest, (p - m.positions[j]).norm());
-    worst = std::max(worst, nearest);
+  // Every prefix, from 1 % to a third, must leave no vertex farther from it than about one subsample spacing
+  // sqrt(area / prefix): the renderer draws prefixes and fills the gaps with points of a size set by that spacing.
+  // Here the order reaches 0.74 to 0.88 spacings; the grid-cell order it replaced reached 1.03 to 1.32.
+  const double area = surface_area(m);
+  for (double fraction : {0.01, 0.02, 0.035, 0.05, 0.07, 0.1, 0.14, 0.2, 0.33}) {
+    const auto prefix = static_cast<std::size_t>(fraction * static_cast<double>(m.positions.size()));
+    const double spacing = std::sqrt(area / static_cast<double>(prefix));
+    double worst = 0;
+    for (const auto& p : m.positions) {
+      double nearest = 1e300;
+      for (std::size_t j = 0; j < prefix; ++j) nearest = std::min(nearest, (p - m.positions[j]).norm());
+      worst = std::max(worst, nearest);
+    }
+    std::printf("prefix %5zu: worst gap %.2f spacings\n", prefix, worst / spacing);
+    EXPECT_LT(worst, 1.0 * spacing) << "prefix of " << prefix;
   }
-  EXPECT_LT(worst, 2.5 * spacing);
 }
 
 }  // namespace

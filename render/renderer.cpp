@@ -194,14 +194,16 @@ Status Renderer::draw(const LungDrawable& drawable, const FrameInputs& f, FrameS
                  std::span<const std::uint32_t>(counts[e].data(), f.lungs.size()), true);
     }
   }
+  if (stats != nullptr) stats->points_deformed = 0;
   Variant variant = cull ? kPlainCull : kPlainNoCull;
   GLuint vao = drawable.deformed_vao();
   if (f.source == PositionSource::Rest) vao = drawable.rest_plain_vao();
   if (f.source == PositionSource::Shader) {
-    if (f.strategy == StereoStrategy::DeformOnce) {
+    // Deform-once pays a transform-feedback pass to share the deformation between eyes; one eye has nothing to
+    // share, so it deforms in its draw.
+    if (f.strategy == StereoStrategy::DeformOnce && f.eyes.size() > 1) {
       deform_once(drawable, f.lungs, lung_counts);
       if (stats != nullptr) {
-        stats->points_deformed = 0;
         for (std::uint32_t n : lung_counts) stats->points_deformed += n;
       }
     } else {

@@ -40,7 +40,7 @@ struct FrameInputs {
   glm::mat4 model{1.f};               ///< lung frame -> world (the registration)
   DrawMode mode = DrawMode::Points;
   PositionSource source = PositionSource::Shader;
-  StereoStrategy strategy = StereoStrategy::DeformOnce;
+  StereoStrategy strategy = StereoStrategy::PerEye;  ///< for two eyes (one eye deforms in its draw); per-eye measured faster here
   bool overlay_rest = false;          ///< the rest shape in grey under the deformed lungs (the paper's Fig. 10)
   float point_size_px = 5.f;          ///< the paper: 5
   bool level_of_detail = true;        ///< draw count from the projected size (points mode)

@@ -92,6 +92,21 @@ TEST_F(RendererTest, PerEyeAndDeformOnceDrawTheSameImage) {
   EXPECT_GE(stats.points_deformed, std::max(stats.points_drawn[0], stats.points_drawn[1]));
 }
 
+TEST_F(RendererTest, OneEyeDeformsInItsDrawWhateverTheStrategy) {
+  FrameInputs f = frame_;
+  f.eyes = std::span<const EyeView>(eyes_.data(), 1);
+  f.strategy = StereoStrategy::PerEye;
+  const auto per_eye = draw(f);
+  f.strategy = StereoStrategy::DeformOnce;
+  FrameStats stats;
+  stats.points_deformed = 1;
+  const auto once = draw(f, &stats);
+  EXPECT_GT(lit_fraction(once), 0.01);
+  EXPECT_LT(differing_fraction(per_eye, once), 0.002);
+  EXPECT_EQ(stats.points_deformed, 0u) << "no transform-feedback pass for a single eye";
+  EXPECT_GT(stats.points_drawn[0], 0u);
+}
+
 TEST_F(RendererTest, CpuDeformedUploadDrawsLikeTheShader) {
   FrameInputs f = frame_;
   const auto shader = draw(f);

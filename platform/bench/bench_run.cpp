@@ -229,12 +229,20 @@ class Run {
           }
         }
       }
+      // The same frames without the deformation: what eq. (7) in the shader adds over drawing points.
+      for (bool stereo : {false, true}) {
+        FrameConfig c{Method::Rest, stereo, DrawMode::Points};
+        json j = measure(*s, c, std::string("undeformed lod ") + (stereo ? "stereo" : "mono"));
+        if (j.is_null()) return 1;
+        out_["undeformed"].push_back(j);
+      }
+      if (int rc = paired(*s)) return rc;
     }
     if (on("fig7")) {
       for (float size : o_.quick ? kQuickPointSizes : kPointSizes) {
         for (auto [m, lod] : {std::pair{Method::Gpu7, true}, std::pair{Method::Cpu7, true},
                               std::pair{Method::Gpu7, false}}) {
-          FrameConfig c{m, true, DrawMode::Points, StereoStrategy::DeformOnce, lod, size};
+          FrameConfig c{m, true, DrawMode::Points, FrameConfig{}.strategy, lod, size};
           char label[64];
           std::snprintf(label, sizeof label, "fig7 point %g %s%s", size, to_string(m), lod ? "" : " no-lod");
           json j = measure(*s, c, label);
@@ -242,6 +250,32 @@ class Run {
           out_["fig7_point_size"].push_back(j);
         }
       }
+    }
+    return 0;
+  }
+
+  /// The two ratio targets of the default frame (GPU eq. 7, stereo points, LOD, the default strategy), each from
+  /// interleaved repetitions so that a drift in the load falls on both sides: stereo over mono, and deformed over
+  /// undeformed points.
+  int paired(FrameScene& s) {
+    const FrameConfig stereo{Method::Gpu7, true, DrawMode::Points};
+    FrameConfig mono = stereo;
+    mono.stereo = false;
+    FrameConfig plain = stereo;
+    plain.method = Method::Rest;
+    const std::pair<const char*, std::pair<FrameConfig, FrameConfig>> pairs[] = {
+        {"stereo_over_mono", {mono, stereo}}, {"deformed_over_undeformed", {plain, stereo}}};
+    for (const auto& [key, ab] : pairs) {
+      auto r = s.measure_pair(ab.first, ab.second, timing_);
+      if (!r) return fail(std::string("paired ") + key + ": " + r.error());
+      char line[160];
+      std::snprintf(line, sizeof line, "paired %-26s %8.2f / %.2f ms = %.3f (median of %zu interleaved ratios)", key,
+                    r->b.median_ms, r->a.median_ms, r->ratio_median, r->ratios.size());
+      say(line);
+      out_["paired"][key] = {{"a", config_json(ab.first)},  {"b", config_json(ab.second)},
+                             {"a_ms_p50", r->a.median_ms},   {"b_ms_p50", r->b.median_ms},
+                             {"ratio_p50", r->ratio_median}, {"ratios", r->ratios},
+                             {"load_1min", load_average_1min()}};
     }
     return 0;
   }
@@ -283,7 +317,7 @@ class Run {
                             std::pair{Method::Cpu7, true}}) {
         char label[64];
         std::snprintf(label, sizeof label, "fig4 %gx %s%s", scale, to_string(m), lod ? "" : " no-lod");
-        json j = measure(*s, {m, true, DrawMode::Points, StereoStrategy::DeformOnce, lod}, label);
+        json j = measure(*s, {m, true, DrawMode::Points, FrameConfig{}.strategy, lod}, label);
         if (j.is_null()) return 1;
         j["scale"] = scale;
         j["nodes"] = a->asset.vertex_count();
@@ -350,7 +384,7 @@ class Run {
     }
   }
 
-  /// The three targets, from what was measured (absent when their section did not run).
+  /// The issues' targets, from what was measured (absent when their section did not run).
   void targets_summary() {
     json t = json::object();
     auto find = [&](const char* section, const std::function<bool(const json&)>& pred) -> const json* {
@@ -367,10 +401,28 @@ class Run {
     };
     const json* mono = find("table2", gpu_points("mono"));
     const json* stereo = find("table2", gpu_points("stereo"));
-    if (mono && stereo) {
+    const json paired = out_.value("paired", json::object());
+    if (paired.contains("stereo_over_mono")) {
+      const double r = paired["stereo_over_mono"]["ratio_p50"];
+      t["stereo_over_mono"] = {{"value", r}, {"limit_max", 1.3}, {"met", r <= 1.3},
+                               {"what", "GPU eq. (7), points, LOD on, the default strategy: stereo / mono frame "
+                                        "time, median of interleaved repetitions"}};
+    } else if (mono && stereo) {
       const double r = (*stereo)["frame_ms_p50"].get<double>() / (*mono)["frame_ms_p50"].get<double>();
       t["stereo_over_mono"] = {{"value", r}, {"limit_max", 1.3}, {"met", r <= 1.3},
-                               {"what", "GPU eq. (7), points, deform-once, LOD on: stereo / mono frame time"}};
+                               {"what", "GPU eq. (7), points, LOD on, the default strategy: stereo / mono frame time "
+                                        "(Table II's medians)"}};
+    }
+    if (paired.contains("deformed_over_undeformed")) {
+      const double r = paired["deformed_over_undeformed"]["ratio_p50"].get<double>() - 1.0;
+      t["deformation_overhead"] = {{"value", r}, {"limit_max", 0.10}, {"met", r <= 0.10},
+                                   {"what", "GPU eq. (7), stereo points, LOD on, the default strategy: frame time "
+                                            "over the undeformed points', minus 1, median of interleaved repetitions"}};
+    }
+    if (stereo && (*stereo)["frame_ms_p50"].get<double>() > 0) {
+      const double ms = (*stereo)["frame_ms_p50"];
+      t["stereo_frame_ms"] = {{"value", ms}, {"limit_max", 33.0}, {"met", ms <= 33.0},
+                              {"what", "GPU eq. (7), stereo points, LOD on, 2 x 640x720, point size 5: median ms"}};
     }
     if (out_.contains("cpu_deform")) {
       const json& c = out_["cpu_deform"];

@@ -33,6 +33,7 @@ const char* to_string(Method m) {
     case Method::Gpu7: return "gpu_eq7";
     case Method::Cpu7: return "cpu_eq7";
     case Method::Cpu1: return "cpu_eq1";
+    case Method::Rest: return "undeformed";
   }
   return "?";
 }
@@ -97,15 +98,19 @@ render::Status FrameScene::frame(const FrameConfig& config, long k, render::Fram
   breathe(k, dv, q);
   render::FrameInputs in;
   in.source = render::PositionSource::Shader;
-  if (config.method != Method::Cpu1) sim::force_sh(asset_, sim::ForceMode::exact, q, force_.data());
+  if (config.method == Method::Gpu7 || config.method == Method::Cpu7) {
+    sim::force_sh(asset_, sim::ForceMode::exact, q, force_.data());
+  }
   if (config.method == Method::Cpu7) {
     sim::deform_eq7(asset_, force_, dv, cpu_positions_);
   } else if (config.method == Method::Cpu1) {
     eq1_->deform(sim::gravity_in_lung_frame(q), dv, cpu_positions_);
   }
-  if (config.method != Method::Gpu7) {
+  if (config.method == Method::Cpu7 || config.method == Method::Cpu1) {
     if (auto up = drawable_->upload_positions(cpu_positions_); !up) return up;
     in.source = render::PositionSource::Uploaded;
+  } else if (config.method == Method::Rest) {
+    in.source = render::PositionSource::Rest;
   }
   for (std::size_t l = 0; l < lungs_.size(); ++l) {
     lungs_[l].volume_change_ml = static_cast<float>(dv * asset_.lungs[l].volume_share);
@@ -123,13 +128,16 @@ render::Status FrameScene::frame(const FrameConfig& config, long k, render::Fram
   return render::Status::ok();
 }
 
-render::Expected<FrameResult> FrameScene::measure(const FrameConfig& config, const Timing& timing) {
-  if (config.method == Method::Cpu1 && !eq1_) {
-    return render::Expected<FrameResult>::failure("CPU eq. (1) expected an asset with transfer rows, got none");
-  }
+render::Status FrameScene::fits(const FrameConfig& config) const {
+  if (config.method == Method::Cpu1 && !eq1_) return {"CPU eq. (1) expected an asset with transfer rows, got none"};
   if (config.mode == render::DrawMode::Mesh && !drawable_->has_triangles()) {
-    return render::Expected<FrameResult>::failure("mesh mode expected an asset with triangles, got none");
+    return {"mesh mode expected an asset with triangles, got none"};
   }
+  return render::Status::ok();
+}
+
+render::Expected<FrameResult> FrameScene::measure(const FrameConfig& config, const Timing& timing) {
+  if (auto st = fits(config); !st) return render::Expected<FrameResult>::failure(st.error);
   FrameResult r;
   render::FrameStats stats;
   std::string error;
@@ -144,6 +152,22 @@ render::Expected<FrameResult> FrameScene::measure(const FrameConfig& config, con
   r.points_per_eye = stats.points_drawn[0];
   r.load_1min = load_average_1min();
   return r;
+}
+
+render::Expected<PairedStats> FrameScene::measure_pair(const FrameConfig& a, const FrameConfig& b,
+                                                        const Timing& timing) {
+  if (auto st = fits(a); !st) return render::Expected<PairedStats>::failure(st.error);
+  if (auto st = fits(b); !st) return render::Expected<PairedStats>::failure(st.error);
+  std::string error;
+  auto frame_of = [&](const FrameConfig& c) {
+    return [&, c](long k) {
+      if (!error.empty()) return;
+      if (auto st = frame(c, k, nullptr); !st) error = st.error;
+    };
+  };
+  PairedStats p = time_reps_paired(timing, frame_of(a), frame_of(b));
+  if (!error.empty()) return render::Expected<PairedStats>::failure(error);
+  return p;
 }
 
 RepStats FrameScene::measure_cpu(CpuWork work, const Timing& timing) {
@@ -165,7 +189,7 @@ RepStats FrameScene::measure_cpu(CpuWork work, const Timing& timing) {
 }
 
 render::Status FrameScene::snapshot(const FrameConfig& config, const std::string& png_path) {
-  if (config.method == Method::Cpu1 && !eq1_) return {"CPU eq. (1) expected an asset with transfer rows, got none"};
+  if (auto st = fits(config); !st) return st;
   if (auto st = frame(config, 60, nullptr); !st) return st;  // frame 60: 1 s in, mid-inhalation
   const render::FrameTarget& t = config.stereo ? targets_.stereo : targets_.mono;
   return render::snapshot_png(png_path, 0, 0, t.width(), t.height());

@@ -26,15 +26,16 @@
 
 namespace lungar::platform::bench {
 
-/// Where eq. (7) or eq. (1) is evaluated (the rows of the paper's Table II).
-enum class Method { Gpu7, Cpu7, Cpu1 };
+/// Where eq. (7) or eq. (1) is evaluated (the rows of the paper's Table II), or Rest: the undeformed points, no
+/// force and no deformation, against which the deformation's cost is measured.
+enum class Method { Gpu7, Cpu7, Cpu1, Rest };
 const char* to_string(Method m);
 
 struct FrameConfig {
   Method method = Method::Gpu7;
   bool stereo = true;
   render::DrawMode mode = render::DrawMode::Points;
-  render::StereoStrategy strategy = render::StereoStrategy::DeformOnce;
+  render::StereoStrategy strategy = render::FrameInputs{}.strategy;  ///< the renderer's default
   bool lod = true;
   float point_size_px = 5.f;
 };
@@ -63,6 +64,8 @@ class FrameScene {
 
   /// Times `config` (an error when it does not fit: CPU eq. 1 without transfer rows, a mesh without triangles).
   render::Expected<FrameResult> measure(const FrameConfig& config, const Timing& timing);
+  /// Times `a` and `b` interleaved (rep_timer.h), for the ratio b / a.
+  render::Expected<PairedStats> measure_pair(const FrameConfig& a, const FrameConfig& b, const Timing& timing);
   /// Times the CPU deformation step alone.
   RepStats measure_cpu(CpuWork work, const Timing& timing);
   /// Draws one frame of `config` and writes the target to a PNG, for looking at what was timed.
@@ -72,6 +75,7 @@ class FrameScene {
 
  private:
   FrameScene(const sim::BakedAsset& asset, Targets& targets) : asset_(asset), targets_(targets) {}
+  render::Status fits(const FrameConfig& config) const;  ///< whether the asset can draw `config`
   render::Status frame(const FrameConfig& config, long k, render::FrameStats* stats);
   void breathe(long k, double& dv_ml, Eigen::Quaterniond& lung_in_world) const;
 

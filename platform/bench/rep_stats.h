@@ -12,6 +12,9 @@ struct RepStats {
   double fps() const { return median_ms > 0 ? 1000.0 / median_ms : 0.0; }
 };
 
+/// The median of `values` (the mean of the two middle ones for an even count); 0 when empty.
+double median(std::vector<double> values);
+
 /// Median (mean of the two middle values for an even count), minimum and maximum of `reps_ms`; zeros when empty.
 RepStats summarize(std::vector<double> reps_ms);
 

@@ -32,7 +32,7 @@ struct DisplaySettings {
   int height_px = 720;
   int x_px = 0;               ///< position of the window / HMD output in the X screen (extended mode)
   int y_px = 0;
-  std::string x11_output;     ///< X output name for full-screen (empty: the window's screen)
+  std::string x11_output;     ///< with Output::Fullscreen: the X output (RandR monitor) to cover; empty: x, y, size
   bool vsync = true;
 };
 

@@ -2,6 +2,8 @@
 /// @brief EGL display, config, context and surface set-up for the headless and X11 outputs.
 #include "platform/egl/egl_context.h"
 
+#include "platform/egl/x11_outputs.h"
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GLES3/gl3.h>
@@ -88,7 +90,8 @@ Result EglContext::headless() {
   return c;
 }
 
-Result EglContext::window(const WindowOptions& o) {
+Result EglContext::window(const WindowOptions& options) {
+  WindowOptions o = options;
   if (o.width_px <= 0 || o.height_px <= 0) {
     return Result::failure("window: size: expected positive width and height, got " + std::to_string(o.width_px) +
                            "x" + std::to_string(o.height_px));
@@ -101,6 +104,14 @@ Result EglContext::window(const WindowOptions& o) {
   }
   c->x_display_ = x;
   c->platform_ = "x11";
+  if (o.fullscreen && !o.output.empty()) {
+    auto area = find_x11_output(x, o.output);
+    if (!area) return Result::failure("window: " + area.error());
+    o.x_px = area->x;
+    o.y_px = area->y;
+    o.width_px = area->width;
+    o.height_px = area->height;
+  }
   EGLDisplay display = eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, x, nullptr);
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
     return Result::failure(egl_error("eglGetPlatformDisplay(X11)"));
@@ -156,6 +167,8 @@ Result EglContext::window(const WindowOptions& o) {
   XFlush(x);
   c->width_ = o.width_px;
   c->height_ = o.height_px;
+  c->x_ = o.x_px;
+  c->y_ = o.y_px;
 
   Window native = c->window_;
   c->surface_ = eglCreatePlatformWindowSurface(display, config, &native, nullptr);

@@ -15,6 +15,9 @@ struct WindowOptions {
   int x_px = 0, y_px = 0;          ///< position in the X screen (an HMD output's origin in extended mode)
   int width_px = 1280, height_px = 720;
   bool fullscreen = false;         ///< undecorated, above everything, covering x, y, width, height
+  /// With fullscreen: the X output (RandR monitor, e.g. "HDMI-1") to cover; its position and size replace x, y,
+  /// width and height. Empty: use those.
+  std::string output;
   bool vsync = true;
   std::string title = "lungar";
   std::string display_name;        ///< X display; empty: $DISPLAY
@@ -35,6 +38,8 @@ class EglContext {
   bool has_window() const { return window_ != 0; }
   int width() const { return width_; }    ///< window size (0 headless)
   int height() const { return height_; }
+  int x() const { return x_; }            ///< where the window was put in the X screen (0 headless)
+  int y() const { return y_; }
   /// Makes this context (and its window surface) current on the calling thread.
   render::Status make_current();
   /// Presents the window's back buffer; a no-op headless.
@@ -53,6 +58,7 @@ class EglContext {
   unsigned long window_ = 0;   // Window
   unsigned long wm_delete_ = 0;
   int width_ = 0, height_ = 0;
+  int x_ = 0, y_ = 0;
   bool open_ = true;
   std::string platform_;
 };

@@ -104,22 +104,26 @@ render::Expected<Output> open_output(const config::Settings& s, int want_width, 
     w.width_px = out_kind == Output::Fullscreen ? s.display.width_px : want_width;
     w.height_px = out_kind == Output::Fullscreen ? s.display.height_px : want_height;
     w.fullscreen = out_kind == Output::Fullscreen;
+    w.output = s.display.x11_output;
     w.vsync = s.display.vsync;
     auto ctx = EglContext::window(w);
+    if (!ctx && !w.output.empty() && w.fullscreen) {
+      return render::Expected<platform::Output>::failure("display.x11_output: " + ctx.error());  // the field to fix
+    }
     if (ctx) {
       out.context = ctx.take();
       out.width = out.context->width();
       out.height = out.context->height();
       return out;
     }
-    if (s.display.output != Output::Auto) return render::Expected<platform::Output>::failure(ctx.error());
+    if (s.display.output != Output::Auto) return render::Expected<platform::Output>::failure("display: " + ctx.error());
     log_line("no window (" + ctx.error() + "); running headless");
   }
   auto ctx = EglContext::headless();
-  if (!ctx) return render::Expected<platform::Output>::failure(ctx.error());
+  if (!ctx) return render::Expected<platform::Output>::failure("display: " + ctx.error());
   out.context = ctx.take();
   auto target = render::FrameTarget::create(want_width, want_height);
-  if (!target) return render::Expected<platform::Output>::failure(target.error());
+  if (!target) return render::Expected<platform::Output>::failure("display: " + target.error());
   out.target.emplace(target.take());
   out.width = want_width;
   out.height = want_height;
@@ -167,7 +171,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
   const render::StereoView stereo_view(hmd);
   auto output = open_output(s, stereo ? stereo_view.target_width() : s.hmd.eye_width_px, stereo_view.target_height());
   if (!output) {
-    log_line("error: display: " + output.error());
+    log_line("error: " + output.error());
     return 1;
   }
   log_line("output: " + output->context->describe() +

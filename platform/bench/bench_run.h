@@ -24,8 +24,8 @@ struct BenchOptions {
   std::string asset_dir = "bench-assets";
   std::string snapshot_dir;           ///< PNGs of the timed frames; empty: none
   bool rebake = false;                ///< bake every asset again even when cached (fresh bake times)
-  /// Also CPU eq. (1) with rows truncated at this fraction of T_II (denser: 0.005 keeps 257 a row at 400k,
-  /// the paper had 192); 0: not; unset: 0.005, or 0 with quick (the denser rows take minutes to bake).
+  /// Also CPU eq. (1) with rows truncated at this fraction of T_II (denser: 0.0065 keeps 191 a row at 400k,
+  /// the paper had 192); 0: not; unset: 0.0065, or 0 with quick (the denser rows take minutes to bake).
   std::optional<double> eq1_epsilon;
   bool bake_only = false;             ///< fill the asset cache (and record bake times), measure no frames
   std::set<std::string> sections;     ///< empty: all of kSections

@@ -35,9 +35,9 @@ int main(int argc, char** argv) {
   app.add_option("--snapshot-dir", o.snapshot_dir, "write PNGs of the timed stereo frames (points, mesh) here");
   app.add_flag("--rebake", o.rebake, "bake every asset again, for fresh bake times");
   app.add_option("--eq1-epsilon", o.eq1_epsilon,
-                 "also time CPU eq. (1) with transfer rows kept down to this fraction of T_II (denser rows: 0.005 "
-                 "keeps 257 a row at 400k nodes, the paper had 192; the default bake keeps 0.02); 0: skip; "
-                 "default 0.005, 0 with --quick")
+                 "also time CPU eq. (1) with transfer rows kept down to this fraction of T_II (denser rows: 0.0065 "
+                 "keeps 191 a row at 400k nodes, the paper had 192; the default bake keeps 0.02); 0: skip; "
+                 "default 0.0065, 0 with --quick")
       ->check(CLI::Range(0.0, 0.5));
   app.add_flag("--bake-only", o.bake_only, "fill the asset cache (recording bake times) and measure nothing");
   std::string all;

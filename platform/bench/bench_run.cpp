@@ -3,6 +3,7 @@
 /// assets bench_assets'; this file only decides what to measure and records it with the conditions.
 #include "platform/bench/bench_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -256,17 +257,28 @@ class Run {
 
   /// The two ratio targets of the default frame (GPU eq. 7, stereo points, LOD, the default strategy), each from
   /// interleaved repetitions so that a drift in the load falls on both sides: stereo over mono, and deformed over
-  /// undeformed points.
+  /// undeformed points; and the two stereo strategies against each other, which decides the default.
   int paired(FrameScene& s) {
     const FrameConfig stereo{Method::Gpu7, true, DrawMode::Points};
     FrameConfig mono = stereo;
     mono.stereo = false;
     FrameConfig plain = stereo;
     plain.method = Method::Rest;
+    FrameConfig plain_mono = plain;  // what a second eye costs with no deformation at all: the floor of the ratio
+    plain_mono.stereo = false;
+    FrameConfig per_eye = stereo, once = stereo;
+    per_eye.strategy = StereoStrategy::PerEye;
+    once.strategy = StereoStrategy::DeformOnce;
     const std::pair<const char*, std::pair<FrameConfig, FrameConfig>> pairs[] = {
-        {"stereo_over_mono", {mono, stereo}}, {"deformed_over_undeformed", {plain, stereo}}};
+        {"stereo_over_mono", {mono, stereo}},
+        {"deformed_over_undeformed", {plain, stereo}},
+        {"deform_once_over_per_eye", {per_eye, once}},
+        {"undeformed_stereo_over_mono", {plain_mono, plain}}};
+    // Ratios of a few percent need more repetitions than the tables' medians: at least 11 pairs.
+    Timing timing = timing_;
+    timing.reps = std::max(timing.reps, 11);
     for (const auto& [key, ab] : pairs) {
-      auto r = s.measure_pair(ab.first, ab.second, timing_);
+      auto r = s.measure_pair(ab.first, ab.second, timing);
       if (!r) return fail(std::string("paired ") + key + ": " + r.error());
       char line[160];
       std::snprintf(line, sizeof line, "paired %-26s %8.2f / %.2f ms = %.3f (median of %zu interleaved ratios)", key,

@@ -20,16 +20,23 @@ namespace {
 
 class BakedLungsTest : public test::GlTest {
  protected:
+  /// sim's procedural pair, SH fields only (no rows, no evaluation), L = 4.
+  static sim::BakedAsset bake(std::uint32_t nodes) {
+    sim::BakeOptions o;
+    o.bands = 4;
+    o.transfer_rows = false;
+    o.evaluate = false;
+    auto out = sim::bake_procedural(nodes, 1, o, nullptr);
+    EXPECT_TRUE(out.error.empty()) << out.error;
+    return out.value ? out.value->asset : sim::BakedAsset{};
+  }
   static const sim::BakedAsset& asset() {
-    static const sim::BakedAsset baked = [] {
-      sim::BakeOptions o;
-      o.bands = 4;
-      o.transfer_rows = false;
-      o.evaluate = false;
-      auto out = sim::bake_procedural(6000, 1, o, nullptr);
-      EXPECT_TRUE(out.error.empty()) << out.error;
-      return out.value ? out.value->asset : sim::BakedAsset{};
-    }();
+    static const sim::BakedAsset baked = bake(6000);
+    return baked;
+  }
+  /// Dense enough that level of detail draws a fraction of it.
+  static const sim::BakedAsset& dense_asset() {
+    static const sim::BakedAsset baked = bake(40000);
     return baked;
   }
 };
@@ -153,14 +160,7 @@ int interior_holes(const std::vector<std::uint8_t>& rgba, int w, int h, int reac
 // coverage does leave holes, so the count can fail. (The grid-cell order that sim baked before left 10 holes at
 // 450 and at 1500 mm with coverage 3, and needed 6.)
 TEST_F(BakedLungsTest, LevelOfDetailOfTheBakeOrderLeavesNoHoles) {
-  static const sim::BakedAsset a = [] {
-    sim::BakeOptions o;
-    o.transfer_rows = false;
-    o.evaluate = false;
-    auto out = sim::bake_procedural(40000, 1, o, nullptr);
-    EXPECT_TRUE(out.error.empty()) << out.error;
-    return out.value ? out.value->asset : sim::BakedAsset{};
-  }();
+  const sim::BakedAsset& a = dense_asset();
   ASSERT_GT(a.vertex_count(), 0u);
   auto drawable = LungDrawable::create(a);
   ASSERT_TRUE(drawable) << drawable.error();

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 #include <random>
 
 #include "render/frame_target.h"
@@ -39,15 +40,25 @@ class BakedLungsTest : public test::GlTest {
     static const sim::BakedAsset baked = bake(40000);
     return baked;
   }
+  /// `a` on the GPU: drawable_ and renderer_ (use with ASSERT_NO_FATAL_FAILURE).
+  void upload(const sim::BakedAsset& a) {
+    ASSERT_GT(a.vertex_count(), 0u);
+    auto drawable = LungDrawable::create(a);
+    ASSERT_TRUE(drawable) << drawable.error();
+    drawable_.emplace(drawable.take());
+    auto renderer = Renderer::create(*drawable_);
+    ASSERT_TRUE(renderer) << renderer.error();
+    renderer_.emplace(renderer.take());
+  }
+  std::optional<LungDrawable> drawable_;
+  std::optional<Renderer> renderer_;
 };
 
 TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
   const sim::BakedAsset& a = asset();
-  ASSERT_GT(a.vertex_count(), 0u);
-  auto drawable = LungDrawable::create(a);
-  ASSERT_TRUE(drawable) << drawable.error();
-  auto renderer = Renderer::create(*drawable);
-  ASSERT_TRUE(renderer) << renderer.error();
+  ASSERT_NO_FATAL_FAILURE(upload(a));
+  LungDrawable* drawable = &*drawable_;
+  Renderer* renderer = &*renderer_;
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
   for (std::uint32_t seed : {1u, 2u, 3u}) {
@@ -80,11 +91,9 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
 
 TEST_F(BakedLungsTest, UprightSilhouetteGrowsMostAtTheBase) {
   const sim::BakedAsset& a = asset();
-  ASSERT_GT(a.vertex_count(), 0u);
-  auto drawable = LungDrawable::create(a);
-  ASSERT_TRUE(drawable) << drawable.error();
-  auto renderer = Renderer::create(*drawable);
-  ASSERT_TRUE(renderer) << renderer.error();
+  ASSERT_NO_FATAL_FAILURE(upload(a));
+  LungDrawable* drawable = &*drawable_;
+  Renderer* renderer = &*renderer_;
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
   sim::force_sh(a, sim::ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());  // upright
@@ -161,11 +170,9 @@ int interior_holes(const std::vector<std::uint8_t>& rgba, int w, int h, int reac
 // 450 and at 1500 mm with coverage 3, and needed 6.)
 TEST_F(BakedLungsTest, LevelOfDetailOfTheBakeOrderLeavesNoHoles) {
   const sim::BakedAsset& a = dense_asset();
-  ASSERT_GT(a.vertex_count(), 0u);
-  auto drawable = LungDrawable::create(a);
-  ASSERT_TRUE(drawable) << drawable.error();
-  auto renderer = Renderer::create(*drawable);
-  ASSERT_TRUE(renderer) << renderer.error();
+  ASSERT_NO_FATAL_FAILURE(upload(a));
+  LungDrawable* drawable = &*drawable_;
+  Renderer* renderer = &*renderer_;
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc, 0.f);
   std::vector<LungFrame> lungs;

@@ -1,0 +1,91 @@
+/// @file atomic_file.h
+/// @brief The one way lungar writes an output file (asset, report, stats, PNG, registration, .trk cut): whole or
+/// not at all. Everything goes to "<path>.partial" beside it, is flushed to disk, and is renamed into place on
+/// commit(); a failure or a destructor before commit() removes the partial file, so nothing half-written is ever
+/// left under the final name or beside it.
+/// @ingroup base
+#pragma once
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <unistd.h>
+
+#include "config/base/result.h"
+
+namespace lungar {
+
+class AtomicFile {
+ public:
+  AtomicFile() = default;
+  ~AtomicFile() { abandon(); }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// Creates the parent folder if needed and opens "<path>.partial" for writing.
+  Status open(const std::string& path) {
+    abandon();
+    path_ = path;
+    partial_ = path + ".partial";
+    const std::filesystem::path p(path);
+    std::error_code ec;
+    if (p.has_parent_path() && !std::filesystem::exists(p.parent_path(), ec)) {
+      std::filesystem::create_directories(p.parent_path(), ec);
+      if (ec) return fail(path + ": cannot create its folder: " + ec.message());
+    }
+    file_ = std::fopen(partial_.c_str(), "wb");
+    if (file_ == nullptr) return fail(path + ": cannot open for writing: " + std::strerror(errno));
+    return ok();
+  }
+  /// The open stream, for writers that take a FILE* (libpng).
+  std::FILE* stream() const { return file_; }
+  const std::string& path() const { return path_; }
+  /// Appends bytes; a failure is reported by commit().
+  void write(const void* data, std::size_t size) {
+    if (file_ != nullptr && size > 0 && std::fwrite(data, 1, size, file_) != size) write_failed_ = true;
+  }
+  void write(std::string_view text) { write(text.data(), text.size()); }
+  /// Flushes, syncs and renames into place.
+  Status commit() {
+    if (file_ == nullptr) return fail(path_ + ": not open for writing");
+    const bool flushed = !write_failed_ && std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+    const int saved_errno = errno;
+    const bool closed = std::fclose(file_) == 0;
+    file_ = nullptr;
+    if (!flushed || !closed) {
+      std::remove(partial_.c_str());
+      return fail(path_ + ": write failed (" + std::strerror(saved_errno) + "); nothing was written under this name");
+    }
+    if (std::rename(partial_.c_str(), path_.c_str()) != 0) {
+      const std::string why = std::strerror(errno);
+      std::remove(partial_.c_str());
+      return fail(path_ + ": cannot rename the finished file into place: " + why);
+    }
+    return ok();
+  }
+  /// Drops what was written (also done by the destructor).
+  void abandon() {
+    if (file_ == nullptr) return;
+    std::fclose(file_);
+    file_ = nullptr;
+    std::remove(partial_.c_str());
+  }
+
+ private:
+  std::FILE* file_ = nullptr;
+  bool write_failed_ = false;
+  std::string path_, partial_;
+};
+
+/// Writes `bytes` to `path` whole or not at all.
+inline Status write_file_atomically(const std::string& path, std::string_view bytes) {
+  AtomicFile file;
+  if (Status opened = file.open(path); !opened) return opened;
+  file.write(bytes);
+  return file.commit();
+}
+
+}  // namespace lungar

@@ -7,11 +7,11 @@
 
 namespace lungar::render {
 
-Expected<FrameTarget> FrameTarget::create(int width_px, int height_px) {
+Result<FrameTarget> FrameTarget::create(int width_px, int height_px) {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   if (width_px <= 0 || height_px <= 0 || width_px > max_size || height_px > max_size) {
-    return Expected<FrameTarget>::failure("frame target: size: expected 1.." + std::to_string(max_size) +
+    return fail("frame target: size: expected 1.." + std::to_string(max_size) +
                                           " pixels a side, got " + std::to_string(width_px) + "x" +
                                           std::to_string(height_px));
   }
@@ -36,7 +36,7 @@ Expected<FrameTarget> FrameTarget::create(int width_px, int height_px) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.id());
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    return Expected<FrameTarget>::failure("frame target: framebuffer incomplete (status " + std::to_string(status) + ")");
+    return fail("frame target: framebuffer incomplete (status " + std::to_string(status) + ")");
   }
   glViewport(0, 0, width_px, height_px);
   return t;

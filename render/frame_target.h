@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 #include "render/gl_objects.h"
 
 namespace lungar::render {
@@ -14,7 +14,7 @@ namespace lungar::render {
 class FrameTarget {
  public:
   /// Needs a current GLES 3 context; fails when the framebuffer is incomplete.
-  static Expected<FrameTarget> create(int width_px, int height_px);
+  static Result<FrameTarget> create(int width_px, int height_px);
 
   void bind() const;  ///< as the draw and read framebuffer, viewport on the whole target
   int width() const { return width_; }

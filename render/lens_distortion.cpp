@@ -16,13 +16,13 @@ std::array<float, 2> lens_centre(const HmdGeometry& hmd, bool left) {
   return {static_cast<float>(x), static_cast<float>(down / (up + down))};
 }
 
-Expected<LensDistortion> LensDistortion::create() {
+Result<LensDistortion> LensDistortion::create() {
   ProgramSource src;
   src.name = "lens.vert+lens.frag";
   src.vertex = shaders::lens_vert;
   src.fragment = shaders::lens_frag;
   auto program = build_program(src);
-  if (!program) return Expected<LensDistortion>::failure(program.error());
+  if (!program) return fail(program.error());
   LensDistortion d;
   d.program_ = program.take();
   d.empty_vao_ = gl::VertexArray::create();
@@ -38,8 +38,8 @@ Expected<LensDistortion> LensDistortion::create() {
 Status LensDistortion::apply(const FrameTarget& source, std::span<const EyeView> eyes,
                              std::span<const std::array<float, 2>> centres, const LensParams& p) const {
   if (eyes.size() != centres.size() || eyes.empty()) {
-    return {"lens distortion: centres: expected one per eye (" + std::to_string(eyes.size()) + "), got " +
-            std::to_string(centres.size())};
+    return fail("lens distortion: centres: expected one per eye (" + std::to_string(eyes.size()) + "), got " +
+            std::to_string(centres.size()));
   }
   glDisable(GL_DEPTH_TEST);
   glUseProgram(program_.id());
@@ -61,7 +61,7 @@ Status LensDistortion::apply(const FrameTarget& source, std::span<const EyeView>
   }
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);
-  return Status::ok();
+  return ok();
 }
 
 }  // namespace lungar::render

@@ -6,7 +6,7 @@
 #include <array>
 #include <span>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 #include "render/frame_target.h"
 #include "render/gl_objects.h"
 #include "render/stereo_view.h"
@@ -24,7 +24,7 @@ std::array<float, 2> lens_centre(const HmdGeometry& hmd, bool left);
 
 class LensDistortion {
  public:
-  static Expected<LensDistortion> create();
+  static Result<LensDistortion> create();
   /// Draws `eyes` (viewports of `source`, the same viewports in the bound framebuffer) distorted; `centres` holds
   /// one lens centre per eye.
   Status apply(const FrameTarget& source, std::span<const EyeView> eyes, std::span<const std::array<float, 2>> centres,

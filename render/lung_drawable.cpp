@@ -81,8 +81,8 @@ void upload(gl::Buffer& buffer, GLenum target, const void* data, std::size_t byt
 
 }  // namespace
 
-Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const DrawableOptions& options) {
-  if (std::string error = validate(asset, options); !error.empty()) return Expected<LungDrawable>::failure(error);
+Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const DrawableOptions& options) {
+  if (std::string error = validate(asset, options); !error.empty()) return fail(error);
   LungDrawable d;
   const std::uint32_t n = asset.vertex_count();
   d.vertex_count_ = n;
@@ -93,7 +93,7 @@ Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const 
   d.uses_texture_ = options.storage == CoeffStorage::Texture ||
                     (options.storage == CoeffStorage::Auto && d.coefficients_ > kMaxAttributeCoefficients);
   if (options.storage == CoeffStorage::Attributes && d.coefficients_ > kMaxAttributeCoefficients) {
-    return Expected<LungDrawable>::failure("drawable options: field 'storage': attributes hold at most " +
+    return fail("drawable options: field 'storage': attributes hold at most " +
                                            std::to_string(kMaxAttributeCoefficients) + " coefficients, the asset has " +
                                            std::to_string(d.coefficients_));
   }
@@ -133,7 +133,7 @@ Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const 
     const GLint width = std::min<GLint>(max_size, 4096);
     const std::size_t height = (texels + width - 1) / static_cast<std::size_t>(width);
     if (height > static_cast<std::size_t>(max_size)) {
-      return Expected<LungDrawable>::failure("baked asset: field 'sh_coeffs': " + std::to_string(texels) +
+      return fail("baked asset: field 'sh_coeffs': " + std::to_string(texels) +
                                              " texels exceed the GL texture limit of " + std::to_string(max_size) + "^2");
     }
     // The texture's last row is partial: pad the upload to whole rows.
@@ -200,20 +200,20 @@ Expected<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const 
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     char text[64];
     std::snprintf(text, sizeof text, "baked asset upload: GL error 0x%04x", err);
-    return Expected<LungDrawable>::failure(text);
+    return fail(text);
   }
   return d;
 }
 
 Status LungDrawable::upload_positions(std::span<const float> xyz) {
   if (xyz.size() != std::size_t{vertex_count_} * 3) {
-    return {"upload_positions: expected " + std::to_string(std::size_t{vertex_count_} * 3) + " floats, got " +
-            std::to_string(xyz.size())};
+    return fail("upload_positions: expected " + std::to_string(std::size_t{vertex_count_} * 3) + " floats, got " +
+                std::to_string(xyz.size()));
   }
   glBindBuffer(GL_ARRAY_BUFFER, deformed_.id());
   glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(xyz.size_bytes()), xyz.data());
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  return Status::ok();
+  return ok();
 }
 
 }  // namespace lungar::render

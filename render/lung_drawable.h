@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 #include "render/gl_objects.h"
 #include "sim/asset/baked_asset.h"
 
@@ -44,7 +44,7 @@ inline constexpr std::uint32_t kMaxAttributeCoefficients = 36;
 class LungDrawable {
  public:
   /// Validates the asset (array sizes, lung ranges, indices) and uploads it; needs a current GLES 3 context.
-  static Expected<LungDrawable> create(const sim::BakedAsset& asset, const DrawableOptions& options = {});
+  static Result<LungDrawable> create(const sim::BakedAsset& asset, const DrawableOptions& options = {});
 
   std::uint32_t vertex_count() const { return vertex_count_; }
   std::uint32_t coefficients() const { return coefficients_; }  ///< per vertex: L^2, or 4 for the linear basis

@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 
 namespace lungar::render {
 

@@ -14,7 +14,7 @@
 
 namespace lungar::render {
 
-Expected<Renderer> Renderer::create(const LungDrawable& drawable) {
+Result<Renderer> Renderer::create(const LungDrawable& drawable) {
   Renderer r;
   r.coeff_vec4_ = drawable.coeff_vec4();
   r.coefficients_ = drawable.coefficients();
@@ -39,7 +39,7 @@ Expected<Renderer> Renderer::create(const LungDrawable& drawable) {
                   (specs[v].cull ? "1" : "0") + "\n";
     if (specs[v].capture) src.captured = {"v_position"};
     auto program = build_program(src);
-    if (!program) return Expected<Renderer>::failure(program.error());
+    if (!program) return fail(program.error());
     Slots& s = r.slots_[v];
     s.program = program.take();
     s.force = s.program.uniform("u_force");
@@ -70,19 +70,19 @@ Expected<Renderer> Renderer::create(const LungDrawable& drawable) {
 
 Status Renderer::check(const LungDrawable& drawable, std::span<const LungFrame> lungs, bool needs_force) const {
   if (drawable.coeff_vec4() != coeff_vec4_ || drawable.coefficients() != coefficients_) {
-    return {"renderer: drawable: expected the coefficient layout the renderer was created for"};
+    return fail("renderer: drawable: expected the coefficient layout the renderer was created for");
   }
   if (lungs.size() != drawable.lungs().size() || lungs.size() > kMaxLungs) {
-    return {"renderer: frame lungs: expected " + std::to_string(drawable.lungs().size()) + " (at most " +
-            std::to_string(kMaxLungs) + "), got " + std::to_string(lungs.size())};
+    return fail("renderer: frame lungs: expected " + std::to_string(drawable.lungs().size()) + " (at most " +
+            std::to_string(kMaxLungs) + "), got " + std::to_string(lungs.size()));
   }
   for (std::size_t i = 0; needs_force && i < lungs.size(); ++i) {
     if (lungs[i].force.size() != coefficients_) {
-      return {"renderer: frame lungs[" + std::to_string(i) + "].force: expected " + std::to_string(coefficients_) +
-              " coefficients, got " + std::to_string(lungs[i].force.size())};
+      return fail("renderer: frame lungs[" + std::to_string(i) + "].force: expected " + std::to_string(coefficients_) +
+              " coefficients, got " + std::to_string(lungs[i].force.size()));
     }
   }
-  return Status::ok();
+  return ok();
 }
 
 void Renderer::use(const LungDrawable& drawable, Variant v) const {
@@ -155,10 +155,10 @@ void Renderer::draw_lungs(const LungDrawable& drawable, Variant v, GLuint vao, c
 Status Renderer::draw(const LungDrawable& drawable, const FrameInputs& f, FrameStats* stats) {
   if (Status s = check(drawable, f.lungs, f.source == PositionSource::Shader); !s) return s;
   if (f.eyes.empty() || f.eyes.size() > 2) {
-    return {"renderer: frame eyes: expected 1 or 2, got " + std::to_string(f.eyes.size())};
+    return fail("renderer: frame eyes: expected 1 or 2, got " + std::to_string(f.eyes.size()));
   }
   if (f.mode == DrawMode::Mesh && !drawable.has_triangles()) {
-    return {"renderer: mode 'mesh': the asset has no triangles"};
+    return fail("renderer: mode 'mesh': the asset has no triangles");
   }
   if (f.clear) {
     glDisable(GL_SCISSOR_TEST);
@@ -220,7 +220,7 @@ Status Renderer::draw(const LungDrawable& drawable, const FrameInputs& f, FrameS
     }
   }
   glBindVertexArray(0);
-  return Status::ok();
+  return ok();
 }
 
 Status Renderer::capture_deformed(const LungDrawable& drawable, std::span<const LungFrame> lungs,
@@ -241,15 +241,15 @@ Status Renderer::capture_deformed(const LungDrawable& drawable, std::span<const 
   const void* mapped = glMapBufferRange(GL_COPY_READ_BUFFER, 0, static_cast<GLsizeiptr>(bytes), GL_MAP_READ_BIT);
   if (mapped == nullptr) {
     glBindBuffer(GL_COPY_READ_BUFFER, 0);
-    return {"renderer: capture: could not map the deformed buffer (GL error " + std::to_string(glGetError()) + ")"};
+    return fail("renderer: capture: could not map the deformed buffer (GL error " + std::to_string(glGetError()) + ")");
   }
   std::copy_n(static_cast<const float*>(mapped), xyz.size(), xyz.begin());
   glUnmapBuffer(GL_COPY_READ_BUFFER);
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
-    return {"renderer: capture: GL error " + std::to_string(err)};
+    return fail("renderer: capture: GL error " + std::to_string(err));
   }
-  return Status::ok();
+  return ok();
 }
 
 }  // namespace lungar::render

@@ -12,7 +12,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 #include "render/frame_target.h"
 #include "render/lung_drawable.h"
 #include "render/stereo_view.h"
@@ -63,7 +63,7 @@ inline constexpr std::size_t kMaxLungs = 8;
 class Renderer {
  public:
   /// Builds the programs for the drawable's coefficient layout (count, attributes or texture).
-  static Expected<Renderer> create(const LungDrawable& drawable);
+  static Result<Renderer> create(const LungDrawable& drawable);
 
   /// Draws into the bound framebuffer. Allocates nothing; returns an error for inputs that do not fit the drawable.
   Status draw(const LungDrawable& drawable, const FrameInputs& frame, FrameStats* stats = nullptr);

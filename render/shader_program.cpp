@@ -34,15 +34,15 @@ GLuint compile(GLenum stage, const std::string& text, const std::string& what, s
 
 }  // namespace
 
-Expected<gl::Program> build_program(const ProgramSource& source) {
+Result<gl::Program> build_program(const ProgramSource& source) {
   const std::string head = "#version 300 es\n" + source.defines + "#line 1\n";
   std::string error;
   GLuint vs = compile(GL_VERTEX_SHADER, head + source.vertex, source.name + " (vertex)", error);
-  if (vs == 0) return Expected<gl::Program>::failure(error);
+  if (vs == 0) return fail(error);
   GLuint fs = compile(GL_FRAGMENT_SHADER, head + source.fragment, source.name + " (fragment)", error);
   if (fs == 0) {
     glDeleteShader(vs);
-    return Expected<gl::Program>::failure(error);
+    return fail(error);
   }
   gl::Program program(glCreateProgram());
   glAttachShader(program.id(), vs);
@@ -56,7 +56,7 @@ Expected<gl::Program> build_program(const ProgramSource& source) {
   glDeleteShader(fs);
   GLint ok = GL_FALSE;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) return Expected<gl::Program>::failure(source.name + ": link failed: " + info_log(program.id(), true));
+  if (ok != GL_TRUE) return fail(source.name + ": link failed: " + info_log(program.id(), true));
   return program;
 }
 

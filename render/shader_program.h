@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 #include "render/gl_objects.h"
 
 namespace lungar::render {
@@ -19,6 +19,6 @@ struct ProgramSource {
 };
 
 /// Compiles both stages and links them; the error names the program, the stage and quotes the GL log.
-Expected<gl::Program> build_program(const ProgramSource& source);
+Result<gl::Program> build_program(const ProgramSource& source);
 
 }  // namespace lungar::render

@@ -61,7 +61,7 @@ BakeRecord read_record(const AssetKey& key, const std::string& path) {
 
 }  // namespace
 
-sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& dir, bool rebake,
+Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& dir, bool rebake,
                                       const std::function<void(const std::string&)>& log) {
   const std::string path = asset_path(key, dir);
   const std::string record_path = path + ".bake.json";
@@ -71,9 +71,9 @@ sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& di
     if (loaded) {
       CachedAsset out{std::move(*loaded), read_record(key, record_path)};
       out.record.vertices = out.asset.vertex_count();
-      return sim::Result<CachedAsset>::ok(std::move(out));
+      return out;
     }
-    log("cached asset unusable (" + loaded.error + "); baking it again");
+    log("cached asset unusable (" + loaded.error() + "); baking it again");
   }
   log("baking " + std::to_string(key.nodes) + " nodes, " + std::to_string(key.bands) + " bands" +
       (key.transfer_rows ? ", with transfer rows" : "") +
@@ -90,7 +90,7 @@ sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& di
       log("  bake: " + last_stage);
     }
   });
-  if (!baked) return sim::Result<CachedAsset>::fail("bake of " + path + ": " + baked.error);
+  if (!baked) return fail("bake of " + path + ": " + baked.error());
   BakeRecord r;
   r.key = key;
   r.vertices = baked->asset.vertex_count();
@@ -105,11 +105,11 @@ sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& di
   r.baked_at_utc = utc_now();
   std::filesystem::create_directories(dir, ec);
   if (auto written = sim::write_asset(baked->asset, path); !written) {
-    log("could not cache the asset (" + written.error + "); going on without the cache");
+    log("could not cache the asset (" + written.error() + "); going on without the cache");
   } else {
     std::ofstream(record_path) << record_json(r).dump(2) << "\n";
   }
-  return sim::Result<CachedAsset>::ok(CachedAsset{std::move(baked->asset), r});
+  return CachedAsset{std::move(baked->asset), r};
 }
 
 }  // namespace lungar::platform::bench

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "sim/asset/baked_asset.h"
-#include "sim/core/result.h"
+#include "config/base/result.h"
 
 namespace lungar::platform::bench {
 
@@ -41,7 +41,7 @@ struct CachedAsset {
 
 /// `dir`/procedural-n<N>-L<B>[-rows].lungbake: loaded when present and sound (and `rebake` false), else baked
 /// (seed 1, evaluate off) and written there. `log` gets progress lines.
-sim::Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& dir, bool rebake,
+Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& dir, bool rebake,
                                       const std::function<void(const std::string&)>& log);
 
 }  // namespace lungar::platform::bench

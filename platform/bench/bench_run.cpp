@@ -136,7 +136,7 @@ class Run {
   std::unique_ptr<CachedAsset> asset(const AssetKey& key) {
     auto got = load_or_bake(key, o_.asset_dir, o_.rebake && !baked_.count(key_text(key)), say);
     if (!got) {
-      fail(got.error);
+      fail(got.error());
       return nullptr;
     }
     if (baked_.insert(key_text(key)).second) out_["bake"].push_back(bake_json(got->record));
@@ -392,7 +392,7 @@ class Run {
     for (DrawMode mode : {DrawMode::Points, DrawMode::Mesh}) {
       const std::string path = o_.snapshot_dir + "/bench-frame-" + (mode == DrawMode::Mesh ? "mesh" : "points") +
                                ".png";
-      if (auto st = s.snapshot({Method::Gpu7, true, mode}, path); !st) say("snapshot: " + st.error);
+      if (auto st = s.snapshot({Method::Gpu7, true, mode}, path); !st) say("snapshot: " + st.error());
     }
   }
 

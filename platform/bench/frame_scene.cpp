@@ -38,23 +38,23 @@ const char* to_string(Method m) {
   return "?";
 }
 
-render::Expected<Targets> Targets::create(int eye_width_px, int eye_height_px) {
+Result<Targets> Targets::create(int eye_width_px, int eye_height_px) {
   auto mono = render::FrameTarget::create(eye_width_px, eye_height_px);
-  if (!mono) return render::Expected<Targets>::failure("mono target: " + mono.error());
+  if (!mono) return fail("mono target: " + mono.error());
   auto stereo = render::FrameTarget::create(2 * eye_width_px, eye_height_px);
-  if (!stereo) return render::Expected<Targets>::failure("stereo target: " + stereo.error());
+  if (!stereo) return fail("stereo target: " + stereo.error());
   return Targets{mono.take(), stereo.take()};
 }
 
-render::Expected<std::unique_ptr<FrameScene>> FrameScene::create(const sim::BakedAsset& asset, Targets& targets,
+Result<std::unique_ptr<FrameScene>> FrameScene::create(const sim::BakedAsset& asset, Targets& targets,
                                                                   const render::DrawableOptions& options) {
-  using Out = render::Expected<std::unique_ptr<FrameScene>>;
+  using Out = Result<std::unique_ptr<FrameScene>>;
   std::unique_ptr<FrameScene> s(new FrameScene(asset, targets));
   auto drawable = render::LungDrawable::create(asset, options);
-  if (!drawable) return Out::failure("asset: " + drawable.error());
+  if (!drawable) return fail("asset: " + drawable.error());
   s->drawable_.emplace(drawable.take());
   auto renderer = render::Renderer::create(*s->drawable_);
-  if (!renderer) return Out::failure("renderer: " + renderer.error());
+  if (!renderer) return fail("renderer: " + renderer.error());
   s->renderer_.emplace(renderer.take());
   if (asset.has_transfer_rows()) s->eq1_.emplace(asset);
 
@@ -92,7 +92,7 @@ void FrameScene::breathe(long k, double& dv_ml, Eigen::Quaterniond& lung_in_worl
   lung_in_world = Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX()));
 }
 
-render::Status FrameScene::frame(const FrameConfig& config, long k, render::FrameStats* stats) {
+Status FrameScene::frame(const FrameConfig& config, long k, render::FrameStats* stats) {
   double dv = 0;
   Eigen::Quaterniond q;
   breathe(k, dv, q);
@@ -125,19 +125,19 @@ render::Status FrameScene::frame(const FrameConfig& config, long k, render::Fram
   (config.stereo ? targets_.stereo : targets_.mono).bind();
   if (auto drawn = renderer_->draw(*drawable_, in, stats); !drawn) return drawn;
   glFinish();  // the frame is done when the pixels are, as in the headless runtime
-  return render::Status::ok();
+  return ok();
 }
 
-render::Status FrameScene::fits(const FrameConfig& config) const {
-  if (config.method == Method::Cpu1 && !eq1_) return {"CPU eq. (1) expected an asset with transfer rows, got none"};
+Status FrameScene::fits(const FrameConfig& config) const {
+  if (config.method == Method::Cpu1 && !eq1_) return fail("CPU eq. (1) expected an asset with transfer rows, got none");
   if (config.mode == render::DrawMode::Mesh && !drawable_->has_triangles()) {
-    return {"mesh mode expected an asset with triangles, got none"};
+    return fail("mesh mode expected an asset with triangles, got none");
   }
-  return render::Status::ok();
+  return ok();
 }
 
-render::Expected<FrameResult> FrameScene::measure(const FrameConfig& config, const Timing& timing) {
-  if (auto st = fits(config); !st) return render::Expected<FrameResult>::failure(st.error);
+Result<FrameResult> FrameScene::measure(const FrameConfig& config, const Timing& timing) {
+  if (auto st = fits(config); !st) return fail(st.error());
   FrameResult r;
   render::FrameStats stats;
   std::string error;
@@ -145,28 +145,28 @@ render::Expected<FrameResult> FrameScene::measure(const FrameConfig& config, con
       timing,
       [&](long k) {
         if (!error.empty()) return;  // an error stops the work; the timing is thrown away below
-        if (auto st = frame(config, k, &stats); !st) error = st.error;
+        if (auto st = frame(config, k, &stats); !st) error = st.error();
       },
       &r.frames);
-  if (!error.empty()) return render::Expected<FrameResult>::failure(error);
+  if (!error.empty()) return fail(error);
   r.points_per_eye = stats.points_drawn[0];
   r.load_1min = load_average_1min();
   return r;
 }
 
-render::Expected<PairedStats> FrameScene::measure_pair(const FrameConfig& a, const FrameConfig& b,
+Result<PairedStats> FrameScene::measure_pair(const FrameConfig& a, const FrameConfig& b,
                                                         const Timing& timing) {
-  if (auto st = fits(a); !st) return render::Expected<PairedStats>::failure(st.error);
-  if (auto st = fits(b); !st) return render::Expected<PairedStats>::failure(st.error);
+  if (auto st = fits(a); !st) return fail(st.error());
+  if (auto st = fits(b); !st) return fail(st.error());
   std::string error;
   auto frame_of = [&](const FrameConfig& c) {
     return [&, c](long k) {
       if (!error.empty()) return;
-      if (auto st = frame(c, k, nullptr); !st) error = st.error;
+      if (auto st = frame(c, k, nullptr); !st) error = st.error();
     };
   };
   PairedStats p = time_reps_paired(timing, frame_of(a), frame_of(b));
-  if (!error.empty()) return render::Expected<PairedStats>::failure(error);
+  if (!error.empty()) return fail(error);
   return p;
 }
 
@@ -188,7 +188,7 @@ RepStats FrameScene::measure_cpu(CpuWork work, const Timing& timing) {
   });
 }
 
-render::Status FrameScene::snapshot(const FrameConfig& config, const std::string& png_path) {
+Status FrameScene::snapshot(const FrameConfig& config, const std::string& png_path) {
   if (auto st = fits(config); !st) return st;
   if (auto st = frame(config, 60, nullptr); !st) return st;  // frame 60: 1 s in, mid-inhalation
   const render::FrameTarget& t = config.stereo ? targets_.stereo : targets_.mono;

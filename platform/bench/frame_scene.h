@@ -53,30 +53,30 @@ enum class CpuWork { ForceSh, Eq7, Eq1 };
 /// The two off-screen targets; one per process (creating GL targets per asset would only add noise).
 struct Targets {
   render::FrameTarget mono, stereo;
-  static render::Expected<Targets> create(int eye_width_px, int eye_height_px);
+  static Result<Targets> create(int eye_width_px, int eye_height_px);
 };
 
 class FrameScene {
  public:
   /// Uploads `asset` (which must outlive the scene) with `options`; needs a current GLES 3 context.
-  static render::Expected<std::unique_ptr<FrameScene>> create(const sim::BakedAsset& asset, Targets& targets,
+  static Result<std::unique_ptr<FrameScene>> create(const sim::BakedAsset& asset, Targets& targets,
                                                               const render::DrawableOptions& options = {});
 
   /// Times `config` (an error when it does not fit: CPU eq. 1 without transfer rows, a mesh without triangles).
-  render::Expected<FrameResult> measure(const FrameConfig& config, const Timing& timing);
+  Result<FrameResult> measure(const FrameConfig& config, const Timing& timing);
   /// Times `a` and `b` interleaved (rep_timer.h), for the ratio b / a.
-  render::Expected<PairedStats> measure_pair(const FrameConfig& a, const FrameConfig& b, const Timing& timing);
+  Result<PairedStats> measure_pair(const FrameConfig& a, const FrameConfig& b, const Timing& timing);
   /// Times the CPU deformation step alone.
   RepStats measure_cpu(CpuWork work, const Timing& timing);
   /// Draws one frame of `config` and writes the target to a PNG, for looking at what was timed.
-  render::Status snapshot(const FrameConfig& config, const std::string& png_path);
+  Status snapshot(const FrameConfig& config, const std::string& png_path);
 
   const render::LungDrawable& drawable() const { return *drawable_; }
 
  private:
   FrameScene(const sim::BakedAsset& asset, Targets& targets) : asset_(asset), targets_(targets) {}
-  render::Status fits(const FrameConfig& config) const;  ///< whether the asset can draw `config`
-  render::Status frame(const FrameConfig& config, long k, render::FrameStats* stats);
+  Status fits(const FrameConfig& config) const;  ///< whether the asset can draw `config`
+  Status frame(const FrameConfig& config, long k, render::FrameStats* stats);
   void breathe(long k, double& dv_ml, Eigen::Quaterniond& lung_in_world) const;
 
   const sim::BakedAsset& asset_;

@@ -10,7 +10,7 @@
 #include <X11/Xatom.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
-// Xlib defines Status (and more) as macros; render::Status is meant below.
+// Xlib defines Status (and more) as macros; Status is meant below.
 #undef Status
 
 #include <cstdio>
@@ -18,7 +18,7 @@
 namespace lungar::platform {
 namespace {
 
-using Result = render::Expected<std::unique_ptr<EglContext>>;
+using Result = Result<std::unique_ptr<EglContext>>;
 
 std::string egl_error(const char* what) {
   char text[128];
@@ -68,24 +68,24 @@ Result EglContext::headless() {
   std::unique_ptr<EglContext> c(new EglContext());
   EGLDisplay display = headless_display(c->platform_);
   if (display == EGL_NO_DISPLAY) {
-    return Result::failure("EGL: headless display: expected EGL_MESA_platform_surfaceless or EGL_EXT_platform_device");
+    return fail("EGL: headless display: expected EGL_MESA_platform_surfaceless or EGL_EXT_platform_device");
   }
   c->display_ = display;
   if (!has_extension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
-    return Result::failure("EGL: headless display: expected EGL_KHR_surfaceless_context");
+    return fail("EGL: headless display: expected EGL_KHR_surfaceless_context");
   }
-  if (!eglBindAPI(EGL_OPENGL_ES_API)) return Result::failure(egl_error("eglBindAPI(OpenGL ES)"));
+  if (!eglBindAPI(EGL_OPENGL_ES_API)) return fail(egl_error("eglBindAPI(OpenGL ES)"));
   // EGL_SURFACE_TYPE defaults to EGL_WINDOW_BIT, which a surfaceless display has none of: ask for any.
   const EGLint wanted[] = {EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (!eglChooseConfig(display, wanted, &config, 1, &configs) || configs < 1) {
-    return Result::failure(egl_error("eglChooseConfig(OpenGL ES 3)"));
+    return fail(egl_error("eglChooseConfig(OpenGL ES 3)"));
   }
   c->context_ = create_es3_context(display, config);
-  if (c->context_ == EGL_NO_CONTEXT) return Result::failure(egl_error("eglCreateContext(OpenGL ES 3.0)"));
+  if (c->context_ == EGL_NO_CONTEXT) return fail(egl_error("eglCreateContext(OpenGL ES 3.0)"));
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context_)) {
-    return Result::failure(egl_error("eglMakeCurrent(surfaceless)"));
+    return fail(egl_error("eglMakeCurrent(surfaceless)"));
   }
   return c;
 }
@@ -93,20 +93,20 @@ Result EglContext::headless() {
 Result EglContext::window(const WindowOptions& options) {
   WindowOptions o = options;
   if (o.width_px <= 0 || o.height_px <= 0) {
-    return Result::failure("window: size: expected positive width and height, got " + std::to_string(o.width_px) +
+    return fail("window: size: expected positive width and height, got " + std::to_string(o.width_px) +
                            "x" + std::to_string(o.height_px));
   }
   std::unique_ptr<EglContext> c(new EglContext());
   Display* x = XOpenDisplay(o.display_name.empty() ? nullptr : o.display_name.c_str());
   if (x == nullptr) {
-    return Result::failure("window: X display '" + (o.display_name.empty() ? std::string("$DISPLAY") : o.display_name) +
+    return fail("window: X display '" + (o.display_name.empty() ? std::string("$DISPLAY") : o.display_name) +
                            "': cannot open (set DISPLAY, or use the headless output)");
   }
   c->x_display_ = x;
   c->platform_ = "x11";
   if (o.fullscreen && !o.output.empty()) {
     auto area = find_x11_output(x, o.output);
-    if (!area) return Result::failure("window: " + area.error());
+    if (!area) return fail("window: " + area.error());
     o.x_px = area->x;
     o.y_px = area->y;
     o.width_px = area->width;
@@ -114,16 +114,16 @@ Result EglContext::window(const WindowOptions& options) {
   }
   EGLDisplay display = eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, x, nullptr);
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
-    return Result::failure(egl_error("eglGetPlatformDisplay(X11)"));
+    return fail(egl_error("eglGetPlatformDisplay(X11)"));
   }
   c->display_ = display;
-  if (!eglBindAPI(EGL_OPENGL_ES_API)) return Result::failure(egl_error("eglBindAPI(OpenGL ES)"));
+  if (!eglBindAPI(EGL_OPENGL_ES_API)) return fail(egl_error("eglBindAPI(OpenGL ES)"));
   const EGLint wanted[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_RED_SIZE, 8,
                            EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (!eglChooseConfig(display, wanted, &config, 1, &configs) || configs < 1) {
-    return Result::failure(egl_error("eglChooseConfig(window, RGB8, depth 24, OpenGL ES 3)"));
+    return fail(egl_error("eglChooseConfig(window, RGB8, depth 24, OpenGL ES 3)"));
   }
   EGLint visual_id = 0;
   eglGetConfigAttrib(display, config, EGL_NATIVE_VISUAL_ID, &visual_id);
@@ -131,7 +131,7 @@ Result EglContext::window(const WindowOptions& options) {
   templ.visualid = static_cast<VisualID>(visual_id);
   int visuals = 0;
   XVisualInfo* visual = XGetVisualInfo(x, VisualIDMask, &templ, &visuals);
-  if (visual == nullptr) return Result::failure("window: no X visual for the EGL config");
+  if (visual == nullptr) return fail("window: no X visual for the EGL config");
 
   const Window root = RootWindow(x, visual->screen);
   XSetWindowAttributes attributes{};
@@ -172,11 +172,11 @@ Result EglContext::window(const WindowOptions& options) {
 
   Window native = c->window_;
   c->surface_ = eglCreatePlatformWindowSurface(display, config, &native, nullptr);
-  if (c->surface_ == EGL_NO_SURFACE) return Result::failure(egl_error("eglCreatePlatformWindowSurface(X11)"));
+  if (c->surface_ == EGL_NO_SURFACE) return fail(egl_error("eglCreatePlatformWindowSurface(X11)"));
   c->context_ = create_es3_context(display, config);
-  if (c->context_ == EGL_NO_CONTEXT) return Result::failure(egl_error("eglCreateContext(OpenGL ES 3.0)"));
+  if (c->context_ == EGL_NO_CONTEXT) return fail(egl_error("eglCreateContext(OpenGL ES 3.0)"));
   if (!eglMakeCurrent(display, c->surface_, c->surface_, c->context_)) {
-    return Result::failure(egl_error("eglMakeCurrent(window)"));
+    return fail(egl_error("eglMakeCurrent(window)"));
   }
   eglSwapInterval(display, o.vsync ? 1 : 0);
   return c;
@@ -198,16 +198,16 @@ EglContext::~EglContext() {
   }
 }
 
-render::Status EglContext::make_current() {
+Status EglContext::make_current() {
   EGLSurface surface = surface_ != nullptr ? surface_ : EGL_NO_SURFACE;
-  if (!eglMakeCurrent(display_, surface, surface, context_)) return {egl_error("eglMakeCurrent")};
-  return render::Status::ok();
+  if (!eglMakeCurrent(display_, surface, surface, context_)) return fail(egl_error("eglMakeCurrent"));
+  return ok();
 }
 
-render::Status EglContext::swap_buffers() {
-  if (surface_ == nullptr) return render::Status::ok();
-  if (!eglSwapBuffers(display_, surface_)) return {egl_error("eglSwapBuffers")};
-  return render::Status::ok();
+Status EglContext::swap_buffers() {
+  if (surface_ == nullptr) return ok();
+  if (!eglSwapBuffers(display_, surface_)) return fail(egl_error("eglSwapBuffers"));
+  return ok();
 }
 
 bool EglContext::process_events() {

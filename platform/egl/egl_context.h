@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 
 namespace lungar::platform {
 
@@ -27,9 +27,9 @@ class EglContext {
  public:
   /// A context with no window: draw into render::FrameTarget. Tries EGL_PLATFORM_SURFACELESS_MESA, then
   /// EGL_EXT_platform_device.
-  static render::Expected<std::unique_ptr<EglContext>> headless();
+  static Result<std::unique_ptr<EglContext>> headless();
   /// An X11 window with an EGL window surface; its default framebuffer is what swap_buffers() shows.
-  static render::Expected<std::unique_ptr<EglContext>> window(const WindowOptions& options);
+  static Result<std::unique_ptr<EglContext>> window(const WindowOptions& options);
 
   ~EglContext();
   EglContext(const EglContext&) = delete;
@@ -41,9 +41,9 @@ class EglContext {
   int x() const { return x_; }            ///< where the window was put in the X screen (0 headless)
   int y() const { return y_; }
   /// Makes this context (and its window surface) current on the calling thread.
-  render::Status make_current();
+  Status make_current();
   /// Presents the window's back buffer; a no-op headless.
-  render::Status swap_buffers();
+  Status swap_buffers();
   /// Handles pending window events; false once the window was closed or Escape/q pressed.
   bool process_events();
   /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.

@@ -8,16 +8,15 @@
 
 namespace lungar::platform {
 
-render::Expected<std::vector<ScreenArea>> x11_monitors(Display* display) {
-  using Result = render::Expected<std::vector<ScreenArea>>;
+Result<std::vector<ScreenArea>> x11_monitors(Display* display) {
   int event_base = 0, error_base = 0, major = 0, minor = 0;
   if (!XRRQueryExtension(display, &event_base, &error_base) || !XRRQueryVersion(display, &major, &minor) ||
       major * 100 + minor < 105) {
-    return Result::failure("the X server has no RandR 1.5 (needed to find an output by name)");
+    return fail("the X server has no RandR 1.5 (needed to find an output by name)");
   }
   int count = 0;
   XRRMonitorInfo* monitors = XRRGetMonitors(display, DefaultRootWindow(display), True, &count);
-  if (monitors == nullptr) return Result::failure("the X server listed no monitors (XRRGetMonitors)");
+  if (monitors == nullptr) return fail("the X server listed no monitors (XRRGetMonitors)");
   std::vector<ScreenArea> areas;
   for (int i = 0; i < count; ++i) {
     ScreenArea a;
@@ -35,15 +34,15 @@ render::Expected<std::vector<ScreenArea>> x11_monitors(Display* display) {
   return areas;
 }
 
-render::Expected<ScreenArea> find_x11_output(Display* display, const std::string& name) {
+Result<ScreenArea> find_x11_output(Display* display, const std::string& name) {
   auto areas = x11_monitors(display);
-  if (!areas) return render::Expected<ScreenArea>::failure("X output '" + name + "': " + areas.error());
+  if (!areas) return fail("X output '" + name + "': " + areas.error());
   std::string known;
   for (const ScreenArea& a : *areas) {
     if (a.name == name) return a;
     known += (known.empty() ? "" : ", ") + a.name;
   }
-  return render::Expected<ScreenArea>::failure("X output '" + name + "': expected one of the active outputs (" +
+  return fail("X output '" + name + "': expected one of the active outputs (" +
                                                (known.empty() ? std::string("none") : known) + ")");
 }
 

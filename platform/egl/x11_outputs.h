@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/expected.h"
+#include "config/base/result.h"
 
 typedef struct _XDisplay Display;  // NOLINT: Xlib's own spelling, so that this header needs no Xlib.h
 
@@ -18,9 +18,9 @@ struct ScreenArea {
 };
 
 /// The active monitors of the default screen of `display`; an error when the server has no RandR 1.5.
-render::Expected<std::vector<ScreenArea>> x11_monitors(Display* display);
+Result<std::vector<ScreenArea>> x11_monitors(Display* display);
 
 /// The monitor called `name`; an error naming it and listing the ones there are.
-render::Expected<ScreenArea> find_x11_output(Display* display, const std::string& name);
+Result<ScreenArea> find_x11_output(Display* display, const std::string& name);
 
 }  // namespace lungar::platform

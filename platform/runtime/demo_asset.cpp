@@ -31,14 +31,14 @@ std::string demo_asset_path(const DemoAssetOptions& o) {
   return (std::filesystem::path(dir) / name).string();
 }
 
-sim::Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
+Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
                                                      const std::function<void(const std::string&)>& log) {
   const std::string path = demo_asset_path(o);
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
     auto loaded = sim::load_asset(path);
     if (loaded) return loaded;
-    log("cached demo asset unusable (" + loaded.error + "); baking it again");
+    log("cached demo asset unusable (" + loaded.error() + "); baking it again");
   }
   log("baking the procedural demo lungs (" + std::to_string(o.nodes) + " nodes, once; cached at " + path + ")");
   sim::BakeOptions bake;
@@ -55,12 +55,12 @@ sim::Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
       log("  bake: " + last_stage + " " + std::to_string(percent) + " %");
     }
   });
-  if (!baked) return sim::Result<sim::BakedAsset>::fail("procedural demo asset: " + baked.error);
+  if (!baked) return fail("procedural demo asset: " + baked.error());
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
   if (auto written = sim::write_asset(baked->asset, path); !written) {
-    log("could not cache the demo asset (" + written.error + "); going on without the cache");
+    log("could not cache the demo asset (" + written.error() + "); going on without the cache");
   }
-  return sim::Result<sim::BakedAsset>::ok(std::move(baked->asset));
+  return std::move(baked->asset);
 }
 
 }  // namespace lungar::platform

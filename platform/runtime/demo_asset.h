@@ -7,7 +7,7 @@
 #include <string>
 
 #include "sim/asset/baked_asset.h"
-#include "sim/core/result.h"
+#include "config/base/result.h"
 
 namespace lungar::platform {
 
@@ -24,7 +24,7 @@ std::string demo_asset_path(const DemoAssetOptions& o);
 
 /// Loads the cached procedural asset, baking and caching it first when it is missing or unreadable.
 /// `log` receives progress lines.
-sim::Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
+Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
                                                      const std::function<void(const std::string&)>& log);
 
 }  // namespace lungar::platform

@@ -91,7 +91,7 @@ struct Output {
 };
 
 /// A window when a display is there (or asked for), else headless.
-render::Expected<Output> open_output(const config::Settings& s, int want_width, int want_height) {
+Result<Output> open_output(const config::Settings& s, int want_width, int want_height) {
   using config::Output;
   Output out_kind = s.display.output;
   const char* display = std::getenv("DISPLAY");
@@ -108,7 +108,7 @@ render::Expected<Output> open_output(const config::Settings& s, int want_width, 
     w.vsync = s.display.vsync;
     auto ctx = EglContext::window(w);
     if (!ctx && !w.output.empty() && w.fullscreen) {
-      return render::Expected<platform::Output>::failure("display.x11_output: " + ctx.error());  // the field to fix
+      return fail("display.x11_output: " + ctx.error());  // the field to fix
     }
     if (ctx) {
       out.context = ctx.take();
@@ -116,14 +116,14 @@ render::Expected<Output> open_output(const config::Settings& s, int want_width, 
       out.height = out.context->height();
       return out;
     }
-    if (s.display.output != Output::Auto) return render::Expected<platform::Output>::failure("display: " + ctx.error());
+    if (s.display.output != Output::Auto) return fail("display: " + ctx.error());
     log_line("no window (" + ctx.error() + "); running headless");
   }
   auto ctx = EglContext::headless();
-  if (!ctx) return render::Expected<platform::Output>::failure("display: " + ctx.error());
+  if (!ctx) return fail("display: " + ctx.error());
   out.context = ctx.take();
   auto target = render::FrameTarget::create(want_width, want_height);
-  if (!target) return render::Expected<platform::Output>::failure("display: " + target.error());
+  if (!target) return fail("display: " + target.error());
   out.target.emplace(target.take());
   out.width = want_width;
   out.height = want_height;
@@ -140,10 +140,10 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
   // --- the asset ---------------------------------------------------------------------------------------
   DemoAssetOptions demo;
   demo.transfer_rows = deform == config::Deform::Cpu1;
-  sim::Result<sim::BakedAsset> loaded =
+  Result<sim::BakedAsset> loaded =
       s.sim.asset.empty() ? load_or_bake_demo_asset(demo, log_line) : sim::load_asset(s.sim.asset);
   if (!loaded) {
-    log_line("error: " + loaded.error);
+    log_line("error: " + loaded.error());
     return 1;
   }
   const sim::BakedAsset& asset = *loaded;
@@ -300,7 +300,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       } else {
         eq1->deform(sim::gravity_in_lung_frame(lung_q), breath.dv_ml, cpu_positions);
       }
-      if (auto up = drawable->upload_positions(cpu_positions); !up) log_line("error: " + up.error);
+      if (auto up = drawable->upload_positions(cpu_positions); !up) log_line("error: " + up.error());
       source = render::PositionSource::Uploaded;
     }
     for (std::size_t l = 0; l < lung_frames.size(); ++l) {
@@ -325,14 +325,14 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       bind_output();
     }
     if (auto drawn = renderer->draw(*drawable, in); !drawn) {
-      log_line("error: draw: " + drawn.error);
+      log_line("error: draw: " + drawn.error());
       return false;
     }
     if (lens) {
       bind_output();
       const auto centres = std::span<const std::array<float, 2>>(lens_centres.data(), eye_span.size());
       if (auto warped = lens->apply(*lens_scene, eye_span, centres, lens_params); !warped) {
-        log_line("error: lens distortion: " + warped.error);
+        log_line("error: lens distortion: " + warped.error());
         return false;
       }
     }
@@ -356,7 +356,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       if (output->target) {
         glFinish();
       } else if (auto swapped = output->context->swap_buffers(); !swapped) {
-        log_line("error: " + swapped.error);
+        log_line("error: " + swapped.error());
         return false;
       }
       const std::int64_t submitted = drivers::monotonic_ns();
@@ -411,13 +411,13 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
       std::filesystem::create_directories(std::filesystem::path(snapshot).parent_path(), ec);
     }
     if (auto shot = render::snapshot_png(snapshot, 0, 0, output->width, output->height); !shot) {
-      log_line("error: snapshot: " + shot.error);
+      log_line("error: snapshot: " + shot.error());
       exit_code = 1;
     } else {
       log_line("snapshot: " + snapshot);
     }
   }
-  if (!output->target) output->context->swap_buffers();
+  if (!output->target) (void)output->context->swap_buffers();  // show the last frame; the outputs are written either way
   const drivers::TrackerStats ts = tracker.stats();
   tracker.stop();
   // The mean delivered rate over the run: the instantaneous rate says little once a replay has ended.

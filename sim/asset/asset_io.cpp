@@ -12,7 +12,8 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "sim/asset/crc32.h"
+#include "config/base/atomic_file.h"
+#include "config/base/crc32.h"
 
 namespace lungar::sim {
 
@@ -39,19 +40,21 @@ struct Bytes {
   }
 };
 
-void write_section(std::ofstream& out, const char tag[4], const std::string& payload) {
-  const std::uint64_t length = payload.size();
-  const std::uint32_t crc = crc32(payload.data(), payload.size());
+/// One section: tag, length, payload, CRC-32 of the payload.
+void write_section(AtomicFile& out, const char tag[4], const void* payload, std::size_t size) {
+  const std::uint64_t length = size;
+  const std::uint32_t crc = crc32(payload, size);
   out.write(tag, 4);
-  out.write(reinterpret_cast<const char*>(&length), sizeof length);
-  out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
-  out.write(reinterpret_cast<const char*>(&crc), sizeof crc);
+  out.write(&length, sizeof length);
+  out.write(payload, size);
+  out.write(&crc, sizeof crc);
 }
-
+void write_section(AtomicFile& out, const char tag[4], const std::string& payload) {
+  write_section(out, tag, payload.data(), payload.size());
+}
 template <class T>
-std::string array_payload(const std::vector<T>& v) {
-  if (v.empty()) return {};
-  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+void write_section(AtomicFile& out, const char tag[4], const std::vector<T>& v) {
+  write_section(out, tag, v.data(), v.size() * sizeof(T));
 }
 
 std::size_t lung_record_size(std::uint32_t coefficients, std::size_t name_length) {
@@ -220,91 +223,77 @@ std::string validate_asset(const BakedAsset& a) {
 }
 
 Status write_asset(const BakedAsset& a, const std::string& path) {
-  if (std::string bad = validate_asset(a); !bad.empty()) return {path + ": refusing to write an unsound asset: " + bad};
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) return {path + ": cannot create the temporary file " + tmp + ": " + std::strerror(errno)};
-    const std::uint32_t c = a.coefficients();
-    out.write(kAssetMagic, sizeof kAssetMagic);
-    out.write(reinterpret_cast<const char*>(&kAssetVersion), sizeof kAssetVersion);
-    Bytes head;
-    head.put(a.bands);
-    head.put(a.vertex_count());
-    head.put(static_cast<std::uint32_t>(a.triangles.size() / 3));
-    head.put(static_cast<std::uint32_t>(a.lungs.size()));
-    head.put(static_cast<std::uint64_t>(a.transfer_vals.size()));
-    head.put(a.p0);
-    head.put(a.gamma_per_mm);
-    head.put(a.decay_length_mm);
-    head.put(a.transfer_epsilon);
-    write_section(out, "HEAD", head.data);
-    Bytes lungs;
-    for (const BakedLung& l : a.lungs) {
-      const auto name_length = static_cast<std::uint32_t>(std::min<std::size_t>(l.name.size(), kMaxNameLength));
-      lungs.put(name_length);
-      lungs.data.append(l.name.data(), name_length);
-      lungs.put_array(l.centre.data(), 3);
-      lungs.put(l.first_vertex);
-      lungs.put(l.vertex_count);
-      lungs.put(l.first_index);
-      lungs.put(l.index_count);
-      lungs.put(l.rest_volume_ml);
-      lungs.put(l.volume_share);
-      lungs.put(l.volume_const);
-      lungs.put_array(l.volume_grad.data(), 3);
-      lungs.put_array(l.force_const.data(), c);
-      for (const auto& f : l.force_grad) lungs.put_array(f.data(), c);
-      for (const auto& f : l.paper_force) lungs.put_array(f.data(), c);
-    }
-    write_section(out, "LUNG", lungs.data);
-    write_section(out, "POSI", array_payload(a.positions));
-    write_section(out, "NORM", array_payload(a.normals));
-    write_section(out, "AREA", array_payload(a.areas));
-    write_section(out, "LOFV", array_payload(a.lung_of_vertex));
-    write_section(out, "SHCO", array_payload(a.sh_coeffs));
-    write_section(out, "LINC", array_payload(a.linear_coeffs));
-    write_section(out, "TRIS", array_payload(a.triangles));
-    write_section(out, "TROW", array_payload(a.transfer_row_ptr));
-    write_section(out, "TCOL", array_payload(a.transfer_cols));
-    write_section(out, "TVAL", array_payload(a.transfer_vals));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      return {path + ": write failed (disk full?); nothing was written under this name"};
-    }
+  if (std::string bad = validate_asset(a); !bad.empty()) {
+    return fail(path + ": refusing to write an unsound asset: " + bad);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    return {path + ": cannot rename the temporary file into place: " + ec.message()};
+  AtomicFile out;
+  if (Status opened = out.open(path); !opened) return opened;
+  const std::uint32_t c = a.coefficients();
+  out.write(kAssetMagic, sizeof kAssetMagic);
+  out.write(&kAssetVersion, sizeof kAssetVersion);
+  Bytes head;
+  head.put(a.bands);
+  head.put(a.vertex_count());
+  head.put(static_cast<std::uint32_t>(a.triangles.size() / 3));
+  head.put(static_cast<std::uint32_t>(a.lungs.size()));
+  head.put(static_cast<std::uint64_t>(a.transfer_vals.size()));
+  head.put(a.p0);
+  head.put(a.gamma_per_mm);
+  head.put(a.decay_length_mm);
+  head.put(a.transfer_epsilon);
+  write_section(out, "HEAD", head.data);
+  Bytes lungs;
+  for (const BakedLung& l : a.lungs) {
+    const auto name_length = static_cast<std::uint32_t>(std::min<std::size_t>(l.name.size(), kMaxNameLength));
+    lungs.put(name_length);
+    lungs.data.append(l.name.data(), name_length);
+    lungs.put_array(l.centre.data(), 3);
+    lungs.put(l.first_vertex);
+    lungs.put(l.vertex_count);
+    lungs.put(l.first_index);
+    lungs.put(l.index_count);
+    lungs.put(l.rest_volume_ml);
+    lungs.put(l.volume_share);
+    lungs.put(l.volume_const);
+    lungs.put_array(l.volume_grad.data(), 3);
+    lungs.put_array(l.force_const.data(), c);
+    for (const auto& f : l.force_grad) lungs.put_array(f.data(), c);
+    for (const auto& f : l.paper_force) lungs.put_array(f.data(), c);
   }
-  return {};
+  write_section(out, "LUNG", lungs.data);
+  write_section(out, "POSI", a.positions);
+  write_section(out, "NORM", a.normals);
+  write_section(out, "AREA", a.areas);
+  write_section(out, "LOFV", a.lung_of_vertex);
+  write_section(out, "SHCO", a.sh_coeffs);
+  write_section(out, "LINC", a.linear_coeffs);
+  write_section(out, "TRIS", a.triangles);
+  write_section(out, "TROW", a.transfer_row_ptr);
+  write_section(out, "TCOL", a.transfer_cols);
+  write_section(out, "TVAL", a.transfer_vals);
+  return out.commit();
 }
 
 Result<BakedAsset> load_asset(const std::string& path) {
-  using R = Result<BakedAsset>;
   std::error_code ec;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
-  if (ec) return R::fail(path + ": cannot open: " + ec.message());
+  if (ec) return fail(path + ": cannot open: " + ec.message());
   std::ifstream in(path, std::ios::binary);
-  if (!in) return R::fail(path + ": cannot open for reading");
+  if (!in) return fail(path + ": cannot open for reading");
   Reader r(in, path, size);
 
   char magic[8];
-  if (!r.raw(magic, 8, "magic")) return R::fail(r.error());
+  if (!r.raw(magic, 8, "magic")) return fail(r.error());
   if (std::memcmp(magic, kAssetMagic, 8) != 0)
-    return R::fail(path + ": magic: expected 'LUNGBAKE'; this is not a lungar baked asset");
+    return fail(path + ": magic: expected 'LUNGBAKE'; this is not a lungar baked asset");
   std::uint32_t version = 0;
-  if (!r.raw(&version, 4, "version")) return R::fail(r.error());
+  if (!r.raw(&version, 4, "version")) return fail(r.error());
   if (version != kAssetVersion)
-    return R::fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " +
+    return fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " +
                    std::to_string(version) + " (re-bake with this lungar-bake)");
 
   std::string payload;
-  if (!r.section("HEAD", kHeadSize, payload)) return R::fail(r.error());
+  if (!r.section("HEAD", kHeadSize, payload)) return fail(r.error());
   BakedAsset a;
   std::uint32_t n = 0, triangles = 0, lung_count = 0;
   std::uint64_t nnz = 0;
@@ -321,45 +310,45 @@ Result<BakedAsset> load_asset(const std::string& path) {
     a.transfer_epsilon = h.get<double>();
   }
   if (a.bands < 1 || a.bands > 8)
-    return R::fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
+    return fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
   if (lung_count < 1 || lung_count > kMaxLungs)
-    return R::fail(path + ": header field 'lungs': expected 1 to 16, found " + std::to_string(lung_count));
-  if (n == 0) return R::fail(path + ": header field 'vertices': expected at least one vertex");
+    return fail(path + ": header field 'lungs': expected 1 to 16, found " + std::to_string(lung_count));
+  if (n == 0) return fail(path + ": header field 'vertices': expected at least one vertex");
   // Every vertex needs more than 16 bytes of the file; this bounds the counts before anything is allocated.
   const std::uint64_t c = a.bands * a.bands;
   if (std::uint64_t{n} * (29 + 4 * c) + std::uint64_t{triangles} * 12 + nnz * 8 > r.left())
-    return R::fail(path + ": header counts (" + std::to_string(n) + " vertices, " + std::to_string(triangles) +
+    return fail(path + ": header counts (" + std::to_string(n) + " vertices, " + std::to_string(triangles) +
                    " triangles, " + std::to_string(nnz) + " transfer non-zeros) need more bytes than the file has");
   if (!std::isfinite(a.p0) || !std::isfinite(a.gamma_per_mm) || !(a.decay_length_mm > 0))
-    return R::fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
+    return fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
 
   // LUNG: variable-length names; read its length first and parse with bounds checks.
   {
     char tag[4];
     std::uint64_t length = 0;
-    if (!r.raw(tag, 4, "section 'LUNG' tag")) return R::fail(r.error());
-    if (std::memcmp(tag, "LUNG", 4) != 0) return R::fail(path + ": section 'LUNG': expected tag 'LUNG'");
-    if (!r.raw(&length, 8, "section 'LUNG' length")) return R::fail(r.error());
+    if (!r.raw(tag, 4, "section 'LUNG' tag")) return fail(r.error());
+    if (std::memcmp(tag, "LUNG", 4) != 0) return fail(path + ": section 'LUNG': expected tag 'LUNG'");
+    if (!r.raw(&length, 8, "section 'LUNG' length")) return fail(r.error());
     const std::uint64_t min_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), 0);
     const std::uint64_t max_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), kMaxNameLength);
     if (length < min_len || length > max_len)
-      return R::fail(path + ": section 'LUNG': length " + std::to_string(length) + " bytes; expected " +
+      return fail(path + ": section 'LUNG': length " + std::to_string(length) + " bytes; expected " +
                      std::to_string(min_len) + " to " + std::to_string(max_len) + " for " +
                      std::to_string(lung_count) + " lungs");
     payload.resize(length);
-    if (!r.raw(payload.data(), length, "section 'LUNG'")) return R::fail(r.error());
+    if (!r.raw(payload.data(), length, "section 'LUNG'")) return fail(r.error());
     std::uint32_t stored = 0;
-    if (!r.raw(&stored, 4, "section 'LUNG' CRC")) return R::fail(r.error());
+    if (!r.raw(&stored, 4, "section 'LUNG' CRC")) return fail(r.error());
     if (stored != crc32(payload.data(), payload.size()))
-      return R::fail(path + ": section 'LUNG': CRC-32 mismatch; the file is damaged");
+      return fail(path + ": section 'LUNG': CRC-32 mismatch; the file is damaged");
     Cursor lc{payload};
     for (std::uint32_t l = 0; l < lung_count; ++l) {
       BakedLung lung;
       const std::size_t remaining = payload.size() - lc.at;
-      if (remaining < 4) return R::fail(path + ": section 'LUNG': lung " + std::to_string(l) + " record truncated");
+      if (remaining < 4) return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " record truncated");
       const auto name_length = lc.get<std::uint32_t>();
       if (name_length > kMaxNameLength || lung_record_size(static_cast<std::uint32_t>(c), name_length) > remaining)
-        return R::fail(path + ": section 'LUNG': lung " + std::to_string(l) + " name length " +
+        return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " name length " +
                        std::to_string(name_length) + "; expected at most " + std::to_string(kMaxNameLength) +
                        " within the section");
       lung.name.assign(payload.data() + lc.at, name_length);
@@ -379,7 +368,7 @@ Result<BakedAsset> load_asset(const std::string& path) {
       for (auto& f : lung.paper_force) lc.get_array(f, c);
       a.lungs.push_back(std::move(lung));
     }
-    if (lc.at != payload.size()) return R::fail(path + ": section 'LUNG': trailing bytes after the last lung");
+    if (lc.at != payload.size()) return fail(path + ": section 'LUNG': trailing bytes after the last lung");
   }
 
   const bool rows = nnz > 0;
@@ -398,10 +387,10 @@ Result<BakedAsset> load_asset(const std::string& path) {
       !read_into({"TRIS", 12ull * triangles}, a.triangles) ||
       !read_into({"TROW", rows ? 4ull * (n + 1) : 0}, a.transfer_row_ptr) ||
       !read_into({"TCOL", 4ull * nnz}, a.transfer_cols) || !read_into({"TVAL", 4ull * nnz}, a.transfer_vals))
-    return R::fail(r.error());
-  if (r.left() != 0) return R::fail(path + ": " + std::to_string(r.left()) + " unexpected bytes after the last section");
-  if (std::string bad = validate_asset(a); !bad.empty()) return R::fail(path + ": " + bad);
-  return R::ok(std::move(a));
+    return fail(r.error());
+  if (r.left() != 0) return fail(path + ": " + std::to_string(r.left()) + " unexpected bytes after the last section");
+  if (std::string bad = validate_asset(a); !bad.empty()) return fail(path + ": " + bad);
+  return a;
 }
 
 }  // namespace lungar::sim

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "sim/asset/baked_asset.h"
-#include "sim/core/result.h"
+#include "config/base/result.h"
 
 namespace lungar::sim {
 

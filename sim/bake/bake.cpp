@@ -61,15 +61,15 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
     Eigen::LDLT<Eigen::MatrixXd> g(w.gram.topLeftCorner(c, c));
     const Eigen::VectorXd diag = g.vectorD();
     if (g.info() != Eigen::Success || !(diag.minCoeff() > 1e-9 * diag.maxCoeff()))
-      return {who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
-              " SH bands; expected a finer, closed surface around its centre"};
+      return fail(who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
+                  " SH bands; expected a finer, closed surface around its centre");
   }
 
   const Eigen::VectorXd youngs = youngs_modulus(w.mesh);
   w.k = stiffness_matrix(w.mesh, youngs, w.geometry.areas, opt.decay_length_mm);
   if (progress) progress("factorise", 0.0);
   w.solver = std::make_unique<TransferSolver>(w.k);
-  if (!w.solver->error().empty()) return {who + ": " + w.solver->error()};
+  if (!w.solver->error().empty()) return fail(who + ": " + w.solver->error());
   const double factor_s = seconds_since(t0);
 
   // L^2 + 4 solves: T_lm = K^-1 (A o Y_lm) and tau = K^-1 (A o [1, x - c]).
@@ -198,11 +198,10 @@ std::vector<Eigen::Vector3d> report_directions() {
 }
 
 Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& opt, const BakeProgress& progress) {
-  using R = Result<BakeOutput>;
   const auto start = Clock::now();
-  if (lungs.empty() || lungs.size() > 16) return R::fail("bake: expected 1 to 16 lungs, got " + std::to_string(lungs.size()));
+  if (lungs.empty() || lungs.size() > 16) return fail("bake: expected 1 to 16 lungs, got " + std::to_string(lungs.size()));
   if (opt.bands < 1 || opt.bands > static_cast<std::uint32_t>(kMaxBands))
-    return R::fail("bake: bands: expected 1 to 8, got " + std::to_string(opt.bands));
+    return fail("bake: bands: expected 1 to 8, got " + std::to_string(opt.bands));
   const int threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 
   std::mutex progress_mutex;
@@ -241,7 +240,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
     for (auto& t : pool) t.join();
   }
   for (const Status& s : status)
-    if (!s.ok()) return R::fail(s.error);
+    if (!s.ok()) return fail(s.error());
 
   BakeOutput out;
   BakedAsset& a = out.asset;
@@ -268,7 +267,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
       a.transfer_vals.insert(a.transfer_vals.end(), w->rows.vals.begin(), w->rows.vals.end());
     }
   }
-  if (std::string bad = validate_asset(a); !bad.empty()) return R::fail("bake: internal error: " + bad);
+  if (std::string bad = validate_asset(a); !bad.empty()) return fail("bake: internal error: " + bad);
 
   report.nodes = a.vertex_count();
   report.triangles = static_cast<std::uint32_t>(a.triangles.size() / 3);
@@ -290,7 +289,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
     report.evaluate_s = seconds_since(t);
   }
   out.report = std::move(report);
-  return R::ok(std::move(out));
+  return out;
 }
 
 Result<BakeOutput> bake_procedural(std::uint32_t nodes, std::uint64_t seed, const BakeOptions& options,

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "sim/asset/baked_asset.h"
-#include "sim/core/result.h"
+#include "config/base/result.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/transfer/transfer_rows.h"
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "sim/bake/bake.h"
-#include "sim/core/result.h"
+#include "config/base/result.h"
 #include "sim/mesh/procedural_lungs.h"
 
 namespace lungar::sim {

@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
   log_line(cmd.procedural ? "baking the procedural pair, " + std::to_string(cmd.nodes) + " nodes, seed " +
                                 std::to_string(cmd.seed)
                           : "baking " + cmd.meshes.front() + (cmd.meshes.size() > 1 ? " and " + cmd.meshes[1] : ""));
-  lungar::sim::Result<lungar::sim::BakeReport> result;
+  lungar::Result<lungar::sim::BakeReport> result = lungar::fail("not baked");
   try {
     result = lungar::sim::run_bake_command(cmd, [&](std::string_view s, double f) { bar(s, f); }, notes);
   } catch (const std::bad_alloc&) {
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   bar.finish();
   for (const std::string& n : notes) log_line("note: " + n);
   if (!result) {
-    std::fprintf(stderr, "lungar-bake: %s\n", result.error.c_str());
+    std::fprintf(stderr, "lungar-bake: %s\n", result.error().c_str());
     return 1;
   }
   const auto& r = *result;

@@ -23,17 +23,16 @@ double units_to_mm(const std::string& units) {
 namespace {
 
 Result<TriMesh> read_soup(const std::string& path, double mm_per_unit, std::vector<std::string>& notes) {
-  using R = Result<TriMesh>;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    return R::fail(path + ": cannot open: " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+    return fail(path + ": cannot open: " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
   Assimp::Importer importer;
   // No normal generation and no "invalid data" clean-up: NaN coordinates must reach our check and be named.
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_PreTransformVertices);
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown reason";
-    return R::fail(path + ": cannot read the mesh: " + why + "; expected a closed surface in STL, OBJ or PLY");
+    return fail(path + ": cannot read the mesh: " + why + "; expected a closed surface in STL, OBJ or PLY");
   }
   TriMesh soup;
   std::size_t skipped = 0;
@@ -54,23 +53,22 @@ Result<TriMesh> read_soup(const std::string& path, double mm_per_unit, std::vect
     }
   }
   if (skipped > 0) notes.push_back(path + ": ignored " + std::to_string(skipped) + " point and line primitives");
-  if (soup.triangles.empty()) return R::fail(path + ": no triangles; expected a closed lung surface");
-  return R::ok(std::move(soup));
+  if (soup.triangles.empty()) return fail(path + ": no triangles; expected a closed lung surface");
+  return soup;
 }
 
 }  // namespace
 
 Result<std::vector<LungMesh>> import_lungs(const std::vector<std::string>& files, double mm_per_unit,
                                            std::vector<std::string>& notes) {
-  using R = Result<std::vector<LungMesh>>;
-  if (files.empty() || files.size() > 2) return R::fail("--mesh: expected one or two files");
-  if (!(mm_per_unit > 0)) return R::fail("--units: expected mm, cm or m");
+  if (files.empty() || files.size() > 2) return fail("--mesh: expected one or two files");
+  if (!(mm_per_unit > 0)) return fail("--units: expected mm, cm or m");
   std::vector<LungMesh> lungs;
   for (const std::string& path : files) {
     Result<TriMesh> soup = read_soup(path, mm_per_unit, notes);
-    if (!soup) return R::fail(soup.error);
+    if (!soup) return fail(soup.error());
     Result<std::vector<TriMesh>> parts = repair_surface(*soup, path, notes);
-    if (!parts) return R::fail(parts.error);
+    if (!parts) return fail(parts.error());
     for (TriMesh& m : *parts) {
       LungMesh lung;
       lung.mesh = std::move(m);
@@ -78,7 +76,7 @@ Result<std::vector<LungMesh>> import_lungs(const std::vector<std::string>& files
     }
   }
   if (lungs.size() > 2)
-    return R::fail(files.back() + ": " + std::to_string(lungs.size()) +
+    return fail(files.back() + ": " + std::to_string(lungs.size()) +
                    " closed components in all; expected one or two lungs");
   std::vector<double> x;
   for (const LungMesh& l : lungs) x.push_back(volume_centroid(l.mesh).x());
@@ -94,7 +92,7 @@ Result<std::vector<LungMesh>> import_lungs(const std::vector<std::string>& files
     notes.push_back(files.front() + ": one lung, named '" + lungs[0].name + "' from its centroid's side (x " +
                     (x[0] < 0 ? "< 0" : ">= 0") + ", LPS)");
   }
-  return R::ok(std::move(lungs));
+  return lungs;
 }
 
 }  // namespace lungar::sim

@@ -49,26 +49,4 @@ nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& 
   return j;
 }
 
-Status write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) return {path + ": cannot create " + tmp + ": " + std::strerror(errno)};
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      return {path + ": write failed"};
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    return {path + ": cannot rename into place: " + ec.message()};
-  }
-  return {};
-}
-
 }  // namespace lungar::sim

@@ -7,14 +7,11 @@
 #include <vector>
 
 #include "sim/bake/bake.h"
-#include "sim/core/result.h"
 
 namespace lungar::sim {
 
 /// Every key issue 3 lists, plus timings per stage, the lungs' names, and the repair notes.
 nlohmann::json report_json(const BakeReport& report, const std::vector<std::string>& notes);
 
-/// Writes `text` to a temporary file beside `path`, then renames it into place.
-Status write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace lungar::sim

@@ -77,16 +77,15 @@ bool orient_consistently(std::vector<Triangle>& tris) {
 
 Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::string& source,
                                             std::vector<std::string>& notes) {
-  using R = Result<std::vector<TriMesh>>;
   for (std::size_t i = 0; i < soup.positions.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(soup.positions[i][k]))
-        return R::fail(source + ": vertex " + std::to_string(i) + " coordinate " + "xyz"[k] +
+        return fail(source + ": vertex " + std::to_string(i) + " coordinate " + "xyz"[k] +
                        " is not finite; expected finite numbers");
   for (std::size_t t = 0; t < soup.triangles.size(); ++t)
     for (std::uint32_t v : soup.triangles[t])
       if (v >= soup.positions.size())
-        return R::fail(source + ": triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) +
+        return fail(source + ": triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) +
                        "; expected an index below " + std::to_string(soup.positions.size()));
 
   // Weld corners with identical coordinates (STL stores every corner of every triangle).
@@ -117,7 +116,7 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
     tris.push_back(t);
   }
   if (degenerate > 0) notes.push_back(source + ": dropped " + std::to_string(degenerate) + " degenerate triangles");
-  if (tris.empty()) return R::fail(source + ": no triangles with non-zero area; expected a closed lung surface");
+  if (tris.empty()) return fail(source + ": no triangles with non-zero area; expected a closed lung surface");
 
   // Closed and 2-manifold: every undirected edge is shared by exactly two triangles.
   {
@@ -131,10 +130,10 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
       if (n > 2) ++nonmanifold;
     }
     if (open > 0)
-      return R::fail(source + ": surface is open (" + std::to_string(open) +
+      return fail(source + ": surface is open (" + std::to_string(open) +
                      " edges belong to one triangle only); expected a closed surface");
     if (nonmanifold > 0)
-      return R::fail(source + ": surface is not manifold (" + std::to_string(nonmanifold) +
+      return fail(source + ": surface is not manifold (" + std::to_string(nonmanifold) +
                      " edges shared by more than two triangles); expected a 2-manifold surface");
   }
 
@@ -165,7 +164,7 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
   std::vector<TriMesh> out;
   for (auto& comp : comps) {
     if (!orient_consistently(comp))
-      return R::fail(source + ": surface cannot be oriented consistently; expected an orientable closed surface");
+      return fail(source + ": surface cannot be oriented consistently; expected an orientable closed surface");
     TriMesh m;
     std::unordered_map<std::uint32_t, std::uint32_t> remap;
     for (Triangle& t : comp)
@@ -176,7 +175,7 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
       }
     m.triangles = std::move(comp);
     if (m.positions.size() < 4)
-      return R::fail(source + ": a component has " + std::to_string(m.positions.size()) +
+      return fail(source + ": a component has " + std::to_string(m.positions.size()) +
                      " vertices; expected a closed lung surface");
     if (enclosed_volume(m) < 0) {
       for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
@@ -184,7 +183,7 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
     }
     out.push_back(std::move(m));
   }
-  return R::ok(std::move(out));
+  return out;
 }
 
 }  // namespace lungar::sim

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/core/result.h"
+#include "config/base/result.h"
 #include "sim/mesh/tri_mesh.h"
 
 namespace lungar::sim {

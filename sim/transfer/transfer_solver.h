@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 
-#include "sim/core/result.h"
+#include "config/base/result.h"
 
 namespace lungar::sim {
 

@@ -65,7 +65,7 @@ struct Scene {
     const char* env = std::getenv("LUNGAR_BENCH_ASSET");
     const std::string path = env ? env : std::string(LUNGAR_BINARY_DIR) + "/render-bench-procedural-400k.lungbake";
     if (auto loaded = lungar::sim::load_asset(path)) {
-      asset = std::move(*loaded.value);
+      asset = loaded.take();
     } else {
       const auto t0 = std::chrono::steady_clock::now();
       lungar::sim::BakeOptions options;
@@ -73,14 +73,14 @@ struct Scene {
       options.evaluate = false;
       auto baked = lungar::sim::bake_procedural(2 * kPointsPerLung, 1, options, nullptr);
       if (!baked) {
-        std::fprintf(stderr, "render bench: %s\n", baked.error.c_str());
+        std::fprintf(stderr, "render bench: %s\n", baked.error().c_str());
         std::exit(1);
       }
       asset = std::move(baked->asset);
       std::fprintf(stderr, "render bench: baked %u nodes in %.1f s\n", asset.vertex_count(),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (auto written = lungar::sim::write_asset(asset, path); !written.ok()) {
-        std::fprintf(stderr, "render bench: %s (not cached)\n", written.error.c_str());
+        std::fprintf(stderr, "render bench: %s (not cached)\n", written.error().c_str());
       }
     }
     auto make = [&](DrawableOptions o, std::optional<LungDrawable>& d, std::optional<Renderer>& r) {
@@ -158,8 +158,8 @@ void run(benchmark::State& state, Variant v, int eye_count, float lod_coverage =
   FrameStats stats;
   for (auto _ : state) {
     if (v == kCpuUploaded) (void)drawable->upload_positions(s.cpu_positions);
-    Status st = renderer->draw(*drawable, f, &stats);
-    if (!st) state.SkipWithError(st.error.c_str());
+    lungar::Status st = renderer->draw(*drawable, f, &stats);
+    if (!st) state.SkipWithError(st.error().c_str());
     glFinish();
   }
   state.counters["points_per_eye"] = stats.points_drawn[0];

@@ -34,7 +34,7 @@ const BakedAsset& asset(std::uint32_t nodes) {
         {nodes, 4, true}, LUNGAR_BINARY_DIR "/bench-assets", false,
         [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
     if (!got) {
-      std::fprintf(stderr, "sim micro bench: %s\n", got.error.c_str());
+      std::fprintf(stderr, "sim micro bench: %s\n", got.error().c_str());
       std::exit(1);
     }
     slot = std::make_unique<BakedAsset>(std::move(got->asset));

@@ -83,7 +83,7 @@ class HardwareInTheLoop : public ::testing::Test {
  protected:
   void SetUp() override {
     auto loaded = sim::load_asset(kAsset);
-    ASSERT_TRUE(loaded) << loaded.error;
+    ASSERT_TRUE(loaded) << loaded.error();
     asset = std::move(*loaded);
     auto log = drivers::load_trk(kLog);
     ASSERT_TRUE(log.log) << log.error;
@@ -123,7 +123,7 @@ class HardwareInTheLoop : public ::testing::Test {
     }
     std::vector<float> xyz;
     const auto captured = renderer->capture_deformed(*drawable, lungs, xyz);
-    EXPECT_TRUE(captured) << captured.error;
+    EXPECT_TRUE(captured) << captured.error();
     for (std::size_t i = 0; i < asset.vertex_count() && 3 * i + 2 < xyz.size(); ++i) {
       double d[3];
       for (int a = 0; a < 3; ++a) d[a] = static_cast<double>(xyz[3 * i + a]) - asset.positions[3 * i + a];

@@ -28,8 +28,8 @@ class BakedLungsTest : public test::GlTest {
     o.transfer_rows = false;
     o.evaluate = false;
     auto out = sim::bake_procedural(nodes, 1, o, nullptr);
-    EXPECT_TRUE(out.error.empty()) << out.error;
-    return out.value ? out.value->asset : sim::BakedAsset{};
+    EXPECT_TRUE(out.error().empty()) << out.error();
+    return out ? out->asset : sim::BakedAsset{};
   }
   static const sim::BakedAsset& asset() {
     static const sim::BakedAsset baked = bake(6000);
@@ -229,7 +229,7 @@ TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
   o.transfer_rows = false;
   o.evaluate = false;
   auto baked = sim::bake_procedural(100000, 1, o, nullptr);
-  ASSERT_TRUE(baked) << baked.error;
+  ASSERT_TRUE(baked) << baked.error();
   const sim::BakedAsset& a = baked->asset;
   auto drawable = LungDrawable::create(a);
   ASSERT_TRUE(drawable) << drawable.error();

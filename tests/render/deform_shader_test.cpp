@@ -56,7 +56,7 @@ double shader_error(const sim::BakedAsset& asset, const DrawableOptions& options
   const LungFrame lungs[2] = {{force[0], dv[0], {}}, {force[1], dv[1], {}}};
   std::vector<float> captured;
   Status s = renderer->capture_deformed(*drawable, lungs, captured);
-  EXPECT_TRUE(s) << s.error;
+  EXPECT_TRUE(s) << s.error();
   const auto cpu = test::deform_eq7(asset, force, dv, options.basis == Basis::Linear);
   return relative_error(asset, captured, cpu);
 }

@@ -18,7 +18,7 @@ TEST(PngTest, WrongPixelCountIsRefusedAndNothingWritten) {
   std::vector<std::uint8_t> pixels(10 * 10 * 4 - 1);
   Status s = write_png(path, 10, 10, pixels);
   EXPECT_FALSE(s);
-  EXPECT_NE(s.error.find(path), std::string::npos);
+  EXPECT_NE(s.error().find(path), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path));
   EXPECT_FALSE(std::filesystem::exists(path + ".part"));
 }
@@ -27,7 +27,7 @@ TEST(PngTest, UnwritableDirectoryIsAnError) {
   std::vector<std::uint8_t> pixels(4 * 4 * 4, 255);
   Status s = write_png("/nonexistent-dir/x.png", 4, 4, pixels);
   EXPECT_FALSE(s);
-  EXPECT_NE(s.error.find("/nonexistent-dir/x.png"), std::string::npos);
+  EXPECT_NE(s.error().find("/nonexistent-dir/x.png"), std::string::npos);
 }
 
 TEST(PngTest, WritesAFileOfPlausibleSize) {

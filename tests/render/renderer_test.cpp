@@ -48,7 +48,7 @@ class RendererTest : public test::GlTest {
   std::vector<std::uint8_t> draw(const FrameInputs& f, FrameStats* stats = nullptr) {
     target_->bind();
     Status s = renderer_->draw(*drawable_, f, stats);
-    EXPECT_TRUE(s) << s.error;
+    EXPECT_TRUE(s) << s.error();
     std::vector<std::uint8_t> rgba;
     read_pixels_top_down(0, 0, target_->width(), target_->height(), rgba);
     return rgba;
@@ -181,7 +181,7 @@ TEST_F(RendererTest, MeshModeFillsTheSilhouette) {
   // A point asset has no triangles: mesh mode is refused, not drawn wrong.
   Status refused = renderer_->draw(*drawable_, f);
   EXPECT_FALSE(refused);
-  EXPECT_NE(refused.error.find("mesh"), std::string::npos);
+  EXPECT_NE(refused.error().find("mesh"), std::string::npos);
 }
 
 TEST_F(RendererTest, RefusesInputsThatDoNotFit) {
@@ -191,7 +191,7 @@ TEST_F(RendererTest, RefusesInputsThatDoNotFit) {
   f.lungs = bad;
   Status s = renderer_->draw(*drawable_, f);
   EXPECT_FALSE(s);
-  EXPECT_NE(s.error.find("lungs[0].force"), std::string::npos) << s.error;
+  EXPECT_NE(s.error().find("lungs[0].force"), std::string::npos) << s.error();
   f.lungs = std::span<const LungFrame>(lungs_, 1);
   EXPECT_FALSE(renderer_->draw(*drawable_, f));
   f = frame_;

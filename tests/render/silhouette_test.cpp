@@ -70,7 +70,7 @@ TEST_F(SilhouetteTest, UprightInspirationGrowsMostAtTheBase) {
     f.level_of_detail = false;
     target->bind();
     Status s = renderer->draw(*drawable, f);
-    ASSERT_TRUE(s) << s.error;
+    ASSERT_TRUE(s) << s.error();
     std::vector<std::uint8_t> rgba;
     read_pixels_top_down(0, 0, kW, kH, rgba);
     extent[phase] = silhouette(rgba, kW, kH);

@@ -64,7 +64,7 @@ TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
                            " --report-json " + dir.file("p.json");
   ASSERT_EQ(run(args, dir.file("err")), 0) << slurp(dir.file("err"));
   const Result<BakedAsset> a = load_asset(dir.file("p.lungbake"));
-  ASSERT_TRUE(a) << a.error;
+  ASSERT_TRUE(a) << a.error();
   const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("p.json")));
   for (const char* key : {"nodes", "triangles", "lungs", "bands", "coefficients", "transfer_nnz_per_row_mean",
                           "bake_s", "folded_triangles", "eq7_rms_rel_error", "alpha", "paper_interp_rms_rel_error",

@@ -184,7 +184,7 @@ TEST(ProceduralLungs, DeterministicClosedAndSized) {
     nodes += l.mesh.positions.size();
     std::vector<std::string> notes;
     const auto parts = repair_surface(l.mesh, l.name, notes);
-    ASSERT_TRUE(parts) << parts.error;
+    ASSERT_TRUE(parts) << parts.error();
     EXPECT_EQ(parts->size(), 1u);
     EXPECT_TRUE(notes.empty()) << notes.front();
     // Closed genus 0: V - E + F = 2.

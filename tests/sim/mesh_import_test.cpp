@@ -68,12 +68,12 @@ class BadMesh : public ::testing::Test {
     std::vector<std::string> notes;
     const Result<BakeReport> r = run_bake_command(command({mesh}, dir_.file("out.lungbake")), nullptr, notes);
     EXPECT_FALSE(r) << "a bad mesh was baked";
-    EXPECT_NE(r.error.find(mesh), std::string::npos) << r.error;
-    EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+    EXPECT_NE(r.error().find(mesh), std::string::npos) << r.error();
+    EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
     EXPECT_FALSE(std::filesystem::exists(dir_.file("out.lungbake")));
     for (const auto& entry : std::filesystem::directory_iterator(dir_.file("")))
-      EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << entry.path();
-    return r.error;
+      EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+    return r.error();
   }
   TempDir dir_;
 };
@@ -132,7 +132,7 @@ TEST(MeshImport, BinaryStlInCentimetresWithBothLungsInOneFile) {
   write_binary_stl(dir.file("pair.stl"), tris, static_cast<std::uint32_t>(tris.size()));
   std::vector<std::string> notes;
   const auto imported = import_lungs({dir.file("pair.stl")}, units_to_mm("cm"), notes);
-  ASSERT_TRUE(imported) << imported.error;
+  ASSERT_TRUE(imported) << imported.error();
   ASSERT_EQ(imported->size(), 2u);
   EXPECT_EQ((*imported)[0].name, "right");
   EXPECT_EQ((*imported)[1].name, "left");
@@ -171,14 +171,14 @@ TEST(MeshImport, AsciiStlObjAndPlyOneLungPerFileBake) {
     BakeCommand c = command({dir.file("right.stl"), dir.file(left)}, dir.file("pair.lungbake"));
     c.report_json = dir.file("report.json");
     const Result<BakeReport> r = run_bake_command(c, nullptr, notes);
-    ASSERT_TRUE(r) << r.error;
+    ASSERT_TRUE(r) << r.error();
     EXPECT_EQ(r->lungs, 2u);
     EXPECT_LT(r->eq7_rms_rel_error, 0.03);
     bool flipped = false;
     for (const auto& n : notes) flipped |= n.find("flipped") != std::string::npos;
     EXPECT_TRUE(flipped) << "the inward ASCII STL was said to be turned outward";
     const Result<BakedAsset> a = load_asset(dir.file("pair.lungbake"));
-    ASSERT_TRUE(a) << a.error;
+    ASSERT_TRUE(a) << a.error();
     EXPECT_EQ(a->lungs[0].name, "right");
     EXPECT_TRUE(std::filesystem::exists(dir.file("report.json")));
   }
@@ -189,7 +189,7 @@ TEST(MeshImport, RealRightLungBakesWithinTheIssuesTargets) {
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no real lung data at " << path << " (../shared is absent)";
   std::vector<std::string> notes;
   const auto lungs = import_lungs({path}, 1.0, notes);
-  ASSERT_TRUE(lungs) << lungs.error;
+  ASSERT_TRUE(lungs) << lungs.error();
   ASSERT_EQ(lungs->size(), 1u);
   EXPECT_EQ((*lungs)[0].name, "right");
   EXPECT_EQ((*lungs)[0].mesh.positions.size(), 65754u) << "the README's vertex count after welding";
@@ -199,7 +199,7 @@ TEST(MeshImport, RealRightLungBakesWithinTheIssuesTargets) {
   options.bands_sweep = false;
   options.transfer_rows = false;  // the rows are covered on the procedural pair; keep this test quick
   const Result<BakeOutput> baked = bake_lungs(*lungs, options, nullptr);
-  ASSERT_TRUE(baked) << baked.error;
+  ASSERT_TRUE(baked) << baked.error();
   const BakeReport& r = baked->report;
   EXPECT_LE(r.eq7_rms_rel_error, 0.02);
   EXPECT_NEAR(r.alpha, 1.0, 0.03);

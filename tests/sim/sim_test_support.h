@@ -18,7 +18,7 @@ inline const BakeOutput& small_bake() {
     BakeOptions options;
     options.threads = 2;
     Result<BakeOutput> r = bake_procedural(kSmallNodes, 7, options, nullptr);
-    if (!r) throw std::runtime_error(r.error);
+    if (!r) throw std::runtime_error(r.error());
     return std::move(*r);
   }();
   return out;

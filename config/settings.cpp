@@ -24,6 +24,7 @@ const char* to_string(Deform v) {
     case Deform::Gpu: return "gpu";
     case Deform::Cpu7: return "cpu7";
     case Deform::Cpu1: return "cpu1";
+    case Deform::None: return "none";
   }
   return "?";
 }

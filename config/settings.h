@@ -18,8 +18,9 @@ namespace lungar::config {
 enum class Output { Auto, Window, Fullscreen, Headless };
 enum class View { Mono, Stereo };
 enum class RenderMode { Points, Mesh };
-/// Where the deformation is evaluated: the vertex shader (eq. 7), or the CPU by eq. (7) or eq. (1).
-enum class Deform { Gpu, Cpu7, Cpu1 };
+/// Where the deformation is evaluated: the vertex shader (eq. 7), or the CPU by eq. (7) or eq. (1); or None,
+/// the rest shape undeformed (what the deformation is compared with, and what the bench measures it against).
+enum class Deform { Gpu, Cpu7, Cpu1, None };
 /// Stereo strategy: deform in each eye's draw (the paper), or once into a buffer by transform feedback.
 enum class StereoStrategy { PerEye, DeformOnce };
 enum class TrackerSource { Mock, Hid, Replay };

@@ -56,7 +56,7 @@ void read_render(TomlSection s, RenderSettings& r) {
   s.choice("mode", r.mode, {{"points", RenderMode::Points}, {"mesh", RenderMode::Mesh}});
   s.number("point_size_px", r.point_size_px, 1.0, 64.0, "pixels");
   s.boolean("overlay_rest", r.overlay_rest);
-  s.choice("deform", r.deform, {{"gpu", Deform::Gpu}, {"cpu7", Deform::Cpu7}, {"cpu1", Deform::Cpu1}});
+  s.choice("deform", r.deform, {{"gpu", Deform::Gpu}, {"cpu7", Deform::Cpu7}, {"cpu1", Deform::Cpu1}, {"none", Deform::None}});
   s.choice("stereo_strategy", r.stereo_strategy,
            {{"per_eye", StereoStrategy::PerEye}, {"deform_once", StereoStrategy::DeformOnce}});
   s.boolean("lod", r.lod);

@@ -9,7 +9,7 @@
 #include "config/settings_load.h"
 #include "lungar/version.h"
 #include "platform/registration/calibrate_command.h"
-#include "platform/runtime/runtime.h"
+#include "platform/runtime/run.h"
 
 namespace {
 
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   auto* seconds_opt = app.add_option("--seconds", seconds, "stop after S seconds (default 10 unless --frames)");
   app.add_option("--view", o.view, "mono | stereo (default: from the config)");
   app.add_option("--mode", o.mode, "points | mesh");
-  app.add_option("--deform", o.deform, "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1)");
+  app.add_option("--deform", o.deform, "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (rest shape)");
   app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default out/snapshot.png)");
   app.add_option("--stats-json", o.stats_json_path, "stats JSON (default out/stats.json)");
   app.add_option("--record", o.record_path, "record the raw tracker reports into FILE.trk");

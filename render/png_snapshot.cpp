@@ -4,12 +4,11 @@
 
 #include <png.h>
 
-#include <cerrno>
 #include <csetjmp>
 #include <cstdio>
-#include <cstring>
 #include <vector>
 
+#include "config/base/atomic_file.h"
 #include "render/frame_target.h"
 
 namespace lungar::render {
@@ -41,24 +40,14 @@ bool encode(std::FILE* file, int width, int height, const std::uint8_t* rgba, co
 
 Status write_png(const std::string& path, int width, int height, std::span<const std::uint8_t> rgba) {
   if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * height * 4) {
-    return fail(path + ": image: expected " + std::to_string(width) + "x" + std::to_string(height) + " RGBA pixels, got " +
-            std::to_string(rgba.size()) + " bytes");
+    return fail(path + ": image: expected " + std::to_string(width) + "x" + std::to_string(height) +
+                " RGBA pixels, got " + std::to_string(rgba.size()) + " bytes");
   }
-  const std::string temporary = path + ".part";
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) return fail(path + ": cannot open for writing: " + std::strerror(errno));
+  AtomicFile file;
+  if (Status opened = file.open(path); !opened) return opened;
   const char* why = "write failed";
-  const bool encoded = encode(file, width, height, rgba.data(), &why);
-  const bool closed = std::fclose(file) == 0;
-  if (!encoded || !closed) {
-    std::remove(temporary.c_str());
-    return fail(path + ": " + why);
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    return fail(path + ": cannot rename into place: " + std::strerror(errno));
-  }
-  return ok();
+  if (!encode(file.stream(), width, height, rgba.data(), &why)) return fail(path + ": " + why);
+  return file.commit();
 }
 
 Status snapshot_png(const std::string& path, int x, int y, int width, int height) {

@@ -2,22 +2,22 @@
 /// @brief Patient pose -> force SH (DESIGN.md, frame step 2).
 #include "platform/runtime/patient_force.h"
 
+#include "sim/force/force_sh.h"
+
 namespace lungar::platform {
 
-Eigen::Quaterniond lung_in_world(const Eigen::Quaterniond& patient_to_world, const Eigen::Quaterniond& registration) {
-  return (patient_to_world * registration).normalized();
-}
-
-Eigen::Quaterniond registration_rotation(const config::RegistrationSettings& r) {
+Eigen::Isometry3d registration_isometry(const config::RegistrationSettings& r) {
   const auto& q = r.rotation_wxyz;
-  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+  m.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+  m.translation() = Eigen::Vector3d(r.translation_mm[0], r.translation_mm[1], r.translation_mm[2]);
+  return m;
 }
 
 void patient_force_sh(const sim::BakedAsset& asset, config::OrientationMode mode,
-                      const Eigen::Quaterniond& lung_to_world, std::span<float> force_out) {
-  const sim::ForceMode m =
-      mode == config::OrientationMode::Exact ? sim::ForceMode::exact : sim::ForceMode::paper;
-  sim::force_sh(asset, m, lung_to_world, force_out.data());
+                      const Eigen::Quaterniond& lung_in_world, std::span<float> force_out) {
+  const sim::ForceMode m = mode == config::OrientationMode::Exact ? sim::ForceMode::exact : sim::ForceMode::paper;
+  sim::force_sh(asset, m, lung_in_world, force_out.data());
 }
 
 }  // namespace lungar::platform

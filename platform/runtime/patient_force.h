@@ -1,6 +1,7 @@
 /// @file patient_force.h
-/// @brief Frame-loop step 2: the patient tracker's pose and the registration -> gravity in the lung frame ->
-/// force SH per lung. One function, shared by the frame loop and the hardware-in-the-loop tests.
+/// @brief Frame step 2: the patient tracker's pose and the registration -> the lung frame in the world ->
+/// gravity in the lung frame -> force SH per lung. Shared by the Runtime and the hardware-in-the-loop tests.
+/// @ingroup platform
 #pragma once
 
 #include <span>
@@ -9,18 +10,21 @@
 
 #include "config/settings.h"
 #include "sim/asset/baked_asset.h"
-#include "sim/force/force_sh.h"
 
 namespace lungar::platform {
 
-/// The lung frame's orientation in the world: patient sensor -> world, after model -> patient sensor.
-Eigen::Quaterniond lung_in_world(const Eigen::Quaterniond& patient_to_world, const Eigen::Quaterniond& registration);
+/// The lung frame in the world: model -> patient sensor (the registration), then patient sensor -> world.
+inline Eigen::Isometry3d lung_to_world(const Eigen::Isometry3d& patient_to_world,
+                                       const Eigen::Isometry3d& registration) {
+  return patient_to_world * registration;
+}
 
-/// Model -> patient-sensor rotation from the config's [registration].
-Eigen::Quaterniond registration_rotation(const config::RegistrationSettings& r);
+/// Model -> patient-sensor transform from the config's [registration].
+Eigen::Isometry3d registration_isometry(const config::RegistrationSettings& r);
 
-/// Force SH of every lung (lungs x L^2, lung-major) for a lung-frame orientation; allocates nothing.
+/// Force SH of every lung (lungs x L^2, lung-major) for the lung frame's orientation in the world; allocates
+/// nothing.
 void patient_force_sh(const sim::BakedAsset& asset, config::OrientationMode mode,
-                      const Eigen::Quaterniond& lung_to_world, std::span<float> force_out);
+                      const Eigen::Quaterniond& lung_in_world, std::span<float> force_out);
 
 }  // namespace lungar::platform

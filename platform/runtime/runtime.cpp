@@ -1,66 +1,28 @@
 /// @file runtime.cpp
-/// @brief The frame loop and what it needs set up: asset, EGL output, renderer, tracker, breathing script.
+/// @brief The frame, as DESIGN.md's five steps, and what they need sized once.
 #include "platform/runtime/runtime.h"
 
 #include <GLES3/gl3.h>
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <memory>
-#include <optional>
-#include <vector>
 
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "config/settings_load.h"
 #include "drivers/mock/mock_trajectory.h"
-#include "drivers/tracker/tracker.h"
-#include "platform/egl/egl_context.h"
-#include "platform/runtime/demo_asset.h"
-#include "platform/runtime/frame_stats.h"
-#include "platform/runtime/log.h"
+#include "platform/output/hmd_views.h"
+#include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
-#include "platform/scenario_adapter.h"
-#include "platform/text_file.h"
-#include "render/frame_target.h"
-#include "render/hud_line.h"
-#include "render/lens_distortion.h"
-#include "render/lung_drawable.h"
-#include "render/png_snapshot.h"
-#include "render/renderer.h"
-#include "render/stereo_view.h"
-#include "sim/asset/asset_io.h"
-#include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/gravity.h"
 
 namespace lungar::platform {
-
-std::atomic<bool> g_stop_requested{false};
 
 namespace {
 
 using drivers::PoseSample;
 using drivers::Role;
 
-constexpr double kDemoSeconds = 10.0;
-const char* const kDefaultSnapshot = "out/snapshot.png";
-const char* const kDefaultStats = "out/stats.json";
+constexpr std::int64_t kStatusLinePeriodNs = 250'000'000;  // the status line changes four times a second
 
-glm::mat4 pose_matrix(const std::array<double, 3>& p, const std::array<double, 4>& q_wxyz) {
-  const glm::quat q(static_cast<float>(q_wxyz[0]), static_cast<float>(q_wxyz[1]), static_cast<float>(q_wxyz[2]),
-                    static_cast<float>(q_wxyz[3]));
-  glm::mat4 m = glm::mat4_cast(glm::normalize(q));
-  m[3] = glm::vec4(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]), 1.f);
-  return m;
-}
-
-Eigen::Quaterniond to_eigen(const std::array<double, 4>& q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]); }
-
-/// A pose to use before a tracker has delivered one: the mock's static scene (patient ahead, head in front).
+/// A pose to use before a source has delivered one: the mock's static scene (patient ahead, head in front).
 PoseSample fallback_pose(Role role) {
   PoseSample s;
   s.role = role;
@@ -73,368 +35,252 @@ PoseSample fallback_pose(Role role) {
 
 /// The head sensor looks along its +y with +z up (drivers/mock, the HID layouts); the renderer's head frame is
 /// OpenGL's camera (+y up, looking down -z): a +90 degree turn about x takes one to the other.
-glm::mat4 head_to_world(const PoseSample& head, const std::array<double, 3>& eye_offset_mm) {
-  glm::mat4 m = pose_matrix(head.position_mm, head.orientation_wxyz);
-  m = glm::translate(m, glm::vec3(static_cast<float>(eye_offset_mm[0]), static_cast<float>(eye_offset_mm[1]),
-                                  static_cast<float>(eye_offset_mm[2])));
-  return glm::rotate(m, glm::radians(90.f), glm::vec3(1.f, 0.f, 0.f));
+Eigen::Isometry3d head_to_world(const PoseSample& head, const std::array<double, 3>& eye_offset_mm) {
+  Eigen::Isometry3d m = pose_isometry(head);
+  m.translate(Eigen::Vector3d(eye_offset_mm[0], eye_offset_mm[1], eye_offset_mm[2]));
+  m.rotate(Eigen::AngleAxisd(EIGEN_PI / 2, Eigen::Vector3d::UnitX()));
+  return m;
 }
 
-glm::vec3 to_vec3(const std::array<double, 3>& a) {
-  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
-}
-
-struct Output {
-  std::unique_ptr<EglContext> context;
-  std::optional<render::FrameTarget> target;  ///< headless: the frame goes here
-  int width = 0, height = 0;
-};
-
-/// A window when a display is there (or asked for), else headless.
-Result<Output> open_output(const config::Settings& s, int want_width, int want_height) {
-  using config::Output;
-  Output out_kind = s.display.output;
-  const char* display = std::getenv("DISPLAY");
-  if (out_kind == Output::Auto) out_kind = (display && *display) ? Output::Window : Output::Headless;
-  platform::Output out;
-  if (out_kind != Output::Headless) {
-    WindowOptions w;
-    w.x_px = s.display.x_px;
-    w.y_px = s.display.y_px;
-    w.width_px = out_kind == Output::Fullscreen ? s.display.width_px : want_width;
-    w.height_px = out_kind == Output::Fullscreen ? s.display.height_px : want_height;
-    w.fullscreen = out_kind == Output::Fullscreen;
-    w.output = s.display.x11_output;
-    w.vsync = s.display.vsync;
-    auto ctx = EglContext::window(w);
-    if (!ctx && !w.output.empty() && w.fullscreen) {
-      return fail("display.x11_output: " + ctx.error());  // the field to fix
-    }
-    if (ctx) {
-      out.context = ctx.take();
-      out.width = out.context->width();
-      out.height = out.context->height();
-      return out;
-    }
-    if (s.display.output != Output::Auto) return fail("display: " + ctx.error());
-    log_line("no window (" + ctx.error() + "); running headless");
+render::PositionSource position_source(config::Deform d) {
+  switch (d) {
+    case config::Deform::Gpu: return render::PositionSource::Shader;
+    case config::Deform::None: return render::PositionSource::Rest;
+    case config::Deform::Cpu7:
+    case config::Deform::Cpu1: return render::PositionSource::Uploaded;
   }
-  auto ctx = EglContext::headless();
-  if (!ctx) return fail("display: " + ctx.error());
-  out.context = ctx.take();
-  auto target = render::FrameTarget::create(want_width, want_height);
-  if (!target) return fail("display: " + target.error());
-  out.target.emplace(target.take());
-  out.width = want_width;
-  out.height = want_height;
-  return out;
+  return render::PositionSource::Shader;
 }
+
+double ms_between(std::int64_t from_ns, std::int64_t to_ns) { return static_cast<double>(to_ns - from_ns) * 1e-6; }
 
 }  // namespace
 
-int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
-  log_line(config::summarize(s));
-  const bool stereo = s.hmd.view == config::View::Stereo;
-  const config::Deform deform = s.render.deform;
+Runtime::Runtime(const config::Settings& settings, RuntimeParts parts)
+    : settings_(settings), parts_(std::move(parts)), asset_(parts_.scene->asset()) {}
 
-  // --- the asset ---------------------------------------------------------------------------------------
-  DemoAssetOptions demo;
-  demo.transfer_rows = deform == config::Deform::Cpu1;
-  Result<sim::BakedAsset> loaded =
-      s.sim.asset.empty() ? load_or_bake_demo_asset(demo, log_line) : sim::load_asset(s.sim.asset);
-  if (!loaded) {
-    log_line("error: " + loaded.error());
-    return 1;
+Result<std::unique_ptr<Runtime>> Runtime::create(const config::Settings& s, RuntimeParts parts) {
+  const sim::BakedAsset& asset = parts.scene->asset();
+  if (s.render.deform == config::Deform::Cpu1 && !asset.has_transfer_rows()) {
+    return fail(parts.scene->name() + ": --deform cpu1 expected an asset baked with explicit transfer rows, got none");
   }
-  const sim::BakedAsset& asset = *loaded;
-  if (deform == config::Deform::Cpu1 && !asset.has_transfer_rows()) {
-    log_line("error: " + s.sim.asset + ": --deform cpu1 expected an asset baked with explicit transfer rows, got none");
-    return 1;
+  if (s.render.mode == config::RenderMode::Mesh && !parts.scene->drawable().has_triangles()) {
+    return fail(parts.scene->name() + ": mesh mode expected an asset with triangles, got none");
   }
-  const std::uint32_t coefficients = asset.coefficients();
-  log_line("asset: " + std::to_string(asset.vertex_count()) + " nodes, " + std::to_string(asset.lungs.size()) +
-           " lungs, " + std::to_string(coefficients) + " SH coefficients");
-
-  // --- breathing ---------------------------------------------------------------------------------------
-  const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
-  auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
-  if (!script) {
-    log_line("error: " + script.error);
-    return 1;
-  }
-  const bool scenario_turns = !script.script->orientation.turns().empty();
-
-  // --- output, renderer --------------------------------------------------------------------------------
-  const render::HmdGeometry hmd{s.hmd.ipd_mm,     s.hmd.fov_inner_deg, s.hmd.fov_outer_deg, s.hmd.fov_up_deg,
-                                s.hmd.fov_down_deg, s.hmd.eye_width_px, s.hmd.eye_height_px, s.hmd.near_mm,
-                                s.hmd.far_mm};
-  const render::StereoView stereo_view(hmd);
-  auto output = open_output(s, stereo ? stereo_view.target_width() : s.hmd.eye_width_px, stereo_view.target_height());
-  if (!output) {
-    log_line("error: " + output.error());
-    return 1;
-  }
-  log_line("output: " + output->context->describe() +
-           (output->target ? " (headless, " : " (window, ") + std::to_string(output->width) + "x" +
-           std::to_string(output->height) + ")");
-  auto drawable = render::LungDrawable::create(asset, {.half_float = s.render.half_float});
-  if (!drawable) {
-    log_line("error: asset: " + drawable.error());
-    return 1;
-  }
-  auto renderer = render::Renderer::create(*drawable);
-  if (!renderer) {
-    log_line("error: renderer: " + renderer.error());
-    return 1;
-  }
-
-  std::optional<render::HudLine> hud;
-  if (s.render.hud) hud.emplace();
-  // The lens pass: the scene is drawn undistorted into its own target, then pre-distorted into the output.
-  std::optional<render::FrameTarget> lens_scene;
-  std::optional<render::LensDistortion> lens;
-  render::LensParams lens_params;
-  std::array<std::array<float, 2>, 2> lens_centres = {std::array<float, 2>{0.5f, 0.5f}, {0.5f, 0.5f}};
-  if (s.hmd.lens.enabled) {
-    auto scene = render::FrameTarget::create(output->width, output->height);
-    auto pass = render::LensDistortion::create();
-    if (!scene || !pass) {
-      log_line("error: lens distortion: " + (scene ? pass.error() : scene.error()));
-      return 1;
-    }
-    lens_scene.emplace(scene.take());
-    lens.emplace(pass.take());
-    for (int c = 0; c < 3; ++c) {
-      lens_params.k1[c] = static_cast<float>(s.hmd.lens.k1[c]);
-      lens_params.k2[c] = static_cast<float>(s.hmd.lens.k2[c]);
-    }
-    if (stereo) lens_centres = {render::lens_centre(hmd, true), render::lens_centre(hmd, false)};
-  }
-  auto bind_output = [&] {
-    if (output->target) {
-      output->target->bind();
-    } else {
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, output->width, output->height);
-    }
-  };
-
-  // --- tracker -----------------------------------------------------------------------------------------
-  drivers::TrackerOptions topts;
-  topts.record_path = o.record_path;
-  topts.log = [](const std::string& line) { log_line(line); };
-  auto made = drivers::make_tracker(s.trackers, topts);
-  if (!made.tracker) {
-    log_line("error: tracker: " + made.error);
-    return 1;
-  }
-  drivers::Tracker& tracker = *made.tracker;
-  log_line("tracker: " + tracker.describe());
-
-  // --- per-frame state, sized once ---------------------------------------------------------------------
-  const Eigen::Quaterniond registration = registration_rotation(s.registration);
-  const glm::mat4 registration_m =
-      pose_matrix(s.registration.translation_mm, s.registration.rotation_wxyz);
-  std::vector<float> force(asset.lungs.size() * coefficients, 0.f);
-  std::vector<float> cpu_positions(deform == config::Deform::Gpu ? 0 : asset.positions.size());
-  std::optional<sim::Eq1Deformer> eq1;
-  if (deform == config::Deform::Cpu1) eq1.emplace(asset);
-  std::vector<render::LungFrame> lung_frames(asset.lungs.size());
-  const std::array<glm::vec3, 2> colors = {to_vec3(s.render.color_left), to_vec3(s.render.color_right)};
-  for (std::size_t l = 0; l < lung_frames.size(); ++l) {
-    lung_frames[l].force = std::span<const float>(force.data() + l * coefficients, coefficients);
+  std::unique_ptr<Runtime> r(new Runtime(s, std::move(parts)));
+  r->registration_ = registration_isometry(s.registration);
+  r->max_ahead_ns_ = static_cast<std::int64_t>(s.hmd.prediction_max_ms * 1e6);
+  const std::uint32_t c = asset.coefficients();
+  r->force_.assign(asset.lungs.size() * c, 0.f);
+  r->source_ = position_source(s.render.deform);
+  if (r->source_ == render::PositionSource::Uploaded) r->cpu_positions_.assign(asset.positions.size(), 0.f);
+  if (s.render.deform == config::Deform::Cpu1) r->eq1_.emplace(asset);
+  r->lung_frames_.resize(asset.lungs.size());
+  for (std::size_t l = 0; l < r->lung_frames_.size(); ++l) {
+    r->lung_frames_[l].force = std::span<const float>(r->force_.data() + l * c, c);
     // LPS: +x is the patient's left, so the lung whose centre has the larger x is the left one.
-    lung_frames[l].color = asset.lungs[l].centre[0] >= 0 ? colors[0] : colors[1];
+    r->lung_frames_[l].color = to_glm(asset.lungs[l].centre[0] >= 0 ? s.render.color_left : s.render.color_right);
   }
-  std::array<render::EyeView, 2> eyes;
-  PoseSample last_patient = fallback_pose(Role::Patient);
-  PoseSample last_head = fallback_pose(Role::Head);
-  FrameStats stats(o.frames ? static_cast<std::size_t>(*o.frames) + 1 : 8192);
-  const std::int64_t max_ahead_ns = static_cast<std::int64_t>(s.hmd.prediction_max_ms * 1e6);
-
-  const std::int64_t t0 = drivers::monotonic_ns();
-  std::int64_t previous = t0;
-  double frame_estimate_ms = 16.0;
-  long frame = 0;
-  std::int64_t hud_updated = 0;
-  bool window_open = true;
-
-  // One frame: DESIGN.md's five steps. `final_frame` is drawn after the loop for the snapshot, not counted.
-  auto draw_frame = [&](bool present) -> bool {
-    const std::int64_t now = drivers::monotonic_ns();
-    const double t = static_cast<double>(now - t0) * 1e-9;
-    // 1. breathing
-    const sim::BreathingSample breath = script.script->driver.at(t);
-    // 2. patient pose -> gravity in the lung frame -> force SH per lung
-    const PoseSample patient = tracker.latest(Role::Patient, now);
-    if (patient.valid()) last_patient = patient;
-    Eigen::Quaterniond patient_q = to_eigen(last_patient.orientation_wxyz);
-    if (scenario_turns && s.trackers.source == config::TrackerSource::Mock) {
-      patient_q = script.script->orientation.at(t);  // a teaching scenario turns the patient itself
-    }
-    const Eigen::Quaterniond lung_q = lung_in_world(patient_q, registration);
-    patient_force_sh(asset, s.sim.orientation_mode, lung_q, force);
-    // 3. head pose, predicted to when this frame will be shown
-    const std::int64_t display_ns = now + static_cast<std::int64_t>(frame_estimate_ms * 1e6);
-    const PoseSample head = tracker.predicted(Role::Head, display_ns, max_ahead_ns);
-    if (head.valid()) last_head = head;
-    const PoseSample measured_head = tracker.latest(Role::Head, now);  // its arrival dates the pose age
-    const glm::mat4 head_m = head_to_world(last_head, s.hmd.head_to_eye_mm);
-    std::span<const render::EyeView> eye_span;
-    if (stereo) {
-      eyes = stereo_view.eyes(head_m);
-      eye_span = std::span<const render::EyeView>(eyes.data(), 2);
-    } else {
-      eyes[0] = stereo_view.mono(head_m, output->width, output->height);
-      eye_span = std::span<const render::EyeView>(eyes.data(), 1);
-    }
-    if (!output->target) {  // a window: eyes fill it side by side whatever its size
-      const int n = static_cast<int>(eye_span.size());
-      for (int e = 0; e < n; ++e) eyes[e].viewport = {e * output->width / n, 0, output->width / n, output->height};
-    }
-    // 4. uniforms (or CPU deformation), draw
-    render::PositionSource source = render::PositionSource::Shader;
-    if (deform != config::Deform::Gpu) {
-      if (deform == config::Deform::Cpu7) {
-        sim::deform_eq7(asset, force, breath.dv_ml, cpu_positions);
-      } else {
-        eq1->deform(sim::gravity_in_lung_frame(lung_q), breath.dv_ml, cpu_positions);
-      }
-      if (auto up = drawable->upload_positions(cpu_positions); !up) log_line("error: " + up.error());
-      source = render::PositionSource::Uploaded;
-    }
-    for (std::size_t l = 0; l < lung_frames.size(); ++l) {
-      lung_frames[l].volume_change_ml = static_cast<float>(breath.dv_ml * asset.lungs[l].volume_share);
-    }
-    render::FrameInputs in;
-    in.lungs = lung_frames;
-    in.eyes = eye_span;
-    in.model = pose_matrix(last_patient.position_mm, {patient_q.w(), patient_q.x(), patient_q.y(), patient_q.z()}) *
-               registration_m;
-    in.mode = s.render.mode == config::RenderMode::Mesh ? render::DrawMode::Mesh : render::DrawMode::Points;
-    in.source = source;
-    in.strategy = s.render.stereo_strategy == config::StereoStrategy::PerEye ? render::StereoStrategy::PerEye
-                                                                             : render::StereoStrategy::DeformOnce;
-    in.overlay_rest = s.render.overlay_rest;
-    in.point_size_px = static_cast<float>(s.render.point_size_px);
-    in.level_of_detail = s.render.lod;
-    in.background = to_vec3(s.render.background);
-    if (lens_scene) {
-      lens_scene->bind();
-    } else {
-      bind_output();
-    }
-    if (auto drawn = renderer->draw(*drawable, in); !drawn) {
-      log_line("error: draw: " + drawn.error());
-      return false;
-    }
-    if (lens) {
-      bind_output();
-      const auto centres = std::span<const std::array<float, 2>>(lens_centres.data(), eye_span.size());
-      if (auto warped = lens->apply(*lens_scene, eye_span, centres, lens_params); !warped) {
-        log_line("error: lens distortion: " + warped.error());
-        return false;
-      }
-    }
-    if (hud) {
-      // The on-screen line: frame rate, pose age, tracker state; refreshed four times a second.
-      if (now - hud_updated >= 250000000) {
-        hud_updated = now;
-        const double age_ms =
-            measured_head.valid() ? static_cast<double>(now - measured_head.t_arrival_ns) * 1e-6 : -1.0;
-        char text[render::HudLine::kMaxChars + 1];
-        std::snprintf(text, sizeof text, "%.0f FPS  POSE AGE %.0f MS  TRACKER %s%s  DV %.0f ML",
-                      frame_estimate_ms > 0 ? 1000.0 / frame_estimate_ms : 0.0, age_ms,
-                      drivers::to_string(tracker.state()), measured_head.stale() ? " (STALE POSE)" : "",
-                      breath.dv_ml);
-        hud->set_text(text);
-      }
-      for (const auto& eye : eye_span) hud->draw(eye.viewport);
-    }
-    // 5. swap or finish; record timing and pose age
-    if (present) {
-      if (output->target) {
-        glFinish();
-      } else if (auto swapped = output->context->swap_buffers(); !swapped) {
-        log_line("error: " + swapped.error());
-        return false;
-      }
-      const std::int64_t submitted = drivers::monotonic_ns();
-      const double frame_ms = static_cast<double>(submitted - previous) * 1e-6;
-      previous = submitted;
-      frame_estimate_ms = 0.9 * frame_estimate_ms + 0.1 * frame_ms;
-      const double age_ms =
-          measured_head.valid() ? static_cast<double>(submitted - measured_head.t_arrival_ns) * 1e-6 : -1.0;
-      stats.record(frame_ms, age_ms, breath.dv_ml);
-    }
-    return true;
-  };
-
-  {
-    char limit[96];
-    if (o.frames && limit_s > 0) {
-      std::snprintf(limit, sizeof limit, "%ld frames or %.1f s", *o.frames, limit_s);
-    } else if (o.frames) {
-      std::snprintf(limit, sizeof limit, "%ld frames", *o.frames);
-    } else if (limit_s > 0) {
-      std::snprintf(limit, sizeof limit, "%.1f s", limit_s);
-    } else {
-      std::snprintf(limit, sizeof limit, "until stopped");
-    }
-    log_line(std::string("running ") + limit + " (Ctrl-C stops)");
+  if (s.render.hud) r->hud_.emplace();
+  if (s.hmd.lens.enabled) {
+    if (Status lens = r->prepare_lens(); !lens) return lens.with_context("lens distortion: ");
   }
-  int exit_code = 0;
-  while (!g_stop_requested.load()) {
-    if (o.frames && frame >= *o.frames) break;
-    if (limit_s > 0 && static_cast<double>(drivers::monotonic_ns() - t0) * 1e-9 >= limit_s) break;
-    if (s.trackers.source == config::TrackerSource::Replay && tracker.finished() && frame > 0) {
-      log_line("replay finished");
-      break;
-    }
-    if (!output->target) window_open = output->context->process_events();
-    if (!window_open) break;
-    if (!draw_frame(true)) {
-      exit_code = 1;
-      break;
-    }
-    ++frame;
-  }
-  const double wall_s = static_cast<double>(drivers::monotonic_ns() - t0) * 1e-9;
-  if (g_stop_requested.load()) log_line("stop requested; writing the outputs");
+  r->last_patient_ = fallback_pose(Role::Patient);
+  r->last_head_ = fallback_pose(Role::Head);
+  r->previous_submit_ns_ = r->parts_.clock();
+  return r;
+}
 
-  // --- outputs -----------------------------------------------------------------------------------------
-  const std::string snapshot = !o.snapshot_path.empty() ? o.snapshot_path : std::string(kDefaultSnapshot);
-  const std::string stats_path = !o.stats_json_path.empty() ? o.stats_json_path : std::string(kDefaultStats);
-  if (exit_code == 0 && draw_frame(false)) {
-    std::error_code ec;
-    if (std::filesystem::path(snapshot).has_parent_path()) {
-      std::filesystem::create_directories(std::filesystem::path(snapshot).parent_path(), ec);
-    }
-    if (auto shot = render::snapshot_png(snapshot, 0, 0, output->width, output->height); !shot) {
-      log_line("error: snapshot: " + shot.error());
-      exit_code = 1;
-    } else {
-      log_line("snapshot: " + snapshot);
-    }
+/// The lens pass draws the scene undistorted into its own target, then pre-distorted into the output's.
+Status Runtime::prepare_lens() {
+  const auto [w, h] = parts_.output->target_size();
+  auto scene = render::FrameTarget::create(w, h);
+  if (!scene) return scene.with_context("");
+  auto pass = render::LensDistortion::create();
+  if (!pass) return pass.with_context("");
+  lens_scene_.emplace(scene.take());
+  lens_.emplace(pass.take());
+  for (int c = 0; c < 3; ++c) {
+    lens_params_.k1[c] = static_cast<float>(settings_.hmd.lens.k1[c]);
+    lens_params_.k2[c] = static_cast<float>(settings_.hmd.lens.k2[c]);
   }
-  if (!output->target) (void)output->context->swap_buffers();  // show the last frame; the outputs are written either way
-  const drivers::TrackerStats ts = tracker.stats();
-  tracker.stop();
-  // The mean delivered rate over the run: the instantaneous rate says little once a replay has ended.
-  const double rate_hz = wall_s > 0 ? static_cast<double>(ts.accepted) / wall_s : 0.0;
-  const TrackerCounters counters{ts.reports, ts.malformed, ts.reconnects, rate_hz, drivers::to_string(ts.state)};
-  std::string write_error;
-  if (!write_text_atomically(stats_path,
-                             stats.to_json(config::to_string(s.hmd.view), config::to_string(deform),
-                                           asset.vertex_count(), counters, wall_s),
-                             write_error)) {
-    log_line("error: stats: " + write_error);
-    exit_code = 1;
+  const render::HmdGeometry hmd = hmd_geometry(settings_.hmd);
+  lens_centres_ = {render::lens_centre(hmd, true), render::lens_centre(hmd, false)};
+  if (settings_.hmd.view == config::View::Mono) lens_centres_[0] = {0.5f, 0.5f};
+  return ok();
+}
+
+Status Runtime::frame() { return draw_frame(nullptr); }
+
+Status Runtime::final_frame(const std::string& png_path) { return draw_frame(&png_path); }
+
+bool Runtime::keep_running() {
+  if (!parts_.output->poll_events()) return false;
+  return !(frames_ > 0 && parts_.poses->finished());
+}
+
+/// DESIGN.md's "One frame". The final frame (a snapshot) is drawn the same way but not recorded.
+Status Runtime::draw_frame(const std::string* snapshot_png) {
+  const std::int64_t now = parts_.clock();
+  Result<FrameTiming> timing = parts_.output->begin_frame(now);
+  if (!timing) return timing.with_context("output: ");
+  const std::int64_t display_ns =
+      timing->display_ns != 0 ? timing->display_ns : now + static_cast<std::int64_t>(frame_estimate_ms_ * 1e6);
+  FrameState state;
+  state.now_ns = now;
+  state.breath = breathe(now);                                  // 1. t -> P(t) -> V(t) -> dV(t)
+  force_sh(now, state);                                         // 2. patient pose -> g in the lung frame -> f_lm
+  const FrameViews& views = head_views(now, display_ns);        // 3. head pose at display time -> eye views
+  if (timing->should_render) {
+    if (Status drawn = deform_and_draw(state, views); !drawn) return drawn;  // 4. dV * f_lm -> shader -> points
+  }
+  if (snapshot_png != nullptr) {
+    if (Status shot = parts_.output->snapshot(*snapshot_png); !shot) return shot.with_context("snapshot: ");
+    return parts_.output->end_frame();
+  }
+  return present_and_record(state);                               // 5. swap or finish; timing and pose age
+}
+
+sim::BreathingSample Runtime::breathe(std::int64_t now_ns) const { return parts_.breathing->at(now_ns); }
+
+void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
+  const PoseSample patient = parts_.poses->latest(Role::Patient, now_ns);
+  if (patient.valid()) last_patient_ = patient;
+  const Eigen::Isometry3d lung = lung_to_world(pose_isometry(last_patient_), registration_);
+  state.patient = last_patient_;
+  state.lung_in_world = Eigen::Quaterniond(lung.rotation()).normalized();
+  state.lung_origin_mm = lung.translation();
+  patient_force_sh(asset_, settings_.sim.orientation_mode, state.lung_in_world, force_);
+}
+
+const FrameViews& Runtime::head_views(std::int64_t now_ns, std::int64_t display_ns) {
+  const PoseSample head = parts_.poses->predicted(Role::Head, display_ns, max_ahead_ns_);
+  if (head.valid()) last_head_ = head;
+  measured_head_ = parts_.poses->latest(Role::Head, now_ns);  // its arrival dates the pose age
+  return parts_.output->views(to_glm(head_to_world(last_head_, settings_.hmd.head_to_eye_mm)));
+}
+
+Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views) {
+  if (source_ == render::PositionSource::Uploaded) {
+    deform_on_cpu(state);
+    if (Status up = parts_.scene->drawable().upload_positions(cpu_positions_); !up) return up;
+  }
+  for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
+    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * asset_.lungs[l].volume_share);
+  }
+  if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
+  draw_status_line(state.now_ns, state.breath.dv_ml, views);
+  for (const auto& listener : parts_.listeners) listener->on_frame(state);
+  return ok();
+}
+
+/// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
+void Runtime::deform_on_cpu(const FrameState& state) {
+  if (settings_.render.deform == config::Deform::Cpu7) {
+    sim::deform_eq7(asset_, force_, state.breath.dv_ml, cpu_positions_);
   } else {
-    log_line("stats: " + stats_path);
+    eq1_->deform(sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml, cpu_positions_);
   }
-  log_line(stats.summary(counters));
-  return exit_code;
+}
+
+render::FrameInputs Runtime::frame_inputs(const FrameState& state, const FrameViews& views) const {
+  const config::RenderSettings& r = settings_.render;
+  render::FrameInputs in;
+  in.lungs = lung_frames_;
+  in.eyes = views.span();
+  in.model = to_glm(lung_to_world(pose_isometry(state.patient), registration_));
+  in.mode = r.mode == config::RenderMode::Mesh ? render::DrawMode::Mesh : render::DrawMode::Points;
+  in.source = source_;
+  in.strategy = r.stereo_strategy == config::StereoStrategy::PerEye ? render::StereoStrategy::PerEye
+                                                                    : render::StereoStrategy::DeformOnce;
+  in.overlay_rest = r.overlay_rest;
+  in.point_size_px = static_cast<float>(r.point_size_px);
+  in.level_of_detail = r.lod;
+  in.background = to_glm(r.background);
+  return in;
+}
+
+/// Side-by-side views are drawn in one call (through the lens pass when there is one); views with their own
+/// targets one by one.
+Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& views) {
+  render::Renderer& renderer = parts_.scene->renderer();
+  render::LungDrawable& drawable = parts_.scene->drawable();
+  if (!views.shared_target) {
+    render::FrameInputs one = in;
+    for (std::size_t i = 0; i < views.count; ++i) {
+      parts_.output->bind_target(i);
+      one.eyes = std::span<const render::EyeView>(&views.eyes[i], 1);
+      if (Status drawn = renderer.draw(drawable, one); !drawn) return drawn.with_context("draw: ");
+    }
+    return ok();
+  }
+  if (lens_scene_) {
+    lens_scene_->bind();
+  } else {
+    parts_.output->bind_target(0);
+  }
+  if (Status drawn = renderer.draw(drawable, in); !drawn) return drawn.with_context("draw: ");
+  if (!lens_) return ok();
+  parts_.output->bind_target(0);
+  const auto centres = std::span<const std::array<float, 2>>(lens_centres_.data(), views.count);
+  if (Status warped = lens_->apply(*lens_scene_, views.span(), centres, lens_params_); !warped) {
+    return warped.with_context("lens distortion: ");
+  }
+  return ok();
+}
+
+/// The on-screen line: frame rate, pose age, source state, dV; re-rasterised four times a second.
+void Runtime::draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views) {
+  if (!hud_) return;
+  if (now_ns - hud_updated_ns_ >= kStatusLinePeriodNs) {
+    hud_updated_ns_ = now_ns;
+    const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, now_ns) : -1.0;
+    char text[render::HudLine::kMaxChars + 1];
+    std::snprintf(text, sizeof text, "%.0f FPS  POSE AGE %.0f MS  TRACKER %s%s  DV %.0f ML",
+                  frame_estimate_ms_ > 0 ? 1000.0 / frame_estimate_ms_ : 0.0, age_ms, parts_.poses->state(),
+                  measured_head_.stale() ? " (STALE POSE)" : "", dv_ml);
+    hud_->set_text(text);
+  }
+  for (std::size_t i = 0; i < views.count; ++i) {
+    if (!views.shared_target) parts_.output->bind_target(i);
+    hud_->draw(views.eyes[i].viewport);
+  }
+}
+
+Status Runtime::present_and_record(const FrameState& state) {
+  if (Status shown = parts_.output->end_frame(); !shown) return shown.with_context("output: ");
+  const std::int64_t submitted = parts_.clock();
+  const double frame_ms = ms_between(previous_submit_ns_, submitted);
+  previous_submit_ns_ = submitted;
+  frame_estimate_ms_ = 0.9 * frame_estimate_ms_ + 0.1 * frame_ms;
+  const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, submitted) : -1.0;
+  stats_.record(frame_ms, age_ms, state.breath.dv_ml);
+  ++frames_;
+  return ok();
+}
+
+nlohmann::ordered_json Runtime::stats_json(double wall_s) const {
+  nlohmann::ordered_json j = stats_.to_json();
+  j["nodes"] = asset_.vertex_count();
+  j["view"] = config::to_string(settings_.hmd.view);
+  j["deform"] = config::to_string(settings_.render.deform);
+  j["asset"] = parts_.scene->name();
+  nlohmann::json parts = nlohmann::json::object();
+  parts_.poses->add_stats(parts, wall_s);
+  parts_.breathing->add_stats(parts);
+  parts_.output->add_stats(parts);
+  for (const auto& [key, value] : parts.items()) j[key] = value;
+  j["wall_s"] = wall_s;
+  return j;
+}
+
+std::string Runtime::summary(double wall_s) const {
+  const SourceCounters c = parts_.poses->counters(wall_s);
+  char line[320];
+  std::snprintf(line, sizeof line, "%s; tracker %s: %llu reports at %.1f Hz, %llu malformed, %llu reconnects",
+                stats_.summary().c_str(), c.state, static_cast<unsigned long long>(c.reports), c.rate_hz,
+                static_cast<unsigned long long>(c.malformed), static_cast<unsigned long long>(c.reconnects));
+  return line;
 }
 
 }  // namespace lungar::platform

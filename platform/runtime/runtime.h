@@ -1,20 +1,115 @@
 /// @file runtime.h
-/// @brief The lungar runtime: tracker thread(s) -> poses; breathing dV(t); patient pose -> force SH; head pose ->
-/// eye views; draw; swap or read back (DESIGN.md, "One frame").
+/// @brief The lungar Runtime: create / frame / finish. Its frame is DESIGN.md's "One frame", step by step:
+/// breathe -> force SH -> head views -> deform and draw -> present and record. What it reads and where it draws
+/// plug in behind small interfaces (FrameOutput, PoseSource, BreathingClock, FrameListener), so a new output or
+/// pose source is a new implementation, never a branch in the frame.
+/// @ingroup platform
 #pragma once
 
-#include <atomic>
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include "config/base/clock.h"
+#include "config/base/result.h"
 #include "config/settings.h"
-#include "platform/runtime/runtime_options.h"
+#include "platform/runtime/breathing_clock.h"
+#include "platform/runtime/frame_listener.h"
+#include "platform/runtime/frame_output.h"
+#include "platform/runtime/frame_stats.h"
+#include "platform/runtime/lung_scene.h"
+#include "platform/runtime/pose_source.h"
+#include "render/frame_target.h"
+#include "render/hud_line.h"
+#include "render/lens_distortion.h"
+#include "render/renderer.h"
+#include "sim/deform/deform_eq1.h"
 
 namespace lungar::platform {
 
-/// Set from a signal handler (SIGINT, SIGTERM): the loop ends after the current frame and writes its outputs.
-extern std::atomic<bool> g_stop_requested;
+/// What a Runtime is made of. The output's GL context must be current on the thread that calls frame().
+struct RuntimeParts {
+  std::shared_ptr<LungScene> scene;
+  std::unique_ptr<FrameOutput> output;
+  std::unique_ptr<PoseSource> poses;
+  std::unique_ptr<BreathingClock> breathing;
+  std::vector<std::shared_ptr<FrameListener>> listeners;
+  /// The frame's clock (monotonic ns); the bench scripts it so that every configuration sees the same inputs.
+  std::function<std::int64_t()> clock = monotonic_ns;
+};
 
-/// Runs until the frame or time limit, the window is closed, the replay ends or a stop is requested. Returns the
-/// process exit code; errors are logged as one line naming the file or device and what was expected.
-int run_runtime(const config::Settings& settings, const RuntimeOptions& options);
+class Runtime {
+ public:
+  /// Checks that the parts fit the settings (CPU eq. 1 needs transfer rows, mesh mode needs triangles) and sizes
+  /// every per-frame buffer once.
+  static Result<std::unique_ptr<Runtime>> create(const config::Settings& settings, RuntimeParts parts);
+
+  /// One frame, presented and recorded in the stats.
+  Status frame();
+  /// One more frame, not recorded, whose picture is written to `png_path` before it is presented.
+  Status final_frame(const std::string& png_path);
+  /// False once the output was closed or a finite pose source has delivered everything (after the first frame).
+  bool keep_running();
+  /// The stats JSON of the frames so far (DESIGN.md keys), every part adding its own; `wall_s` is the run's length.
+  nlohmann::ordered_json stats_json(double wall_s) const;
+  /// One human line for the console.
+  std::string summary(double wall_s) const;
+
+  long frames() const { return frames_; }
+  FrameOutput& output() { return *parts_.output; }
+  PoseSource& poses() { return *parts_.poses; }
+  const FrameStats& frame_stats() const { return stats_; }
+
+ private:
+  Runtime(const config::Settings& settings, RuntimeParts parts);
+  Status prepare_lens();
+  Status draw_frame(const std::string* snapshot_png);
+
+  // DESIGN.md's "One frame"
+  sim::BreathingSample breathe(std::int64_t now_ns) const;                        // 1.
+  void force_sh(std::int64_t now_ns, FrameState& state);                          // 2.
+  const FrameViews& head_views(std::int64_t now_ns, std::int64_t display_ns);     // 3.
+  Status deform_and_draw(const FrameState& state, const FrameViews& views);       // 4.
+  Status present_and_record(const FrameState& state);                             // 5.
+
+  void deform_on_cpu(const FrameState& state);
+  render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
+  Status draw_views(const render::FrameInputs& in, const FrameViews& views);
+  void draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views);
+
+  const config::Settings settings_;
+  RuntimeParts parts_;
+  const sim::BakedAsset& asset_;
+  Eigen::Isometry3d registration_ = Eigen::Isometry3d::Identity();  ///< lung model -> patient sensor
+  std::int64_t max_ahead_ns_ = 0;
+
+  // Per-frame buffers, sized once.
+  std::vector<float> force_;           ///< f_lm of every lung, lung-major
+  std::vector<float> cpu_positions_;   ///< --deform cpu7 | cpu1
+  std::optional<sim::Eq1Deformer> eq1_;
+  std::vector<render::LungFrame> lung_frames_;
+  render::PositionSource source_ = render::PositionSource::Shader;
+
+  // Overlays: the status line, and the lens pass drawing the scene through an intermediate target.
+  std::optional<render::HudLine> hud_;
+  std::optional<render::FrameTarget> lens_scene_;
+  std::optional<render::LensDistortion> lens_;
+  render::LensParams lens_params_;
+  std::array<std::array<float, 2>, 2> lens_centres_{};
+
+  drivers::PoseSample last_patient_, last_head_, measured_head_;
+  double frame_estimate_ms_ = 16.0;
+  std::int64_t previous_submit_ns_ = 0;
+  std::int64_t hud_updated_ns_ = 0;
+  long frames_ = 0;
+  FrameStats stats_;
+};
 
 }  // namespace lungar::platform

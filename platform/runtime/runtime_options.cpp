@@ -46,8 +46,10 @@ std::string apply_overrides(const RuntimeOptions& o, config::Settings& s) {
       s.render.deform = Deform::Cpu7;
     } else if (o.deform == "cpu1") {
       s.render.deform = Deform::Cpu1;
+    } else if (o.deform == "none") {
+      s.render.deform = Deform::None;
     } else {
-      return "--deform: expected gpu, cpu7 or cpu1, got '" + o.deform + "'";
+      return "--deform: expected gpu, cpu7, cpu1 or none, got '" + o.deform + "'";
     }
   }
   if (o.frames && *o.frames <= 0) return "--frames: expected a positive number of frames, got " + std::to_string(*o.frames);

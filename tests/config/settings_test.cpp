@@ -139,7 +139,7 @@ TEST(BadConfig, FractionWhereAnIntegerIsExpected) {
 
 TEST(BadConfig, UnknownEnumValue) {
   EXPECT_EQ(error_of("[render]\ndeform = \"cuda\"\n"),
-            "bad.toml:2: key 'render.deform': expected one of \"gpu\" | \"cpu7\" | \"cpu1\", got the string \"cuda\"");
+            "bad.toml:2: key 'render.deform': expected one of \"gpu\" | \"cpu7\" | \"cpu1\" | \"none\", got the string \"cuda\"");
 }
 
 TEST(BadConfig, UnknownPreset) {

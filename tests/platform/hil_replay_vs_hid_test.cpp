@@ -21,6 +21,7 @@
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/egl/egl_context.h"
+#include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
 #include "render/lung_drawable.h"
 #include "render/renderer.h"
@@ -108,8 +109,8 @@ class HardwareInTheLoop : public ::testing::Test {
     FrameRecord f;
     f.t_device_ns = p.t_device_ns;
     f.q = p.orientation_wxyz;
-    const Eigen::Quaterniond lung_q = platform::lung_in_world(
-        Eigen::Quaterniond(f.q[0], f.q[1], f.q[2], f.q[3]), Eigen::Quaterniond::Identity());
+    const Eigen::Quaterniond lung_q(
+        platform::lung_to_world(platform::pose_isometry(p), Eigen::Isometry3d::Identity()).rotation());
     const Eigen::Vector3d g = sim::gravity_in_lung_frame(lung_q);
     f.g = {g.x(), g.y(), g.z()};
     const std::uint32_t c = asset.coefficients();

@@ -38,7 +38,7 @@ TEST(RuntimeOptions, BadValuesAreNamed) {
   EXPECT_EQ(apply_overrides(o, s), "--view: expected mono or stereo, got 'left'");
   o = {};
   o.deform = "cuda";
-  EXPECT_EQ(apply_overrides(o, s), "--deform: expected gpu, cpu7 or cpu1, got 'cuda'");
+  EXPECT_EQ(apply_overrides(o, s), "--deform: expected gpu, cpu7, cpu1 or none, got 'cuda'");
   o = {};
   o.frames = 0;
   EXPECT_EQ(apply_overrides(o, s), "--frames: expected a positive number of frames, got 0");

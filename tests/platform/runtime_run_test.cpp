@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/runtime/runtime.h"
+#include "platform/runtime/run.h"
 
 using namespace lungar;
 

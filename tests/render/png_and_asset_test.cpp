@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "render/lung_drawable.h"
 #include "render/png_snapshot.h"
@@ -20,14 +21,18 @@ TEST(PngTest, WrongPixelCountIsRefusedAndNothingWritten) {
   EXPECT_FALSE(s);
   EXPECT_NE(s.error().find(path), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path + ".part"));
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
 }
 
 TEST(PngTest, UnwritableDirectoryIsAnError) {
+  // A missing folder is made (as for every output); a folder that is a plain file cannot be, even as root.
+  const std::string blocker = std::string(LUNGAR_BINARY_DIR) + "/png-blocker";
+  std::ofstream(blocker) << "a file, not a folder";
   std::vector<std::uint8_t> pixels(4 * 4 * 4, 255);
-  Status s = write_png("/nonexistent-dir/x.png", 4, 4, pixels);
+  Status s = write_png(blocker + "/x.png", 4, 4, pixels);
   EXPECT_FALSE(s);
-  EXPECT_NE(s.error().find("/nonexistent-dir/x.png"), std::string::npos);
+  EXPECT_NE(s.error().find(blocker + "/x.png"), std::string::npos);
+  std::filesystem::remove(blocker);
 }
 
 TEST(PngTest, WritesAFileOfPlausibleSize) {

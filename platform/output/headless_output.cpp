@@ -1,0 +1,40 @@
+/// @file headless_output.cpp
+/// @brief A surfaceless context and one framebuffer object.
+#include "platform/output/headless_output.h"
+
+#include <GLES3/gl3.h>
+
+#include "render/png_snapshot.h"
+
+namespace lungar::platform {
+
+HeadlessOutput::HeadlessOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd,
+                               render::FrameTarget target)
+    : context_(std::move(context)), target_(std::move(target)),
+      views_(hmd, target_->width(), target_->height()) {}
+
+Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::HmdSettings& hmd) {
+  auto context = EglContext::headless();
+  if (!context) return context.with_context("display: ");
+  const auto [w, h] = HmdViews::target_size(hmd);
+  auto target = render::FrameTarget::create(w, h);
+  if (!target) return target.with_context("display: ");
+  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(context.take(), hmd, target.take()));
+}
+
+std::string HeadlessOutput::describe() const {
+  return context_->describe() + " (headless, " + std::to_string(target_->width()) + "x" +
+         std::to_string(target_->height()) + ")";
+}
+
+Status HeadlessOutput::end_frame() {
+  glFinish();  // the frame is done when its pixels are
+  return ok();
+}
+
+Status HeadlessOutput::snapshot(const std::string& png_path) {
+  target_->bind();
+  return render::snapshot_png(png_path, 0, 0, target_->width(), target_->height());
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,39 @@
+/// @file headless_output.h
+/// @brief Frames drawn off-screen (surfaceless EGL, Mesa llvmpipe where there is no GPU) into a framebuffer
+/// object, finished with glFinish: the output of tests, the bench, CI and a machine without a display.
+/// @ingroup platform
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "config/settings.h"
+#include "platform/egl/egl_context.h"
+#include "platform/output/hmd_views.h"
+#include "platform/runtime/frame_output.h"
+#include "render/frame_target.h"
+
+namespace lungar::platform {
+
+class HeadlessOutput final : public FrameOutput {
+ public:
+  /// Makes a surfaceless context current and a target two eyes (stereo) or one eye (mono) in size.
+  static Result<std::unique_ptr<HeadlessOutput>> create(const config::HmdSettings& hmd);
+
+  std::string describe() const override;
+  bool poll_events() override { return true; }
+  Result<FrameTiming> begin_frame(std::int64_t) override { return FrameTiming{}; }
+  const FrameViews& views(const glm::mat4& head_to_world) override { return views_.views(head_to_world); }
+  void bind_target(std::size_t) override { target_->bind(); }
+  std::array<int, 2> target_size() const override { return {target_->width(), target_->height()}; }
+  Status end_frame() override;
+  Status snapshot(const std::string& png_path) override;
+
+ private:
+  HeadlessOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd, render::FrameTarget target);
+  std::unique_ptr<EglContext> context_;
+  std::optional<render::FrameTarget> target_;
+  HmdViews views_;
+};
+
+}  // namespace lungar::platform

@@ -1,0 +1,37 @@
+/// @file hmd_views.h
+/// @brief The views of the outputs that lungar itself places on a screen (headless, X11 window, full-screen HMD
+/// in extended mode): both eyes side by side in one target, each eye's view and off-axis projection from the
+/// [hmd] settings (IPD, per-eye field of view), or one mono view.
+/// @ingroup platform
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include "config/settings.h"
+#include "platform/runtime/frame_output.h"
+#include "render/stereo_view.h"
+
+namespace lungar::platform {
+
+/// The [hmd] settings as render/ takes them (render/ does not read config/).
+render::HmdGeometry hmd_geometry(const config::HmdSettings& hmd);
+
+class HmdViews {
+ public:
+  HmdViews(const config::HmdSettings& hmd, int target_width_px, int target_height_px)
+      : stereo_(hmd.view == config::View::Stereo), view_(hmd_geometry(hmd)), width_(target_width_px),
+        height_(target_height_px) {}
+
+  /// Stereo: left eye in the left half of the target, right eye in the right half; mono: the whole target.
+  const FrameViews& views(const glm::mat4& head_to_world);
+  /// The size a headless target needs: two eyes side by side, or one eye.
+  static std::array<int, 2> target_size(const config::HmdSettings& hmd);
+
+ private:
+  bool stereo_;
+  render::StereoView view_;
+  int width_, height_;
+  FrameViews views_;
+};
+
+}  // namespace lungar::platform

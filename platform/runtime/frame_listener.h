@@ -1,0 +1,31 @@
+/// @file frame_listener.h
+/// @brief What a frame decided, for those who follow it without drawing (a classroom instructor publishing the
+/// patient, a recorder): called once per frame after the draw, on the frame loop's thread.
+/// @ingroup platform
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/Geometry>
+
+#include "drivers/pose/pose_sample.h"
+#include "sim/breathing/driver.h"
+
+namespace lungar::platform {
+
+struct FrameState {
+  std::int64_t now_ns = 0;                  ///< the frame's time (monotonic)
+  sim::BreathingSample breath;              ///< step 1
+  drivers::PoseSample patient;              ///< the patient pose the frame used (world, mm)
+  Eigen::Quaterniond lung_in_world = Eigen::Quaterniond::Identity();  ///< step 2: after the registration
+  Eigen::Vector3d lung_origin_mm = Eigen::Vector3d::Zero();           ///< the lung frame's origin in the world
+};
+
+class FrameListener {
+ public:
+  virtual ~FrameListener() = default;
+  /// Must not block or allocate: it runs inside the frame loop.
+  virtual void on_frame(const FrameState& state) = 0;
+};
+
+}  // namespace lungar::platform

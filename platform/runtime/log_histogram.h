@@ -1,0 +1,36 @@
+/// @file log_histogram.h
+/// @brief Percentiles of positive values in constant memory: a histogram with logarithmic buckets, so a run of
+/// eight hours at display rate costs what a run of ten seconds does.
+/// @ingroup platform
+///
+/// Buckets grow by 1 % from 1 us (1e-3 ms) to 1e5 ms; a percentile is the geometric centre of the bucket that
+/// holds the nearest-rank value, so it is within 0.5 % of the value a sorted list would give (values outside the
+/// range land in the end buckets and are reported as the exact minimum or maximum).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace lungar::platform {
+
+class LogHistogram {
+ public:
+  static constexpr double kMin = 1e-3, kMax = 1e5, kGrowth = 1.01;
+  static constexpr double kRelativeError = 0.005;  ///< of a percentile, for values in [kMin, kMax]
+  static constexpr int kBuckets = 1852;            ///< ceil(ln(kMax / kMin) / ln(kGrowth))
+
+  /// Counts `value` (any finite number; values <= kMin share the first bucket). Allocates nothing.
+  void add(double value);
+  std::uint64_t count() const { return count_; }
+  double min() const { return count_ ? min_ : 0.0; }
+  double max() const { return count_ ? max_ : 0.0; }
+  /// The nearest-rank p-th percentile (p in 0..100); 0 when empty.
+  double percentile(double p) const;
+
+ private:
+  std::array<std::uint64_t, kBuckets> counts_{};
+  std::uint64_t count_ = 0;
+  double min_ = 0, max_ = 0;
+};
+
+}  // namespace lungar::platform

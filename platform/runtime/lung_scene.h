@@ -1,0 +1,39 @@
+/// @file lung_scene.h
+/// @brief The lungs on the GPU: the baked asset, its drawable (vertex buffers, coefficients) and the renderer's
+/// programs, built once per GL context and shared by every Runtime that draws them (the bench builds one
+/// Runtime per measured configuration over one scene).
+/// @ingroup platform
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "config/base/result.h"
+#include "render/lung_drawable.h"
+#include "render/renderer.h"
+#include "sim/asset/baked_asset.h"
+
+namespace lungar::platform {
+
+class LungScene {
+ public:
+  /// Uploads `asset`; needs a current GLES 3 context. `name` says what is drawn (a file, a cache entry) in the
+  /// stats JSON's `asset`.
+  static Result<std::shared_ptr<LungScene>> create(sim::BakedAsset asset, std::string name,
+                                                   const render::DrawableOptions& options = {});
+
+  const sim::BakedAsset& asset() const { return asset_; }
+  render::LungDrawable& drawable() { return *drawable_; }
+  render::Renderer& renderer() { return *renderer_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  LungScene() = default;
+  sim::BakedAsset asset_;
+  std::string name_;
+  std::optional<render::LungDrawable> drawable_;
+  std::optional<render::Renderer> renderer_;
+};
+
+}  // namespace lungar::platform

@@ -1,0 +1,29 @@
+/// @file script_breathing.h
+/// @brief This station's own breathing: the breathing script (steady breathing, or a scenario's events) run from
+/// the run's start on the monotonic clock.
+/// @ingroup platform
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "config/base/clock.h"
+#include "platform/runtime/breathing_clock.h"
+#include "sim/breathing/script.h"
+
+namespace lungar::platform {
+
+class ScriptBreathing final : public BreathingClock {
+ public:
+  ScriptBreathing(std::shared_ptr<const sim::BreathingScript> script, std::int64_t t0_ns)
+      : script_(std::move(script)), t0_ns_(t0_ns) {}
+  sim::BreathingSample at(std::int64_t now_ns) const override {
+    return script_->driver.at(seconds_between(t0_ns_, now_ns));
+  }
+
+ private:
+  std::shared_ptr<const sim::BreathingScript> script_;
+  std::int64_t t0_ns_;
+};
+
+}  // namespace lungar::platform

@@ -8,18 +8,24 @@
 
 namespace lungar::platform {
 
-HeadlessOutput::HeadlessOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd,
+HeadlessOutput::HeadlessOutput(std::shared_ptr<EglContext> context, const config::HmdSettings& hmd,
                                render::FrameTarget target)
     : context_(std::move(context)), target_(std::move(target)),
       views_(hmd, target_->width(), target_->height()) {}
 
-Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::HmdSettings& hmd) {
-  auto context = EglContext::headless();
-  if (!context) return context.with_context("display: ");
+Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::HmdSettings& hmd,
+                                                               std::shared_ptr<EglContext> context) {
+  if (!context) {
+    auto made = EglContext::headless();
+    if (!made) return made.with_context("display: ");
+    context = made.take();
+  } else if (Status current = context->make_current(); !current) {
+    return current.with_context("display: ");
+  }
   const auto [w, h] = HmdViews::target_size(hmd);
   auto target = render::FrameTarget::create(w, h);
   if (!target) return target.with_context("display: ");
-  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(context.take(), hmd, target.take()));
+  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(std::move(context), hmd, target.take()));
 }
 
 std::string HeadlessOutput::describe() const {

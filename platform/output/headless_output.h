@@ -17,8 +17,10 @@ namespace lungar::platform {
 
 class HeadlessOutput final : public FrameOutput {
  public:
-  /// Makes a surfaceless context current and a target two eyes (stereo) or one eye (mono) in size.
-  static Result<std::unique_ptr<HeadlessOutput>> create(const config::HmdSettings& hmd);
+  /// A target two eyes (stereo) or one eye (mono) in size, on `context` (made current), or on a new surfaceless
+  /// context when none is given. Several outputs may share one context (the bench measures one per configuration).
+  static Result<std::unique_ptr<HeadlessOutput>> create(const config::HmdSettings& hmd,
+                                                        std::shared_ptr<EglContext> context = nullptr);
 
   std::string describe() const override;
   bool poll_events() override { return true; }
@@ -30,8 +32,8 @@ class HeadlessOutput final : public FrameOutput {
   Status snapshot(const std::string& png_path) override;
 
  private:
-  HeadlessOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd, render::FrameTarget target);
-  std::unique_ptr<EglContext> context_;
+  HeadlessOutput(std::shared_ptr<EglContext> context, const config::HmdSettings& hmd, render::FrameTarget target);
+  std::shared_ptr<EglContext> context_;
   std::optional<render::FrameTarget> target_;
   HmdViews views_;
 };

@@ -210,7 +210,7 @@ Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& view
     for (std::size_t i = 0; i < views.count; ++i) {
       parts_.output->bind_target(i);
       one.eyes = std::span<const render::EyeView>(&views.eyes[i], 1);
-      if (Status drawn = renderer.draw(drawable, one); !drawn) return drawn.with_context("draw: ");
+      if (Status drawn = renderer.draw(drawable, one, &last_draw_); !drawn) return drawn.with_context("draw: ");
     }
     return ok();
   }
@@ -219,7 +219,7 @@ Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& view
   } else {
     parts_.output->bind_target(0);
   }
-  if (Status drawn = renderer.draw(drawable, in); !drawn) return drawn.with_context("draw: ");
+  if (Status drawn = renderer.draw(drawable, in, &last_draw_); !drawn) return drawn.with_context("draw: ");
   if (!lens_) return ok();
   parts_.output->bind_target(0);
   const auto centres = std::span<const std::array<float, 2>>(lens_centres_.data(), views.count);

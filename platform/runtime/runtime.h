@@ -66,6 +66,8 @@ class Runtime {
   FrameOutput& output() { return *parts_.output; }
   PoseSource& poses() { return *parts_.poses; }
   const FrameStats& frame_stats() const { return stats_; }
+  /// What the last frame drew (points per eye before culling, points deformed by transform feedback).
+  const render::FrameStats& last_draw() const { return last_draw_; }
 
  private:
   Runtime(const config::Settings& settings, RuntimeParts parts);
@@ -110,6 +112,7 @@ class Runtime {
   std::int64_t hud_updated_ns_ = 0;
   long frames_ = 0;
   FrameStats stats_;
+  render::FrameStats last_draw_;
 };
 
 }  // namespace lungar::platform

@@ -23,7 +23,14 @@ enum class ScenarioEventKind {
   Ventilator,   ///< square pressure wave (pressure-controlled ventilation)
   Spontaneous,  ///< back to spontaneous breathing
 };
-const char* to_string(ScenarioEventKind kind);
+inline constexpr EnumNames<ScenarioEventKind, 7> kScenarioEventKindNames{{{{ScenarioEventKind::Turn, "turn"},
+                                                                          {ScenarioEventKind::Change, "change"},
+                                                                          {ScenarioEventKind::Sigh, "sigh"},
+                                                                          {ScenarioEventKind::Hold, "hold"},
+                                                                          {ScenarioEventKind::Apnoea, "apnoea"},
+                                                                          {ScenarioEventKind::Ventilator, "ventilator"},
+                                                                          {ScenarioEventKind::Spontaneous, "spontaneous"}}}};
+inline const char* to_string(ScenarioEventKind kind) { return kScenarioEventKindNames.name(kind); }
 
 struct ScenarioEvent {
   ScenarioEventKind kind = ScenarioEventKind::Change;

@@ -30,14 +30,6 @@ const std::initializer_list<std::string_view> kPresetNames = {"normal", "emphyse
 const std::initializer_list<std::string_view> kPoseNames = {"upright", "supine", "prone", "left_lateral",
                                                             "right_lateral"};
 
-struct KindName {
-  ScenarioEventKind kind;
-  const char* name;
-};
-constexpr KindName kKinds[] = {{ScenarioEventKind::Turn, "turn"},        {ScenarioEventKind::Change, "change"},
-                               {ScenarioEventKind::Sigh, "sigh"},        {ScenarioEventKind::Hold, "hold"},
-                               {ScenarioEventKind::Apnoea, "apnoea"},    {ScenarioEventKind::Ventilator, "ventilator"},
-                               {ScenarioEventKind::Spontaneous, "spontaneous"}};
 
 std::optional<double> optional_number(TomlSection& s, std::string_view key, double lo, double hi,
                                       std::string_view unit) {
@@ -89,16 +81,11 @@ ScenarioEvent read_event(TomlSection s, const toml::table& t, int index) {
   ScenarioEvent e;
   e.index = index;
   e.line = static_cast<int>(t.source().begin.line);
-  std::string kind;
-  s.choice("kind", kind,
-           {"turn", "change", "sigh", "hold", "apnoea", "ventilator", "spontaneous"});
-  if (kind.empty()) {
+  if (!t.contains("kind")) {
     s.fail("kind", "expected one of \"turn\" | \"change\" | \"sigh\" | \"hold\" | \"apnoea\" | \"ventilator\" | "
                    "\"spontaneous\", got nothing");
   }
-  for (const KindName& k : kKinds) {
-    if (kind == k.name) e.kind = k.kind;
-  }
+  s.choice("kind", e.kind, kScenarioEventKindNames);
   double at = kUnset;
   s.number("at_s", at, 0.0, kMaxScenarioS, "s");
   if (std::isnan(at)) s.fail("at_s", "expected the event's time, a number in [0, 86400] s, got nothing");
@@ -202,10 +189,10 @@ void check_timeline(const Scenario& sc) {
   }
 }
 
-ScenarioResult parse(const std::string& text, const std::string& name, const BreathingSettings& defaults) {
-  ScenarioResult result;
-  toml::table root;
-  if (!parse_toml(text, name, root, result.error)) return result;
+Result<Scenario> parse(const std::string& text, const std::string& name, const BreathingSettings& defaults) {
+  auto parsed = parse_toml(text, name);
+  if (!parsed) return parsed.with_context("");
+  const toml::table& root = *parsed;
   Scenario sc;
   sc.source = name;
   sc.start = defaults;
@@ -246,21 +233,13 @@ ScenarioResult parse(const std::string& text, const std::string& name, const Bre
                      [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at_s < b.at_s; });
     check_timeline(sc);
   } catch (const ConfigError& e) {
-    result.error = e.what();
-    return result;
+    return fail(e.what());
   }
-  result.scenario = std::move(sc);
-  return result;
+  return sc;
 }
 
 }  // namespace
 
-const char* to_string(ScenarioEventKind kind) {
-  for (const KindName& k : kKinds) {
-    if (k.kind == kind) return k.name;
-  }
-  return "?";
-}
 
 std::string Scenario::where(const ScenarioEvent& e, const std::string& key) const {
   std::string w = source;
@@ -268,16 +247,15 @@ std::string Scenario::where(const ScenarioEvent& e, const std::string& key) cons
   return w + ": key 'event[" + std::to_string(e.index) + "]" + (key.empty() ? "" : "." + key) + "'";
 }
 
-ScenarioResult load_scenario_from_string(const std::string& toml_text, const std::string& name,
+Result<Scenario> load_scenario_from_string(const std::string& toml_text, const std::string& name,
                                          const BreathingSettings& defaults) {
   return parse(toml_text, name, defaults);
 }
 
-ScenarioResult load_scenario(const std::string& path, const BreathingSettings& defaults) {
-  std::string text;
-  ScenarioResult r;
-  if (!read_toml_file(path, "scenario", text, r.error)) return r;
-  return parse(text, path, defaults);
+Result<Scenario> load_scenario(const std::string& path, const BreathingSettings& defaults) {
+  auto text = read_toml_file(path, "scenario");
+  if (!text) return text.with_context("");
+  return parse(*text, path, defaults);
 }
 
 }  // namespace lungar::config

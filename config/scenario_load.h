@@ -5,23 +5,17 @@
 #include <optional>
 #include <string>
 
+#include "config/base/result.h"
 #include "config/scenario.h"
 #include "config/settings.h"
 
 namespace lungar::config {
 
-/// Either a scenario or one error line: "FILE:LINE: key 'event[2].kind': expected ..., got ...".
-struct ScenarioResult {
-  std::optional<Scenario> scenario;
-  std::string error;
-  explicit operator bool() const { return scenario.has_value(); }
-};
-
-/// Reads `path`. Keys missing from [start] take their values from `defaults` (the config's [breathing]).
-ScenarioResult load_scenario(const std::string& path, const BreathingSettings& defaults = {});
+/// Reads `path`; an error is one line: "FILE:LINE: key 'event[2].kind': expected ..., got ...". Keys missing from [start] take their values from `defaults` (the config's [breathing]).
+Result<Scenario> load_scenario(const std::string& path, const BreathingSettings& defaults = {});
 
 /// The same from TOML text; `name` stands for the file in messages.
-ScenarioResult load_scenario_from_string(const std::string& toml_text, const std::string& name,
+Result<Scenario> load_scenario_from_string(const std::string& toml_text, const std::string& name,
                                          const BreathingSettings& defaults = {});
 
 }  // namespace lungar::config

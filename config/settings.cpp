@@ -1,5 +1,5 @@
 /// @file settings.cpp
-/// @brief Names of the settings' enumerations, as they are spelled in TOML, and a start-up summary.
+/// @brief A start-up summary of the settings.
 #include "config/settings.h"
 
 #include <sstream>
@@ -7,50 +7,6 @@
 #include "config/settings_load.h"
 
 namespace lungar::config {
-
-const char* to_string(Output v) {
-  switch (v) {
-    case Output::Auto: return "auto";
-    case Output::Window: return "window";
-    case Output::Fullscreen: return "fullscreen";
-    case Output::Headless: return "headless";
-  }
-  return "?";
-}
-const char* to_string(View v) { return v == View::Mono ? "mono" : "stereo"; }
-const char* to_string(RenderMode v) { return v == RenderMode::Points ? "points" : "mesh"; }
-const char* to_string(Deform v) {
-  switch (v) {
-    case Deform::Gpu: return "gpu";
-    case Deform::Cpu7: return "cpu7";
-    case Deform::Cpu1: return "cpu1";
-    case Deform::None: return "none";
-  }
-  return "?";
-}
-const char* to_string(StereoStrategy v) { return v == StereoStrategy::PerEye ? "per_eye" : "deform_once"; }
-const char* to_string(TrackerSource v) {
-  switch (v) {
-    case TrackerSource::Mock: return "mock";
-    case TrackerSource::Hid: return "hid";
-    case TrackerSource::Replay: return "replay";
-  }
-  return "?";
-}
-const char* to_string(OrientationMode v) { return v == OrientationMode::Exact ? "exact" : "paper_interp"; }
-
-const char* to_string(FieldType v) {
-  switch (v) {
-    case FieldType::I16: return "i16";
-    case FieldType::I32: return "i32";
-    case FieldType::F32: return "f32";
-    case FieldType::Fixed16: return "fixed16";
-    case FieldType::Fixed32: return "fixed32";
-  }
-  return "?";
-}
-const char* to_string(Endian v) { return v == Endian::Little ? "little" : "big"; }
-const char* to_string(OrientationKind v) { return v == OrientationKind::Quaternion ? "quaternion" : "euler"; }
 
 std::string summarize(const Settings& s) {
   std::ostringstream o;

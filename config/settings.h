@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "config/base/enum_names.h"
+
 namespace lungar::config {
 
 /// Where frames go.
@@ -182,15 +184,39 @@ struct SignedAxis {
 /// preceded by '-'; nullopt when the text is not such a permutation.
 std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, std::string_view letters);
 
-const char* to_string(Output);
-const char* to_string(View);
-const char* to_string(RenderMode);
-const char* to_string(Deform);
-const char* to_string(StereoStrategy);
-const char* to_string(TrackerSource);
-const char* to_string(OrientationMode);
-const char* to_string(FieldType);
-const char* to_string(Endian);
-const char* to_string(OrientationKind);
+/// The names of each enumeration as TOML, the command line and logs spell them: one table each.
+inline constexpr EnumNames<Output, 4> kOutputNames{{{{Output::Auto, "auto"},
+                                                      {Output::Window, "window"},
+                                                      {Output::Fullscreen, "fullscreen"},
+                                                      {Output::Headless, "headless"}}}};
+inline constexpr EnumNames<View, 2> kViewNames{{{{View::Mono, "mono"}, {View::Stereo, "stereo"}}}};
+inline constexpr EnumNames<RenderMode, 2> kRenderModeNames{{{{RenderMode::Points, "points"}, {RenderMode::Mesh, "mesh"}}}};
+inline constexpr EnumNames<Deform, 4> kDeformNames{
+    {{{Deform::Gpu, "gpu"}, {Deform::Cpu7, "cpu7"}, {Deform::Cpu1, "cpu1"}, {Deform::None, "none"}}}};
+inline constexpr EnumNames<StereoStrategy, 2> kStereoStrategyNames{
+    {{{StereoStrategy::PerEye, "per_eye"}, {StereoStrategy::DeformOnce, "deform_once"}}}};
+inline constexpr EnumNames<TrackerSource, 3> kTrackerSourceNames{
+    {{{TrackerSource::Mock, "mock"}, {TrackerSource::Hid, "hid"}, {TrackerSource::Replay, "replay"}}}};
+inline constexpr EnumNames<OrientationMode, 2> kOrientationModeNames{
+    {{{OrientationMode::Exact, "exact"}, {OrientationMode::PaperInterp, "paper_interp"}}}};
+inline constexpr EnumNames<FieldType, 5> kFieldTypeNames{{{{FieldType::I16, "i16"},
+                                                           {FieldType::I32, "i32"},
+                                                           {FieldType::F32, "f32"},
+                                                           {FieldType::Fixed16, "fixed16"},
+                                                           {FieldType::Fixed32, "fixed32"}}}};
+inline constexpr EnumNames<Endian, 2> kEndianNames{{{{Endian::Little, "little"}, {Endian::Big, "big"}}}};
+inline constexpr EnumNames<OrientationKind, 2> kOrientationKindNames{
+    {{{OrientationKind::Quaternion, "quaternion"}, {OrientationKind::Euler, "euler"}}}};
+
+inline const char* to_string(Output v) { return kOutputNames.name(v); }
+inline const char* to_string(View v) { return kViewNames.name(v); }
+inline const char* to_string(RenderMode v) { return kRenderModeNames.name(v); }
+inline const char* to_string(Deform v) { return kDeformNames.name(v); }
+inline const char* to_string(StereoStrategy v) { return kStereoStrategyNames.name(v); }
+inline const char* to_string(TrackerSource v) { return kTrackerSourceNames.name(v); }
+inline const char* to_string(OrientationMode v) { return kOrientationModeNames.name(v); }
+inline const char* to_string(FieldType v) { return kFieldTypeNames.name(v); }
+inline const char* to_string(Endian v) { return kEndianNames.name(v); }
+inline const char* to_string(OrientationKind v) { return kOrientationKindNames.name(v); }
 
 }  // namespace lungar::config

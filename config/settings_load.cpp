@@ -15,9 +15,7 @@ namespace lungar::config {
 namespace {
 
 void read_display(TomlSection s, DisplaySettings& d) {
-  s.choice("output", d.output,
-           {{"auto", Output::Auto}, {"window", Output::Window}, {"fullscreen", Output::Fullscreen},
-            {"headless", Output::Headless}});
+  s.choice("output", d.output, kOutputNames);
   s.integer("width_px", d.width_px, 16, 16384, "pixels");
   s.integer("height_px", d.height_px, 16, 16384, "pixels");
   s.integer("x_px", d.x_px, -65536, 65536, "pixels");
@@ -28,7 +26,7 @@ void read_display(TomlSection s, DisplaySettings& d) {
 }
 
 void read_hmd(TomlSection s, HmdSettings& h) {
-  s.choice("view", h.view, {{"mono", View::Mono}, {"stereo", View::Stereo}});
+  s.choice("view", h.view, kViewNames);
   s.choice("layout", h.layout, {"side_by_side"});
   s.integer("eye_width_px", h.eye_width_px, 16, 8192, "pixels");
   s.integer("eye_height_px", h.eye_height_px, 16, 8192, "pixels");
@@ -53,12 +51,11 @@ void read_hmd(TomlSection s, HmdSettings& h) {
 }
 
 void read_render(TomlSection s, RenderSettings& r) {
-  s.choice("mode", r.mode, {{"points", RenderMode::Points}, {"mesh", RenderMode::Mesh}});
+  s.choice("mode", r.mode, kRenderModeNames);
   s.number("point_size_px", r.point_size_px, 1.0, 64.0, "pixels");
   s.boolean("overlay_rest", r.overlay_rest);
-  s.choice("deform", r.deform, {{"gpu", Deform::Gpu}, {"cpu7", Deform::Cpu7}, {"cpu1", Deform::Cpu1}, {"none", Deform::None}});
-  s.choice("stereo_strategy", r.stereo_strategy,
-           {{"per_eye", StereoStrategy::PerEye}, {"deform_once", StereoStrategy::DeformOnce}});
+  s.choice("deform", r.deform, kDeformNames);
+  s.choice("stereo_strategy", r.stereo_strategy, kStereoStrategyNames);
   s.boolean("lod", r.lod);
   s.boolean("half_float", r.half_float);
   s.boolean("hud", r.hud);
@@ -80,9 +77,7 @@ void read_breathing(TomlSection s, BreathingSettings& b) {
 std::size_t field_bytes(FieldType t) { return (t == FieldType::I16 || t == FieldType::Fixed16) ? 2 : 4; }
 
 void read_field_type(TomlSection& s, const std::string& key, FieldType& out) {
-  s.choice(key, out,
-           {{"i16", FieldType::I16}, {"i32", FieldType::I32}, {"f32", FieldType::F32},
-            {"fixed16", FieldType::Fixed16}, {"fixed32", FieldType::Fixed32}});
+  s.choice(key, out, kFieldTypeNames);
 }
 
 void read_frac_bits(TomlSection& s, const std::string& key, int& out, FieldType type) {
@@ -106,7 +101,7 @@ void read_axes(TomlSection& s, const std::string& key, std::string& out, std::st
 void read_report(TomlSection s, ReportSettings& r) {
   s.integer("report_id", r.report_id, -1, 255, "(-1: unnumbered reports)");
   s.integer("length", r.length, 1, 1024, "bytes");
-  s.choice("endian", r.endian, {{"little", Endian::Little}, {"big", Endian::Big}});
+  s.choice("endian", r.endian, kEndianNames);
   s.integer("station_offset", r.station_offset, -1, 1023, "bytes (-1: no station byte)");
   s.integer("time_offset", r.time_offset, -1, 1023, "bytes (-1: no device time)");
   s.integer("time_bits", r.time_bits, 16, 32, "bits");
@@ -120,8 +115,7 @@ void read_report(TomlSection s, ReportSettings& r) {
   s.number("position_scale", r.position_scale, -1e6, 1e6, "mm per unit");
   if (r.position_scale == 0.0) s.fail("position_scale", "expected a non-zero scale, got 0");
   read_axes(s, "position_components", r.position_components, "xyz", "x,-z,y");
-  s.choice("orientation", r.orientation,
-           {{"quaternion", OrientationKind::Quaternion}, {"euler", OrientationKind::Euler}});
+  s.choice("orientation", r.orientation, kOrientationKindNames);
   s.integer("orientation_offset", r.orientation_offset, 0, 1023, "bytes");
   read_field_type(s, "orientation_type", r.orientation_type);
   read_frac_bits(s, "orientation_frac_bits", r.orientation_frac_bits, r.orientation_type);
@@ -161,8 +155,7 @@ void read_sensor(TomlSection s, SensorSettings& d) {
 }
 
 void read_trackers(TomlSection s, TrackerSettings& t) {
-  s.choice("source", t.source,
-           {{"mock", TrackerSource::Mock}, {"hid", TrackerSource::Hid}, {"replay", TrackerSource::Replay}});
+  s.choice("source", t.source, kTrackerSourceNames);
   s.choice("mock_trajectory", t.mock_trajectory, {"static", "upright_to_supine", "head_orbit"});
   s.number("mock_rate_hz", t.mock_rate_hz, 1.0, 2000.0, "Hz");
   s.number("mock_noise_mm", t.mock_noise_mm, 0.0, 100.0, "mm");
@@ -241,15 +234,14 @@ void read_registration(TomlSection s, RegistrationSettings& r) {
 
 void read_sim(TomlSection s, SimSettings& m) {
   s.text("asset", m.asset);
-  s.choice("orientation_mode", m.orientation_mode,
-           {{"exact", OrientationMode::Exact}, {"paper_interp", OrientationMode::PaperInterp}});
+  s.choice("orientation_mode", m.orientation_mode, kOrientationModeNames);
   s.finish();
 }
 
-LoadResult parse(const std::string& text, const std::string& name) {
-  LoadResult result;
-  toml::table root;
-  if (!parse_toml(text, name, root, result.error)) return result;
+Result<Settings> parse(const std::string& text, const std::string& name) {
+  auto parsed = parse_toml(text, name);
+  if (!parsed) return parsed.with_context("");
+  const toml::table& root = *parsed;
   Settings s;
   s.source = name;
   try {
@@ -263,11 +255,9 @@ LoadResult parse(const std::string& text, const std::string& name) {
     read_sim(top.section("sim"), s.sim);
     top.finish();
   } catch (const ConfigError& e) {
-    result.error = e.what();
-    return result;
+    return fail(e.what());
   }
-  result.settings = std::move(s);
-  return result;
+  return s;
 }
 
 }  // namespace
@@ -298,24 +288,23 @@ std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, 
   return out;
 }
 
-LoadResult load_settings_from_string(const std::string& toml_text, const std::string& name) {
+Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name) {
   return parse(toml_text, name);
 }
 
-LoadResult load_settings(const std::string& path) {
-  std::string text;
-  LoadResult r;
-  if (!read_toml_file(path, "config", text, r.error)) return r;
-  r = parse(text, path);
+Result<Settings> load_settings(const std::string& path) {
+  auto text = read_toml_file(path, "config");
+  if (!text) return text.with_context("");
+  auto r = parse(*text, path);
   if (r) {
     // Relative paths inside a config are relative to the config's folder.
     const auto dir = std::filesystem::path(path).parent_path();
     auto resolve = [&](std::string& p) {
       if (!p.empty() && std::filesystem::path(p).is_relative()) p = (dir / p).lexically_normal().string();
     };
-    resolve(r.settings->breathing.scenario);
-    resolve(r.settings->trackers.replay_file);
-    resolve(r.settings->sim.asset);
+    resolve(r->breathing.scenario);
+    resolve(r->trackers.replay_file);
+    resolve(r->sim.asset);
   }
   return r;
 }

@@ -26,35 +26,28 @@ std::string range_text(double lo, double hi, std::string_view unit) {
 
 }  // namespace
 
-bool parse_toml(const std::string& text, const std::string& name, toml::table& root, std::string& error) {
+Result<toml::table> parse_toml(const std::string& text, const std::string& name) {
   try {
-    root = toml::parse(text, name);
+    return toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
-    error = name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-            ": TOML syntax error: " + std::string(e.description());
-    return false;
+    return fail(name + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                ": TOML syntax error: " + std::string(e.description()));
   }
-  return true;
 }
 
-bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error) {
+Result<std::string> read_toml_file(const std::string& path, const char* what) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    error = path + ": cannot read the " + what + ": expected a TOML file, " +
-            (std::filesystem::exists(path, ec) ? std::string("got something that is not a regular file")
-                                               : std::string("got no such file"));
-    return false;
+    return fail(path + ": cannot read the " + what + ": expected a TOML file, " +
+                (std::filesystem::exists(path, ec) ? std::string("got something that is not a regular file")
+                                                   : std::string("got no such file")));
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream content;
   content << in.rdbuf();
-  if (!in.good() && !in.eof()) {
-    error = path + ": cannot read the " + what + ": read error";
-    return false;
-  }
-  text = content.str();
-  return true;
+  if (!in.good() && !in.eof()) return fail(path + ": cannot read the " + what + ": read error");
+  return content.str();
 }
 
 std::string describe(const toml::node& node) {

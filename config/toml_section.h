@@ -16,6 +16,9 @@
 
 #include <toml++/toml.h>
 
+#include "config/base/enum_names.h"
+#include "config/base/result.h"
+
 namespace lungar::config {
 
 struct ConfigError : std::runtime_error {
@@ -34,8 +37,9 @@ class TomlSection {
   void text(std::string_view key, std::string& out);
   /// A string that must be one of `choices`.
   void choice(std::string_view key, std::string& out, std::initializer_list<std::string_view> choices);
-  template <typename E>
-  void choice(std::string_view key, E& out, std::initializer_list<std::pair<std::string_view, E>> choices);
+  /// A string that must be one of the names in `names` (config/settings.h's tables).
+  template <typename E, std::size_t N>
+  void choice(std::string_view key, E& out, const EnumNames<E, N>& names);
   /// A fixed-length array of numbers, each within [lo, hi].
   template <std::size_t N>
   void numbers(std::string_view key, std::array<double, N>& out, double lo, double hi, std::string_view unit);
@@ -61,32 +65,30 @@ class TomlSection {
   std::set<std::string, std::less<>> known_;
 };
 
-/// Parses TOML text; false with `error` = "NAME:LINE:COLUMN: TOML syntax error: ..." on a syntax error.
-bool parse_toml(const std::string& text, const std::string& name, toml::table& root, std::string& error);
+/// Parses TOML text; a syntax error is "NAME:LINE:COLUMN: TOML syntax error: ...".
+Result<toml::table> parse_toml(const std::string& text, const std::string& name);
 
-/// Reads a whole text file for a loader; false with `error` = "PATH: cannot read the WHAT: expected a TOML file,
-/// got ..." when it is missing, not a regular file or unreadable.
-bool read_toml_file(const std::string& path, const char* what, std::string& text, std::string& error);
+/// Reads a whole text file for a loader; "PATH: cannot read the WHAT: expected a TOML file, got ..." when it is
+/// missing, not a regular file or unreadable.
+Result<std::string> read_toml_file(const std::string& path, const char* what);
 
 /// How a node is named in "got ..." messages: "a string", "an integer 7", ...
 std::string describe(const toml::node& node);
 
-template <typename E>
-void TomlSection::choice(std::string_view key, E& out, std::initializer_list<std::pair<std::string_view, E>> choices) {
+template <typename E, std::size_t N>
+void TomlSection::choice(std::string_view key, E& out, const EnumNames<E, N>& names) {
   const toml::node* node = find(key);
   if (!node) return;
+  if (const auto* s = node->as_string()) {
+    if (auto value = names.parse(s->get())) {
+      out = *value;
+      return;
+    }
+  }
   std::string expected;
-  for (const auto& [name, value] : choices) {
+  for (const auto& [value, name] : names.entries) {
     if (!expected.empty()) expected += " | ";
     expected += '"' + std::string(name) + '"';
-  }
-  if (const auto* s = node->as_string()) {
-    for (const auto& [name, value] : choices) {
-      if (s->get() == name) {
-        out = value;
-        return;
-      }
-    }
   }
   fail(key, "expected one of " + expected + ", got " + describe(*node));
 }

@@ -66,10 +66,10 @@ int main(int argc, char** argv) {
   if (!o.config_path.empty()) {
     auto loaded = lungar::config::load_settings(o.config_path);
     if (!loaded) {
-      std::fprintf(stderr, "lungar: %s\n", loaded.error.c_str());
+      std::fprintf(stderr, "lungar: %s\n", loaded.error().c_str());
       return 2;
     }
-    settings = *loaded.settings;
+    settings = *loaded;
   }
   if (const std::string error = lungar::platform::apply_overrides(o, settings); !error.empty()) {
     std::fprintf(stderr, "lungar: %s\n", error.c_str());

@@ -20,51 +20,40 @@ Eigen::Quaterniond rotation(const std::string& pose, const std::array<double, 4>
 }
 
 /// The breathing keys shared by change, ventilator and spontaneous.
-std::string fill_change(const config::ScenarioEvent& e, sim::PatternChange& c) {
+Status fill_change(const config::ScenarioEvent& e, sim::PatternChange& c) {
   if (e.preset) {
     c.preset = sim::preset_from_name(*e.preset);
-    if (!c.preset) return "preset: expected a known preset, got \"" + *e.preset + "\"";
+    if (!c.preset) return fail("preset: expected a known preset, got \"" + *e.preset + "\"");
   }
   c.rate_bpm = e.rate_bpm;
   c.ie_ratio = e.ie_ratio;
   c.tidal_volume_ml = e.tidal_volume_ml;
-  return {};
+  return ok();
 }
 
 }  // namespace
 
-std::string to_breathing_params(const config::BreathingSettings& b, sim::BreathingParams& out) {
+Result<sim::BreathingParams> to_breathing_params(const config::BreathingSettings& b) {
   const auto preset = sim::preset_from_name(b.preset);
-  if (!preset) return "preset: expected \"normal\" | \"emphysema\" | \"fibrosis\", got \"" + b.preset + "\"";
-  out = sim::BreathingParams{};
+  if (!preset) return fail("preset: expected \"normal\" | \"emphysema\" | \"fibrosis\", got \"" + b.preset + "\"");
+  sim::BreathingParams out;
   out.preset = *preset;
   out.rate_bpm = b.rate_bpm;
   out.ie_ratio = b.ie_ratio;
   out.tidal_volume_ml = b.tidal_volume_ml;
-  return {};
+  return out;
 }
 
-BreathingScriptResult make_breathing_script(const config::Scenario& sc) {
-  BreathingScriptResult result;
-  sim::BreathingParams start;
-  if (std::string err = to_breathing_params(sc.start, start); !err.empty()) {
-    result.error = sc.source + ": [start] " + err;
-    return result;
-  }
-  auto driver = sim::BreathingDriver::create(start);
-  if (!driver) {
-    result.error = sc.source + ": [start]: " + driver.error;
-    return result;
-  }
+Result<sim::BreathingScript> make_breathing_script(const config::Scenario& sc) {
+  auto start = to_breathing_params(sc.start);
+  if (!start) return start.with_context(sc.source + ": [start] ");
+  auto driver = sim::BreathingDriver::create(*start);
+  if (!driver) return driver.with_context(sc.source + ": [start]: ");
 
   // Each scenario event becomes one or two driver events (a hold and an apnoea also end) or a turn.
   std::vector<std::pair<sim::Event, const config::ScenarioEvent*>> events;
   std::vector<sim::Turn> turns;
   for (const config::ScenarioEvent& e : sc.events) {
-    auto fail = [&](const std::string& message) {
-      result.error = sc.where(e, "") + ": " + message;
-      return result;
-    };
     sim::PatternChange change;
     switch (e.kind) {
       case config::ScenarioEventKind::Turn:
@@ -73,7 +62,7 @@ BreathingScriptResult make_breathing_script(const config::Scenario& sc) {
       case config::ScenarioEventKind::Change:
       case config::ScenarioEventKind::Ventilator:
       case config::ScenarioEventKind::Spontaneous:
-        if (std::string err = fill_change(e, change); !err.empty()) return fail(err);
+        if (Status err = fill_change(e, change); !err) return err.with_context(sc.where(e, "") + ": ");
         if (e.kind == config::ScenarioEventKind::Ventilator) {
           change.mode = sim::Mode::Ventilator;
           change.peep_cmh2o = e.peep_cmh2o;
@@ -99,29 +88,18 @@ BreathingScriptResult make_breathing_script(const config::Scenario& sc) {
   std::stable_sort(events.begin(), events.end(),
                    [](const auto& a, const auto& b) { return a.first.t_s < b.first.t_s; });
   for (const auto& [event, source] : events) {
-    if (std::string err = driver.driver->apply(event); !err.empty()) {
-      result.error = sc.where(*source, "") + ": " + err;
-      return result;
-    }
+    if (Status err = driver->apply(event); !err) return err.with_context(sc.where(*source, "") + ": ");
   }
   auto track = sim::OrientationTrack::create(rotation(sc.start_pose, sc.start_rotation_wxyz), std::move(turns));
-  if (!track) {
-    result.error = sc.source + ": " + track.error;
-    return result;
-  }
-  result.script = sim::BreathingScript{std::move(*driver.driver), std::move(*track.track), sc.duration_s};
-  return result;
+  if (!track) return track.with_context(sc.source + ": ");
+  return sim::BreathingScript{driver.take(), track.take(), sc.duration_s};
 }
 
-BreathingScriptResult load_breathing_script(const config::BreathingSettings& breathing, double duration_s) {
+Result<sim::BreathingScript> load_breathing_script(const config::BreathingSettings& breathing, double duration_s) {
   if (!breathing.scenario.empty()) {
     auto loaded = config::load_scenario(breathing.scenario, breathing);
-    if (!loaded) {
-      BreathingScriptResult r;
-      r.error = loaded.error;
-      return r;
-    }
-    return make_breathing_script(*loaded.scenario);
+    if (!loaded) return loaded.with_context("");
+    return make_breathing_script(*loaded);
   }
   config::Scenario steady;
   steady.source = "[breathing]";

@@ -8,27 +8,22 @@
 #include <optional>
 #include <string>
 
+#include "config/base/result.h"
 #include "config/scenario.h"
 #include "config/settings.h"
 #include "sim/breathing/script.h"
 
 namespace lungar::platform {
 
-struct BreathingScriptResult {
-  std::optional<sim::BreathingScript> script;
-  std::string error;  ///< one line naming the file, line and event
-  explicit operator bool() const { return script.has_value(); }
-};
-
 /// Every event of `scenario` applied; errors the loader cannot see (e.g. a tidal volume beyond the curve's
 /// reach) come back as "FILE:LINE: key 'event[i]': ...".
-BreathingScriptResult make_breathing_script(const config::Scenario& scenario);
+Result<sim::BreathingScript> make_breathing_script(const config::Scenario& scenario);
 
 /// The config's [breathing]: its scenario file when one is set (missing [start] keys take the config's values),
 /// else steady breathing, upright, lasting `duration_s`.
-BreathingScriptResult load_breathing_script(const config::BreathingSettings& breathing, double duration_s = 60.0);
+Result<sim::BreathingScript> load_breathing_script(const config::BreathingSettings& breathing, double duration_s = 60.0);
 
-/// Breathing parameters from the config's names; empty error when all are known.
-std::string to_breathing_params(const config::BreathingSettings& b, sim::BreathingParams& out);
+/// Breathing parameters from the config's names.
+Result<sim::BreathingParams> to_breathing_params(const config::BreathingSettings& b);
 
 }  // namespace lungar::platform

@@ -65,10 +65,10 @@ std::optional<config::TrackerSettings> layout_from_toml(const std::string& toml,
                                                         std::string* error) {
   auto r = config::load_settings_from_string(toml, name);
   if (!r) {
-    if (error) *error = r.error;
+    if (error) *error = r.error();
     return std::nullopt;
   }
-  return r.settings->trackers;
+  return r->trackers;
 }
 
 }  // namespace lungar::drivers

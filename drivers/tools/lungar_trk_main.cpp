@@ -32,10 +32,10 @@ std::optional<config::TrackerSettings> settings_for(const TrkLog& log, const std
   if (!config_path.empty()) {
     auto r = config::load_settings(config_path);
     if (!r) {
-      *error = r.error;
+      *error = r.error();
       return std::nullopt;
     }
-    return r.settings->trackers;
+    return r->trackers;
   }
   if (log.header.layout_toml.empty()) {
     *error = file + ": the log does not describe its report layout: expected --config FILE.toml";
@@ -148,8 +148,8 @@ int synth(const std::string& out, const std::string& config_path, const std::str
   config::TrackerSettings t;
   if (!config_path.empty()) {
     auto r = config::load_settings(config_path);
-    if (!r) return die(r.error);
-    t = r.settings->trackers;
+    if (!r) return die(r.error());
+    t = r->trackers;
   }
   if (!trajectory.empty()) t.mock_trajectory = trajectory;
   if (rate_hz > 0) t.mock_rate_hz = rate_hz;

@@ -27,10 +27,10 @@ bool stylus_points_from_log(const std::string& log_path, const std::string& conf
   } else if (!config_path.empty()) {
     auto s = config::load_settings(config_path);
     if (!s) {
-      error = s.error;
+      error = s.error();
       return false;
     }
-    trackers = s.settings->trackers;
+    trackers = s->trackers;
   }
   auto layout = drivers::make_layout(trackers);
   if (!layout.layout) {

@@ -43,8 +43,8 @@ Result<std::shared_ptr<LungScene>> load_scene(const config::Settings& s) {
 Status add_sources(const config::Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
                    RuntimeParts& parts) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
-  if (!script) return fail(script.error);
-  auto shared_script = std::make_shared<const sim::BreathingScript>(std::move(*script.script));
+  if (!script) return script.with_context("");
+  auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
   drivers::TrackerOptions topts;
   topts.record_path = o.record_path;
   topts.log = [](const std::string& line) { log_line(line); };

@@ -19,7 +19,8 @@ namespace {
 
 using namespace lungar;
 
-int fail(const std::string& message) {
+/// One error line on stderr; the exit code of a bad input.
+int fail_with(const std::string& message) {
   std::fprintf(stderr, "lungar-breathe: %s\n", message.c_str());
   return 2;
 }
@@ -99,13 +100,13 @@ int main(int argc, char** argv) {
   config::Settings settings;
   if (!config_path.empty()) {
     auto loaded = config::load_settings(config_path);
-    if (!loaded) return fail(loaded.error);
-    settings = *loaded.settings;
+    if (!loaded) return fail_with(loaded.error());
+    settings = *loaded;
   }
   config::BreathingSettings& b = settings.breathing;
   if (preset) {
     if (!sim::preset_from_name(*preset)) {
-      return fail("--preset: expected normal | emphysema | fibrosis, got \"" + *preset + "\"");
+      return fail_with("--preset: expected normal | emphysema | fibrosis, got \"" + *preset + "\"");
     }
     b.preset = *preset;
   }
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   auto script = platform::load_breathing_script(b, seconds.value_or(60.0));
-  if (!script) return fail(script.error);
-  print_series(*script.script, seconds.value_or(script.script->duration_s), dt);
+  if (!script) return fail_with(script.error());
+  print_series(*script, seconds.value_or(script->duration_s), dt);
   return 0;
 }

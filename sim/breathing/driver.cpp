@@ -88,19 +88,14 @@ const char* to_string(EventKind kind) {
 
 BreathingDriver::BreathingDriver(Segment first) { segments_.push_back(first); }
 
-BreathingDriver::Created BreathingDriver::create(const BreathingParams& params) {
-  Created c;
+Result<BreathingDriver> BreathingDriver::create(const BreathingParams& params) {
   Pattern pattern;
   pattern.params = params;
-  if (std::string e = solve(pattern); !e.empty()) {
-    c.error = e;
-    return c;
-  }
+  if (Status e = solve(pattern); !e) return e.with_context("");
   Segment first;
   first.f0 = first.f1 = params.rate_bpm / 60.0;
   first.pattern = pattern;
-  c.driver = BreathingDriver(first);
-  return c;
+  return BreathingDriver(first);
 }
 
 double BreathingDriver::phase_at(const Segment& s, double t) {
@@ -196,14 +191,14 @@ double BreathingDriver::transition_for(const Pattern& from, const Pattern& to, d
   return std::max(minimum, floor);
 }
 
-std::string BreathingDriver::apply(const Event& e) {
+Status BreathingDriver::apply(const Event& e) {
   const Segment& back = segments_.back();
   const std::string what = std::string(to_string(e.kind)) + " at " + fmt(e.t_s) + " s: ";
   if (!std::isfinite(e.t_s) || e.t_s < back.t0) {
-    return what + "expected a time at or after the last event (" + fmt(back.t0) + " s)";
+    return fail(what + "expected a time at or after the last event (" + fmt(back.t0) + " s)");
   }
   if (!(e.transition_s < 0 || (std::isfinite(e.transition_s) && e.transition_s <= 600.0))) {
-    return what + "transition_s: expected [0, 600] s, got " + fmt(e.transition_s);
+    return fail(what + "transition_s: expected [0, 600] s, got " + fmt(e.transition_s));
   }
   const double phi = phase_at(back, e.t_s);
   Pattern before = back.pattern;
@@ -228,7 +223,7 @@ std::string BreathingDriver::apply(const Event& e) {
       to.sigh_breath = static_cast<std::int64_t>(std::floor(phi)) + 1;
       to.sigh_volume_ml = e.sigh_volume_ml > 0 ? e.sigh_volume_ml : 2.0 * to.params.tidal_volume_ml;
       if (!(std::isfinite(to.sigh_volume_ml) && to.sigh_volume_ml <= 3000.0)) {
-        return what + "volume_ml: expected (0, 3000] mL, got " + fmt(to.sigh_volume_ml);
+        return fail(what + "volume_ml: expected (0, 3000] mL, got " + fmt(to.sigh_volume_ml));
       }
       break;
     case EventKind::HoldStart: to.held = true; break;
@@ -236,7 +231,7 @@ std::string BreathingDriver::apply(const Event& e) {
     case EventKind::ApnoeaStart: to.apnoea = true; break;
     case EventKind::ApnoeaEnd: to.apnoea = false; break;
   }
-  if (std::string err = solve(to); !err.empty()) return what + err;
+  if (Status err = solve(to); !err) return fail(what + err.error());
 
   Segment s;
   s.t0 = e.t_s;
@@ -274,7 +269,7 @@ std::string BreathingDriver::apply(const Event& e) {
   const double horizon = std::max(s.blend_t0 + s.blend_s, s.t0 + s.ramp_s);
   segments_.push_back(s);
   if (blend > 0 || carried != 0.0) limit_flow(carried, limit, horizon);
-  return {};
+  return ok();
 }
 
 void BreathingDriver::limit_flow(double carried, double limit, double horizon) {

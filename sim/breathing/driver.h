@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "config/base/result.h"
 #include "sim/breathing/event.h"
 #include "sim/breathing/pattern.h"
 
@@ -45,13 +46,12 @@ struct BreathingSample {
 
 class BreathingDriver {
  public:
-  struct Created;
   /// A driver breathing `params` from t = 0, at the start of an inspiration; or why `params` are unusable.
-  static Created create(const BreathingParams& params);
+  static Result<BreathingDriver> create(const BreathingParams& params);
 
-  /// Applies `event` at event.t_s, which must not precede the last applied event. Returns empty, or one line
-  /// saying what is wrong (then nothing changes).
-  std::string apply(const Event& event);
+  /// Applies `event` at event.t_s, which must not precede the last applied event; an error is one line saying
+  /// what is wrong (then nothing changes).
+  Status apply(const Event& event);
 
   /// The state at time t (s). Allocates nothing.
   BreathingSample at(double t_s) const;
@@ -95,12 +95,6 @@ class BreathingDriver {
   double transition_for(const Pattern& from, const Pattern& to, double requested) const;
 
   std::vector<Segment> segments_;
-};
-
-struct BreathingDriver::Created {
-  std::optional<BreathingDriver> driver;
-  std::string error;
-  explicit operator bool() const { return driver.has_value(); }
 };
 
 }  // namespace lungar::sim

@@ -67,27 +67,22 @@ double tilt_from_upright_deg(const Eigen::Quaterniond& q) {
   return std::acos(c) * 180.0 / std::numbers::pi;
 }
 
-OrientationTrack::Created OrientationTrack::create(const Eigen::Quaterniond& start, std::vector<Turn> turns) {
-  Created c;
+Result<OrientationTrack> OrientationTrack::create(const Eigen::Quaterniond& start, std::vector<Turn> turns) {
   std::stable_sort(turns.begin(), turns.end(), [](const Turn& a, const Turn& b) { return a.t_s < b.t_s; });
   for (std::size_t k = 0; k < turns.size(); ++k) {
     const Turn& t = turns[k];
     if (!(std::isfinite(t.t_s) && t.t_s >= 0)) {
-      c.error = "turn at " + fmt(t.t_s) + " s: expected a start time >= 0 s";
-      return c;
+      return fail("turn at " + fmt(t.t_s) + " s: expected a start time >= 0 s");
     }
     if (!(std::isfinite(t.duration_s) && t.duration_s > 0)) {
-      c.error = "turn at " + fmt(t.t_s) + " s: expected a duration > 0 s, got " + fmt(t.duration_s);
-      return c;
+      return fail("turn at " + fmt(t.t_s) + " s: expected a duration > 0 s, got " + fmt(t.duration_s));
     }
     if (std::abs(t.target.norm() - 1.0) > 1e-6) {
-      c.error = "turn at " + fmt(t.t_s) + " s: expected a unit quaternion as target";
-      return c;
+      return fail("turn at " + fmt(t.t_s) + " s: expected a unit quaternion as target");
     }
     if (k > 0 && turns[k - 1].t_s + turns[k - 1].duration_s > t.t_s) {
-      c.error = "turn at " + fmt(t.t_s) + " s: expected turns that do not overlap, but the turn at " +
-                fmt(turns[k - 1].t_s) + " s runs until " + fmt(turns[k - 1].t_s + turns[k - 1].duration_s) + " s";
-      return c;
+      return fail("turn at " + fmt(t.t_s) + " s: expected turns that do not overlap, but the turn at " +
+                fmt(turns[k - 1].t_s) + " s runs until " + fmt(turns[k - 1].t_s + turns[k - 1].duration_s) + " s");
     }
   }
   OrientationTrack track;
@@ -98,8 +93,7 @@ OrientationTrack::Created OrientationTrack::create(const Eigen::Quaterniond& sta
     track.from_.push_back(current);
     current = t.target;
   }
-  c.track = std::move(track);
-  return c;
+  return track;
 }
 
 Eigen::Quaterniond OrientationTrack::at(double t) const {

@@ -8,6 +8,8 @@
 /// to its target along the shorter arc (slerp) with smoothstep easing, so it starts and stops without a jerk.
 #pragma once
 
+#include "config/base/result.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,9 +42,8 @@ struct Turn {
 
 class OrientationTrack {
  public:
-  struct Created;
   /// Turns must have t_s >= 0, duration_s > 0, and not overlap; they are sorted by start here.
-  static Created create(const Eigen::Quaterniond& start, std::vector<Turn> turns);
+  static Result<OrientationTrack> create(const Eigen::Quaterniond& start, std::vector<Turn> turns);
 
   /// The orientation at t (s). Allocates nothing.
   Eigen::Quaterniond at(double t_s) const;
@@ -52,12 +53,6 @@ class OrientationTrack {
   Eigen::Quaterniond start_ = Eigen::Quaterniond::Identity();
   std::vector<Turn> turns_;
   std::vector<Eigen::Quaterniond> from_;  ///< orientation at each turn's start
-};
-
-struct OrientationTrack::Created {
-  std::optional<OrientationTrack> track;
-  std::string error;
-  explicit operator bool() const { return track.has_value(); }
 };
 
 }  // namespace lungar::sim

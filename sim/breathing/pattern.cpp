@@ -53,20 +53,20 @@ double solve_vent_drive(const BreathingParams& p, const PvCurve& curve, double l
 
 }  // namespace
 
-std::string validate(const BreathingParams& p) {
+Status validate(const BreathingParams& p) {
   auto bad = [](double v, double lo, double hi) { return !(std::isfinite(v) && v >= lo && v <= hi); };
-  if (bad(p.rate_bpm, 2.0, 60.0)) return "rate_bpm: expected [2, 60] breaths/min, got " + fmt(p.rate_bpm);
-  if (bad(p.ie_ratio, 0.1, 4.0)) return "ie_ratio: expected [0.1, 4], got " + fmt(p.ie_ratio);
+  if (bad(p.rate_bpm, 2.0, 60.0)) return fail("rate_bpm: expected [2, 60] breaths/min, got " + fmt(p.rate_bpm));
+  if (bad(p.ie_ratio, 0.1, 4.0)) return fail("ie_ratio: expected [0.1, 4], got " + fmt(p.ie_ratio));
   if (bad(p.tidal_volume_ml, 50.0, 3000.0)) {
-    return "tidal_volume_ml: expected [50, 3000] mL, got " + fmt(p.tidal_volume_ml);
+    return fail("tidal_volume_ml: expected [50, 3000] mL, got " + fmt(p.tidal_volume_ml));
   }
-  if (bad(p.ventilator_tau_s, 0.05, 5.0)) return "tau_s: expected [0.05, 5] s, got " + fmt(p.ventilator_tau_s);
-  if (bad(p.peep_cmh2o, 0.0, 20.0)) return "peep_cmh2o: expected [0, 20] cmH2O, got " + fmt(p.peep_cmh2o);
-  return {};
+  if (bad(p.ventilator_tau_s, 0.05, 5.0)) return fail("tau_s: expected [0.05, 5] s, got " + fmt(p.ventilator_tau_s));
+  if (bad(p.peep_cmh2o, 0.0, 20.0)) return fail("peep_cmh2o: expected [0, 20] cmH2O, got " + fmt(p.peep_cmh2o));
+  return ok();
 }
 
-std::string solve(Pattern& pat) {
-  if (std::string e = validate(pat.params); !e.empty()) return e;
+Status solve(Pattern& pat) {
+  if (Status e = validate(pat.params); !e) return e;
   const PvPreset& preset = pv_preset(pat.params.preset);
   const PvCurve& curve = preset.curve;
   pat.v_frc_ml = preset.frc_ml();
@@ -85,24 +85,24 @@ std::string solve(Pattern& pat) {
   const double reach = max_tidal_volume_ml(preset, low);
 
   if (pat.params.mode == Mode::Spontaneous) {
-    if (pat.params.tidal_volume_ml > reach) return reach_error("tidal_volume_ml", pat.params.tidal_volume_ml);
+    if (pat.params.tidal_volume_ml > reach) return fail(reach_error("tidal_volume_ml", pat.params.tidal_volume_ml));
     pat.swing_cmh2o = spontaneous_swing(pat.params.tidal_volume_ml);
     pat.sigh_swing_cmh2o = 0;
     if (pat.sigh_breath >= 0) {
-      if (pat.sigh_volume_ml > reach) return reach_error("sigh volume_ml", pat.sigh_volume_ml);
+      if (pat.sigh_volume_ml > reach) return fail(reach_error("sigh volume_ml", pat.sigh_volume_ml));
       pat.sigh_swing_cmh2o = spontaneous_swing(pat.sigh_volume_ml);
     }
     pat.vent_start_cmh2o = pat.vent_peak_cmh2o = low;
   } else {
-    if (pat.sigh_breath >= 0) return "sigh: expected spontaneous breathing, got a sigh on the ventilator";
+    if (pat.sigh_breath >= 0) return fail("sigh: expected spontaneous breathing, got a sigh on the ventilator");
     const double drive = solve_vent_drive(pat.params, curve, low, pat.params.tidal_volume_ml);
-    if (drive < 0) return reach_error("tidal_volume_ml", pat.params.tidal_volume_ml);
+    if (drive < 0) return fail(reach_error("tidal_volume_ml", pat.params.tidal_volume_ml));
     pat.swing_cmh2o = drive;
     const VentLevels l = vent_levels(pat.params, drive);
     pat.vent_start_cmh2o = low + l.start;
     pat.vent_peak_cmh2o = low + l.peak;
   }
-  return {};
+  return ok();
 }
 
 PatternPoint evaluate(const Pattern& pat, double phase) {

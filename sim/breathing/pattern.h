@@ -6,6 +6,8 @@
 /// ie / (1 + ie) of it. The driver (driver.h) turns time into phase; a pattern turns phase into pressure.
 #pragma once
 
+#include "config/base/result.h"
+
 #include <cstdint>
 #include <string>
 
@@ -33,7 +35,7 @@ struct BreathingParams {
 };
 
 /// Empty when `p` is usable, else what is wrong, e.g. "tidal_volume_ml: expected at most 2077 mL on the ...".
-std::string validate(const BreathingParams& p);
+Status validate(const BreathingParams& p);
 
 /// A pattern: parameters, transient state (hold, apnoea, a sigh to come) and what is solved from them.
 struct Pattern {
@@ -53,7 +55,7 @@ struct Pattern {
 };
 
 /// Solves the swing(s) of `pattern` in place; returns empty, or why the targets cannot be met.
-std::string solve(Pattern& pattern);
+Status solve(Pattern& pattern);
 
 /// Pressures and volume of a pattern at one phase.
 struct PatternPoint {

@@ -22,7 +22,7 @@ const std::string kScenarios = std::string(LUNGAR_SOURCE_DIR) + "/config/scenari
 std::string error_of(const std::string& toml) {
   auto r = load_scenario_from_string(toml, "bad.toml");
   EXPECT_FALSE(r) << "expected an error for:\n" << toml;
-  return r.error;
+  return r.error();
 }
 
 /// "  name_1 = ..." (a key, not a comment or a table header).
@@ -40,16 +40,16 @@ bool is_key_line(const std::string& line) {
 
 Scenario ok(const std::string& toml) {
   auto r = load_scenario_from_string(toml, "ok.toml");
-  EXPECT_TRUE(r) << r.error;
-  return r ? *r.scenario : Scenario{};
+  EXPECT_TRUE(r) << r.error();
+  return r ? *r : Scenario{};
 }
 
 }  // namespace
 
 TEST(Scenario, TheTeachingScenarioReadsAsTheIssueDescribesIt) {
   auto r = load_scenario(kScenarios + "/teaching.toml");
-  ASSERT_TRUE(r) << r.error;
-  const Scenario& s = *r.scenario;
+  ASSERT_TRUE(r) << r.error();
+  const Scenario& s = *r;
   EXPECT_EQ(s.start.preset, "normal");
   EXPECT_EQ(s.start_pose, "upright");
   ASSERT_EQ(s.events.size(), 2u);
@@ -69,7 +69,7 @@ TEST(Scenario, EveryShippedScenarioLoadsAndDocumentsEveryKey) {
     if (entry.path().extension() != ".toml") continue;
     ++files;
     auto r = load_scenario(entry.path().string());
-    EXPECT_TRUE(r) << r.error;
+    EXPECT_TRUE(r) << r.error();
     std::ifstream in(entry.path());
     std::string line;
     while (std::getline(in, line)) {
@@ -88,11 +88,11 @@ TEST(Scenario, StartDefaultsToTheConfigsBreathing) {
   b.preset = "emphysema";
   b.rate_bpm = 15.0;
   auto r = load_scenario_from_string("[start]\ntidal_volume_ml = 450\n", "x.toml", b);
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.scenario->start.preset, "emphysema");
-  EXPECT_DOUBLE_EQ(r.scenario->start.rate_bpm, 15.0);
-  EXPECT_DOUBLE_EQ(r.scenario->start.tidal_volume_ml, 450.0);
-  EXPECT_TRUE(r.scenario->events.empty());
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->start.preset, "emphysema");
+  EXPECT_DOUBLE_EQ(r->start.rate_bpm, 15.0);
+  EXPECT_DOUBLE_EQ(r->start.tidal_volume_ml, 450.0);
+  EXPECT_TRUE(r->events.empty());
 }
 
 TEST(Scenario, EventsAreSortedByTimeAndKeepTheirFileIndex) {
@@ -227,6 +227,6 @@ TEST(BadScenario, UnknownTopLevelKey) {
 
 TEST(BadScenario, SyntaxErrorAndMissingFile) {
   EXPECT_EQ(error_of("[[event]\n").rfind("bad.toml:1:", 0), 0u);
-  EXPECT_EQ(load_scenario("/nonexistent/s.toml").error,
+  EXPECT_EQ(load_scenario("/nonexistent/s.toml").error(),
             "/nonexistent/s.toml: cannot read the scenario: expected a TOML file, got no such file");
 }

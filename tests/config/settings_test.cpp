@@ -19,16 +19,16 @@ const std::string kDefaultToml = std::string(LUNGAR_SOURCE_DIR) + "/config/defau
 std::string error_of(const std::string& toml) {
   auto r = load_settings_from_string(toml, "bad.toml");
   EXPECT_FALSE(r) << "expected an error for:\n" << toml;
-  return r.error;
+  return r.error();
 }
 
 }  // namespace
 
 TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   auto r = load_settings(kDefaultToml);
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.error();
   const Settings d;
-  const Settings& s = *r.settings;
+  const Settings& s = *r;
   EXPECT_EQ(s.display.width_px, d.display.width_px);
   EXPECT_EQ(s.hmd.eye_width_px, d.hmd.eye_width_px);
   EXPECT_DOUBLE_EQ(s.hmd.ipd_mm, d.hmd.ipd_mm);
@@ -68,18 +68,18 @@ TEST(Settings, EveryKeyOfTheShippedProfileIsDocumentedWithAComment) {
 
 TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
   auto r = load_settings_from_string("[render]\npoint_size_px = 3\n[hmd]\nview = \"mono\"\n", "x.toml");
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_DOUBLE_EQ(r.settings->render.point_size_px, 3.0);
-  EXPECT_EQ(r.settings->hmd.view, lungar::config::View::Mono);
-  EXPECT_DOUBLE_EQ(r.settings->hmd.ipd_mm, Settings{}.hmd.ipd_mm);
-  EXPECT_EQ(r.settings->source, "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_DOUBLE_EQ(r->render.point_size_px, 3.0);
+  EXPECT_EQ(r->hmd.view, lungar::config::View::Mono);
+  EXPECT_DOUBLE_EQ(r->hmd.ipd_mm, Settings{}.hmd.ipd_mm);
+  EXPECT_EQ(r->source, "x.toml");
 }
 
 TEST(Settings, HexUsbIdsAreAccepted) {
   auto r = load_settings_from_string("[trackers.hid]\nvendor_id = 0x1234\nproduct_id = 0xBEEF\n", "x.toml");
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.settings->trackers.hid.vendor_id, 0x1234);
-  EXPECT_EQ(r.settings->trackers.hid.product_id, 0xBEEF);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->trackers.hid.vendor_id, 0x1234);
+  EXPECT_EQ(r->trackers.hid.product_id, 0xBEEF);
 }
 
 TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
@@ -88,8 +88,8 @@ TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
   const auto file = dir / "profiles" / "p.toml";
   std::ofstream(file) << "[trackers]\nsource = \"replay\"\nreplay_file = \"../logs/a.trk\"\n";
   auto r = load_settings(file.string());
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.settings->trackers.replay_file, (dir / "logs" / "a.trk").string());
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->trackers.replay_file, (dir / "logs" / "a.trk").string());
   std::filesystem::remove_all(dir);
 }
 
@@ -199,5 +199,5 @@ TEST(BadConfig, BooleanWrittenAsString) {
 TEST(BadConfig, MissingFile) {
   auto r = load_settings("/nonexistent/lungar.toml");
   ASSERT_FALSE(r);
-  EXPECT_EQ(r.error, "/nonexistent/lungar.toml: cannot read the config: expected a TOML file, got no such file");
+  EXPECT_EQ(r.error(), "/nonexistent/lungar.toml: cannot read the config: expected a TOML file, got no such file");
 }

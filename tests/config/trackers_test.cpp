@@ -18,15 +18,15 @@ namespace {
 std::string error_of(const std::string& toml) {
   auto r = load_settings_from_string(toml, "bad.toml");
   EXPECT_FALSE(r) << "expected an error for:\n" << toml;
-  return r.error;
+  return r.error();
 }
 
 }  // namespace
 
 TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
   auto r = load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
-  ASSERT_TRUE(r) << r.error;
-  const auto& t = r.settings->trackers;
+  ASSERT_TRUE(r) << r.error();
+  const auto& t = r->trackers;
   const lungar::config::TrackerSettings d;
   EXPECT_EQ(t.report.report_id, d.report.report_id);
   EXPECT_EQ(t.report.length, d.report.length);
@@ -68,14 +68,14 @@ offset = 0
 offset = 24
 )",
                                      "x.toml");
-  ASSERT_TRUE(r) << r.error;
-  const auto& p = r.settings->trackers.report;
+  ASSERT_TRUE(r) << r.error();
+  const auto& p = r->trackers.report;
   EXPECT_EQ(p.endian, Endian::Big);
   EXPECT_EQ(p.report_id, -1);
   EXPECT_EQ(p.position_type, FieldType::F32);
   EXPECT_EQ(p.orientation, OrientationKind::Euler);
   EXPECT_EQ(p.orientation_components, "z,y,x");  // the Euler default when only `orientation` changed
-  EXPECT_EQ(r.settings->trackers.patient.offset, 24);
+  EXPECT_EQ(r->trackers.patient.offset, 24);
 }
 
 TEST(Trackers, SignedAxesParse) {

@@ -119,9 +119,9 @@ TEST(FiducialRegistration, WrittenSectionLoadsAsTheSameRegistration) {
   ASSERT_TRUE(lungar::platform::write_registration_toml(path, r, error)) << error;
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
   const auto loaded = lungar::config::load_settings(path);
-  ASSERT_TRUE(loaded) << loaded.error;
-  const auto& q = loaded.settings->registration.rotation_wxyz;
-  const auto& t = loaded.settings->registration.translation_mm;
+  ASSERT_TRUE(loaded) << loaded.error();
+  const auto& q = loaded->registration.rotation_wxyz;
+  const auto& t = loaded->registration.translation_mm;
   EXPECT_LT(Eigen::Quaterniond(q[0], q[1], q[2], q[3]).angularDistance(r.rotation), 1e-8);
   EXPECT_LT((Eigen::Vector3d(t[0], t[1], t[2]) - r.translation_mm).norm(), 1e-5);
   std::filesystem::remove(path);

@@ -58,7 +58,7 @@ inline double steady_max_step_ml(const BreathingParams& params, double dt) {
   if (!c) return 0;
   const double period = 60.0 / params.rate_bpm;
   double m = 0;
-  for (double t = 0; t < period; t += dt / 50.0) m = std::max(m, std::abs(c.driver->at(t + dt).v_ml - c.driver->at(t).v_ml));
+  for (double t = 0; t < period; t += dt / 50.0) m = std::max(m, std::abs(c->at(t + dt).v_ml - c->at(t).v_ml));
   return m;
 }
 

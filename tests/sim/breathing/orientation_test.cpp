@@ -34,8 +34,8 @@ TEST(Orientation, PoseNamesRoundTrip) {
 
 TEST(Orientation, ATurnEasesFromStartToTarget) {
   auto c = OrientationTrack::create(pose_rotation(Pose::Upright), {{20.0, 5.0, pose_rotation(Pose::Supine)}});
-  ASSERT_TRUE(c) << c.error;
-  const OrientationTrack& track = *c.track;
+  ASSERT_TRUE(c) << c.error();
+  const OrientationTrack& track = *c;
   EXPECT_NEAR(tilt_from_upright_deg(track.at(0.0)), 0.0, 1e-9);
   EXPECT_NEAR(tilt_from_upright_deg(track.at(20.0)), 0.0, 1e-9);
   EXPECT_NEAR(tilt_from_upright_deg(track.at(22.5)), 45.0, 1e-6);  // smoothstep(1/2) = 1/2
@@ -55,21 +55,21 @@ TEST(Orientation, ATurnEasesFromStartToTarget) {
 TEST(Orientation, TurnsChainFromTheLastTarget) {
   auto c = OrientationTrack::create(pose_rotation(Pose::Upright), {{30.0, 2.0, pose_rotation(Pose::LeftLateral)},
                                                                    {10.0, 5.0, pose_rotation(Pose::Supine)}});
-  ASSERT_TRUE(c) << c.error;
+  ASSERT_TRUE(c) << c.error();
   // Sorted by start: supine first, then from supine to the left side.
-  expect_near(gravity_in_lung_frame(c.track->at(20.0)), Vector3d(0, 1, 0), 1e-9);
-  const Vector3d mid = gravity_in_lung_frame(c.track->at(31.0));
+  expect_near(gravity_in_lung_frame(c->at(20.0)), Vector3d(0, 1, 0), 1e-9);
+  const Vector3d mid = gravity_in_lung_frame(c->at(31.0));
   expect_near(mid, Vector3d(std::sqrt(0.5), std::sqrt(0.5), 0), 1e-9);
-  expect_near(gravity_in_lung_frame(c.track->at(40.0)), Vector3d(1, 0, 0), 1e-9);
+  expect_near(gravity_in_lung_frame(c->at(40.0)), Vector3d(1, 0, 0), 1e-9);
 }
 
 TEST(Orientation, OverlappingOrBadTurnsAreRejected) {
   const auto supine = pose_rotation(Pose::Supine);
-  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{20.0, 5.0, supine}, {24.0, 2.0, supine}}).error,
+  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{20.0, 5.0, supine}, {24.0, 2.0, supine}}).error(),
             "turn at 24 s: expected turns that do not overlap, but the turn at 20 s runs until 25 s");
-  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{-1.0, 5.0, supine}}).error,
+  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{-1.0, 5.0, supine}}).error(),
             "turn at -1 s: expected a start time >= 0 s");
-  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{1.0, 0.0, supine}}).error,
+  EXPECT_EQ(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{1.0, 0.0, supine}}).error(),
             "turn at 1 s: expected a duration > 0 s, got 0");
   // Back to back is fine.
   EXPECT_TRUE(OrientationTrack::create(Eigen::Quaterniond::Identity(), {{20.0, 5.0, supine}, {25.0, 2.0, supine}}));

@@ -19,16 +19,16 @@ sim::BreathingScript load(const std::string& file) {
   config::BreathingSettings b;
   b.scenario = kScenarios + "/" + file;
   auto r = platform::load_breathing_script(b);
-  EXPECT_TRUE(r) << r.error;
-  return std::move(*r.script);
+  EXPECT_TRUE(r) << r.error();
+  return std::move(*r);
 }
 
 std::string error_of(const std::string& toml) {
   auto loaded = config::load_scenario_from_string(toml, "s.toml");
-  EXPECT_TRUE(loaded) << loaded.error;
-  auto r = platform::make_breathing_script(*loaded.scenario);
+  EXPECT_TRUE(loaded) << loaded.error();
+  auto r = platform::make_breathing_script(*loaded);
   EXPECT_FALSE(r);
-  return r.error;
+  return r.error();
 }
 
 }  // namespace
@@ -53,15 +53,16 @@ TEST(ScenarioAdapter, ShippedScenariosNeverStepFasterThanSteadyBreathing) {
   for (const char* file : {"teaching.toml", "clinical-tour.toml"}) {
     const sim::BreathingScript s = load(file);
     auto loaded = config::load_scenario(kScenarios + "/" + file);
-    ASSERT_TRUE(loaded) << loaded.error;
+    ASSERT_TRUE(loaded) << loaded.error();
     // Every steady pattern the scenario passes through, including its sighs as breaths of their volume.
     std::vector<sim::BreathingParams> steady;
     const double dt = 0.01;
-    sim::BreathingParams start;
-    ASSERT_EQ(platform::to_breathing_params(loaded.scenario->start, start), "");
+    auto made = platform::to_breathing_params(loaded->start);
+    ASSERT_TRUE(made) << made.error();
+    const sim::BreathingParams start = *made;
     steady.push_back(start);
     sim::BreathingParams current = start;
-    for (const config::ScenarioEvent& e : loaded.scenario->events) {
+    for (const config::ScenarioEvent& e : loaded->events) {
       if (e.preset) current.preset = *sim::preset_from_name(*e.preset);
       if (e.rate_bpm) current.rate_bpm = *e.rate_bpm;
       if (e.ie_ratio) current.ie_ratio = *e.ie_ratio;
@@ -103,14 +104,14 @@ TEST(ScenarioAdapter, HoldsAndApnoeasEndAfterTheirDuration) {
 TEST(ScenarioAdapter, EveryNameSimKnowsIsAcceptedByConfig) {
   for (sim::Preset id : sim::kAllPresets) {
     auto r = config::load_scenario_from_string("[start]\npreset = \"" + std::string(sim::to_string(id)) + "\"\n", "s");
-    EXPECT_TRUE(r) << r.error;
+    EXPECT_TRUE(r) << r.error();
   }
   for (sim::Pose pose : sim::kAllPoses) {
     auto r = config::load_scenario_from_string("[start]\npose = \"" + std::string(sim::to_string(pose)) + "\"\n", "s");
-    ASSERT_TRUE(r) << r.error;
-    auto script = platform::make_breathing_script(*r.scenario);
-    ASSERT_TRUE(script) << script.error;
-    EXPECT_TRUE(script.script->orientation.at(0.0).isApprox(sim::pose_rotation(pose)));
+    ASSERT_TRUE(r) << r.error();
+    auto script = platform::make_breathing_script(*r);
+    ASSERT_TRUE(script) << script.error();
+    EXPECT_TRUE(script->orientation.at(0.0).isApprox(sim::pose_rotation(pose)));
   }
 }
 
@@ -130,11 +131,11 @@ TEST(ScenarioAdapter, WithoutAScenarioTheConfigBreathingRunsSteadily) {
   b.rate_bpm = 15.0;
   b.tidal_volume_ml = 600.0;
   auto r = platform::load_breathing_script(b, 30.0);
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_DOUBLE_EQ(r.script->duration_s, 30.0);
-  for (double v : tidal_volumes(r.script->driver, 0.0, 4.0, 10, 0.005)) EXPECT_NEAR(v, 600.0, 6.0);
-  EXPECT_NEAR(sim::tilt_from_upright_deg(r.script->orientation.at(20.0)), 0.0, 1e-12);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_DOUBLE_EQ(r->duration_s, 30.0);
+  for (double v : tidal_volumes(r->driver, 0.0, 4.0, 10, 0.005)) EXPECT_NEAR(v, 600.0, 6.0);
+  EXPECT_NEAR(sim::tilt_from_upright_deg(r->orientation.at(20.0)), 0.0, 1e-12);
   b.scenario = "/nonexistent.toml";
-  EXPECT_EQ(platform::load_breathing_script(b).error,
+  EXPECT_EQ(platform::load_breathing_script(b).error(),
             "/nonexistent.toml: cannot read the scenario: expected a TOML file, got no such file");
 }

@@ -26,22 +26,7 @@ int main(int argc, char** argv) {
       "(out/snapshot.png), stats (out/stats.json) and a summary."};
   app.set_version_flag("--version", std::string("lungar ") + LUNGAR_VERSION);
   RuntimeOptions o;
-  app.add_option("--config", o.config_path, "settings TOML (default: built-in defaults; see config/default.toml)");
-  app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached procedural pair)");
-  app.add_option("--scenario", o.scenario_path,
-                 "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
-  app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
-  app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
-  long frames = 0;
-  double seconds = 0;
-  auto* frames_opt = app.add_option("--frames", frames, "stop after N frames");
-  auto* seconds_opt = app.add_option("--seconds", seconds, "stop after S seconds (default 10 unless --frames)");
-  app.add_option("--view", o.view, "mono | stereo (default: from the config)");
-  app.add_option("--mode", o.mode, "points | mesh");
-  app.add_option("--deform", o.deform, "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (rest shape)");
-  app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default out/snapshot.png)");
-  app.add_option("--stats-json", o.stats_json_path, "stats JSON (default out/stats.json)");
-  app.add_option("--record", o.record_path, "record the raw tracker reports into FILE.trk");
+  lungar::platform::add_runtime_options(app, o);
 
   lungar::platform::CalibrateOptions c;
   CLI::App* calibrate = app.add_subcommand(
@@ -60,8 +45,6 @@ int main(int argc, char** argv) {
   }
   if (*calibrate) return lungar::platform::run_calibrate(c);
 
-  if (*frames_opt) o.frames = frames;
-  if (*seconds_opt) o.seconds = seconds;
   lungar::config::Settings settings;
   if (!o.config_path.empty()) {
     auto loaded = lungar::config::load_settings(o.config_path);
@@ -71,8 +54,8 @@ int main(int argc, char** argv) {
     }
     settings = *loaded;
   }
-  if (const std::string error = lungar::platform::apply_overrides(o, settings); !error.empty()) {
-    std::fprintf(stderr, "lungar: %s\n", error.c_str());
+  if (const lungar::Status applied = lungar::platform::apply_overrides(o, settings); !applied) {
+    std::fprintf(stderr, "lungar: %s\n", applied.error().c_str());
     return 2;
   }
   std::signal(SIGINT, on_signal);

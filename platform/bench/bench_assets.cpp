@@ -2,6 +2,9 @@
 /// @brief Bake-once cache of benchmark assets, with a JSON record of each bake's timings beside the asset.
 #include "platform/bench/bench_assets.h"
 
+#include "config/base/atomic_file.h"
+#include "config/base/clock.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -102,12 +105,12 @@ Result<CachedAsset> load_or_bake(const AssetKey& key, const std::string& dir, bo
   r.transfer_rows_s = baked->report.transfer_rows_s;
   r.transfer_nnz_per_row = baked->report.transfer_nnz_per_row_mean;
   r.load_1min = load_average_1min();
-  r.baked_at_utc = utc_now();
+  r.baked_at_utc = utc_timestamp();
   std::filesystem::create_directories(dir, ec);
   if (auto written = sim::write_asset(baked->asset, path); !written) {
     log("could not cache the asset (" + written.error() + "); going on without the cache");
-  } else {
-    std::ofstream(record_path) << record_json(r).dump(2) << "\n";
+  } else if (Status recorded = write_file_atomically(record_path, record_json(r).dump(2) + "\n"); !recorded) {
+    log("could not record the bake (" + recorded.error() + ")");
   }
   return CachedAsset{std::move(baked->asset), r};
 }

@@ -2,7 +2,8 @@
 /// @brief Reads /proc/cpuinfo and /proc/loadavg (Linux); missing files leave the fields empty, never fail.
 #include "platform/bench/system_info.h"
 
-#include <ctime>
+#include "config/base/clock.h"
+
 #include <fstream>
 #include <thread>
 
@@ -13,15 +14,6 @@ double load_average_1min() {
   double one = -1;
   if (!(f >> one)) return -1;
   return one;
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
 }
 
 SystemInfo read_system_info() {
@@ -38,7 +30,7 @@ SystemInfo read_system_info() {
   info.cores = std::thread::hardware_concurrency();
   std::ifstream load("/proc/loadavg");
   load >> info.load_avg[0] >> info.load_avg[1] >> info.load_avg[2];
-  info.utc_time = utc_now();
+  info.utc_time = utc_timestamp();
   return info;
 }
 

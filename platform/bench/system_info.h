@@ -19,7 +19,5 @@ SystemInfo read_system_info();
 /// The 1-minute load average now; -1 when unreadable. Sampled around each measurement: the machine is shared.
 double load_average_1min();
 
-/// The current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
-std::string utc_now();
 
 }  // namespace lungar::platform::bench

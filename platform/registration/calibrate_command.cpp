@@ -12,31 +12,33 @@
 
 namespace lungar::platform {
 
-bool stylus_points_from_log(const std::string& log_path, const std::string& config_path,
-                            std::vector<Eigen::Vector3d>& points, std::string& error) {
+namespace {
+
+/// The report layout a log was recorded with: its header's, else the config's, else the defaults.
+Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std::string& log_path,
+                                          const std::string& config_path) {
+  if (!log.header.layout_toml.empty()) {
+    std::string error;
+    auto t = drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)", &error);
+    if (!t) return fail(error);
+    return *t;
+  }
+  if (config_path.empty()) return config::TrackerSettings{};
+  auto s = config::load_settings(config_path);
+  if (!s) return s.with_context("");
+  return s->trackers;
+}
+
+}  // namespace
+
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
+                                                            const std::string& config_path) {
   auto loaded = drivers::load_trk(log_path);
-  if (!loaded.log) {
-    error = loaded.error;
-    return false;
-  }
-  config::TrackerSettings trackers;
-  if (!loaded.log->header.layout_toml.empty()) {
-    auto t = drivers::layout_from_toml(loaded.log->header.layout_toml, log_path + " (header layout)", &error);
-    if (!t) return false;
-    trackers = *t;
-  } else if (!config_path.empty()) {
-    auto s = config::load_settings(config_path);
-    if (!s) {
-      error = s.error();
-      return false;
-    }
-    trackers = s->trackers;
-  }
-  auto layout = drivers::make_layout(trackers);
-  if (!layout.layout) {
-    error = log_path + ": report layout: " + layout.error;
-    return false;
-  }
+  if (!loaded.log) return fail(loaded.error);
+  auto trackers = log_layout(*loaded.log, log_path, config_path);
+  if (!trackers) return trackers.with_context("");
+  auto layout = drivers::make_layout(*trackers);
+  if (!layout.layout) return fail(log_path + ": report layout: " + layout.error);
   std::vector<StylusSample> samples;
   Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
   Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
@@ -56,41 +58,24 @@ bool stylus_points_from_log(const std::string& log_path, const std::string& conf
       }
     }
   }
-  if (samples.empty()) {
-    error = log_path + ": expected stylus poses in the log, got none";
-    return false;
-  }
-  points = find_dwell_points(samples);
-  return true;
+  if (samples.empty()) return fail(log_path + ": expected stylus poses in the log, got none");
+  return find_dwell_points(samples);
 }
 
 int run_calibrate(const CalibrateOptions& o) {
-  std::string error;
-  std::vector<Eigen::Vector3d> model, tracked;
-  if (!read_points_csv(o.model_csv, model, error)) {
-    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
-    return 2;
-  }
+  auto say = [](const std::string& message) { std::fprintf(stderr, "lungar calibrate: %s\n", message.c_str()); };
+  auto model = read_points_csv(o.model_csv);
+  if (!model) return say(model.error()), 2;
   if (o.stylus_csv.empty() == o.stylus_log.empty()) {
-    std::fprintf(stderr, "lungar calibrate: expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk\n");
-    return 2;
+    return say("expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk"), 2;
   }
-  const bool ok = o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path, tracked, error)
-                                       : read_points_csv(o.stylus_csv, tracked, error);
-  if (!ok) {
-    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
-    return 2;
-  }
-  Registration r;
-  if (!register_fiducials(model, tracked, r, error)) {
-    std::fprintf(stderr, "lungar calibrate: %s (%s)\n", error.c_str(),
-                 (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv).c_str());
-    return 2;
-  }
-  if (!write_registration_toml(o.out_path, r, error)) {
-    std::fprintf(stderr, "lungar calibrate: %s\n", error.c_str());
-    return 1;
-  }
+  auto tracked = o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path)
+                                      : read_points_csv(o.stylus_csv);
+  if (!tracked) return say(tracked.error()), 2;
+  auto fitted = register_fiducials(*model, *tracked);
+  if (!fitted) return say(fitted.error() + " (" + (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv) + ")"), 2;
+  const Registration& r = *fitted;
+  if (Status written = write_registration_toml(o.out_path, r); !written) return say(written.error()), 1;
   std::printf("registration from %d fiducials: RMS fiducial registration error %.3f mm (worst %.3f mm)\n",
               r.fiducials, r.fre_rms_mm, r.fre_max_mm);
   std::printf("  translation_mm = [%.3f, %.3f, %.3f], rotation_wxyz = [%.6f, %.6f, %.6f, %.6f]\n",

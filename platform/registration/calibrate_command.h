@@ -18,9 +18,9 @@ struct CalibrateOptions {
 };
 
 /// Stylus touches from a tracker log: each stylus sample is taken into the patient tracker's frame (by the newest
-/// patient pose, when the log has one), then dwells become fiducials. `error` names the file.
-bool stylus_points_from_log(const std::string& log_path, const std::string& config_path,
-                            std::vector<Eigen::Vector3d>& points, std::string& error);
+/// patient pose, when the log has one), then dwells become fiducials. An error names the file.
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
+                                                            const std::string& config_path);
 
 /// The whole command; prints the registration and its error, returns the exit code.
 int run_calibrate(const CalibrateOptions& o);

@@ -2,7 +2,7 @@
 /// @brief Umeyama rigid registration, stylus dwell detection and the fiducial file formats.
 #include "platform/registration/fiducial_registration.h"
 
-#include "platform/text_file.h"
+#include "config/base/atomic_file.h"
 
 #include <cmath>
 #include <cstdio>
@@ -13,17 +13,16 @@
 
 namespace lungar::platform {
 
-bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::vector<Eigen::Vector3d>& tracked,
-                        Registration& out, std::string& error) {
+Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& model,
+                                        const std::vector<Eigen::Vector3d>& tracked) {
+  Registration out;
   if (model.size() != tracked.size()) {
-    error = "fiducials: expected as many tracked points as model points, got " + std::to_string(tracked.size()) +
-            " tracked and " + std::to_string(model.size()) + " model points";
-    return false;
+    return fail("fiducials: expected as many tracked points as model points, got " + std::to_string(tracked.size()) +
+            " tracked and " + std::to_string(model.size()) + " model points");
   }
   const auto n = static_cast<Eigen::Index>(model.size());
   if (n < 3) {
-    error = "fiducials: expected at least 3 point pairs, got " + std::to_string(n);
-    return false;
+    return fail("fiducials: expected at least 3 point pairs, got " + std::to_string(n));
   }
   Eigen::Matrix3Xd src(3, n), dst(3, n);
   for (Eigen::Index k = 0; k < n; ++k) {
@@ -35,8 +34,7 @@ bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::ve
   const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred);
   const Eigen::Vector3d sv = svd.singularValues();
   if (sv(1) < 1e-6 * std::max(1.0, sv(0))) {
-    error = "fiducials: expected model points spanning a plane, got collinear points";
-    return false;
+    return fail("fiducials: expected model points spanning a plane, got collinear points");
   }
   const Eigen::Matrix4d T = Eigen::umeyama(src, dst, false);
   const Eigen::Matrix3d R = T.topLeftCorner<3, 3>();
@@ -51,7 +49,7 @@ bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::ve
   out.fre_rms_mm = std::sqrt(sum2 / static_cast<double>(n));
   out.fre_max_mm = worst;
   out.fiducials = static_cast<int>(n);
-  return true;
+  return out;
 }
 
 std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm,
@@ -79,11 +77,11 @@ std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& 
   return points;
 }
 
-bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out, std::string& error) {
+Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path) {
+  std::vector<Eigen::Vector3d> out;
   std::ifstream in(path);
   if (!in) {
-    error = path + ": cannot open: expected a CSV of fiducial points (x, y, z in mm per line)";
-    return false;
+    return fail(path + ": cannot open: expected a CSV of fiducial points (x, y, z in mm per line)");
   }
   out.clear();
   std::string line;
@@ -98,15 +96,14 @@ bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out,
     Eigen::Vector3d p;
     std::string extra;
     if (!(fields >> p.x() >> p.y() >> p.z()) || (fields >> extra) || !p.allFinite()) {
-      error = path + ":" + std::to_string(line_no) + ": expected three finite numbers x, y, z (mm), got '" + line + "'";
-      return false;
+      return fail(path + ":" + std::to_string(line_no) + ": expected three finite numbers x, y, z (mm), got '" + line + "'");
     }
     out.push_back(p);
   }
-  return true;
+  return out;
 }
 
-bool write_registration_toml(const std::string& path, const Registration& r, std::string& error) {
+Status write_registration_toml(const std::string& path, const Registration& r) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
                 "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n"
@@ -115,7 +112,7 @@ bool write_registration_toml(const std::string& path, const Registration& r, std
                 "rotation_wxyz = [%.9f, %.9f, %.9f, %.9f]\n",
                 r.fiducials, r.fre_rms_mm, r.fre_max_mm, r.translation_mm.x(), r.translation_mm.y(),
                 r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z());
-  return write_text_atomically(path, buf, error);
+  return write_file_atomically(path, buf);
 }
 
 }  // namespace lungar::platform

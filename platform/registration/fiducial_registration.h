@@ -11,6 +11,8 @@
 
 #include <Eigen/Geometry>
 
+#include "config/base/result.h"
+
 namespace lungar::platform {
 
 struct Registration {
@@ -24,9 +26,9 @@ struct Registration {
 };
 
 /// Rigid least-squares fit of `model` onto `tracked` (row k pairs with row k). Needs at least 3 points that are not
-/// collinear; `error` says why otherwise.
-bool register_fiducials(const std::vector<Eigen::Vector3d>& model, const std::vector<Eigen::Vector3d>& tracked,
-                        Registration& out, std::string& error);
+/// collinear; the error says why otherwise.
+Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& model,
+                                        const std::vector<Eigen::Vector3d>& tracked);
 
 /// Stylus samples -> fiducial touches: each run of samples that stays within `radius_mm` of its running mean for at
 /// least `dwell_s` seconds is one touch, reported as the mean position, in time order.
@@ -37,10 +39,10 @@ struct StylusSample {
 std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm = 1.5,
                                                double dwell_s = 0.5);
 
-/// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed. `error` names file, line and field.
-bool read_points_csv(const std::string& path, std::vector<Eigen::Vector3d>& out, std::string& error);
+/// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed. An error names file, line and field.
+Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path);
 
-/// Writes the registration as the [registration] section of a lungar config, via a temporary file and rename.
-bool write_registration_toml(const std::string& path, const Registration& r, std::string& error);
+/// Writes the registration as the [registration] section of a lungar config, whole or not at all.
+Status write_registration_toml(const std::string& path, const Registration& r);
 
 }  // namespace lungar::platform

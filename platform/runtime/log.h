@@ -1,11 +1,14 @@
 /// @file log.h
-/// @brief Timestamped log lines on stderr: "HH:MM:SS.mmm lungar: message".
+/// @brief The runtime's log lines: config/base/log_line.h's one format with the tool name "lungar".
+/// @ingroup platform
 #pragma once
 
 #include <string>
 
+#include "config/base/log_line.h"
+
 namespace lungar::platform {
 
-void log_line(const std::string& message);
+inline void log_line(const std::string& message) { lungar::log_line("lungar", message); }
 
 }  // namespace lungar::platform

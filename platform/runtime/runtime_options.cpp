@@ -1,60 +1,84 @@
 /// @file runtime_options.cpp
-/// @brief Command-line overrides on top of the config file.
+/// @brief Command-line options and their overrides on top of the config file.
 #include "platform/runtime/runtime_options.h"
+
+#include <vector>
+
+#include <CLI/CLI.hpp>
 
 namespace lungar::platform {
 
-std::string apply_overrides(const RuntimeOptions& o, config::Settings& s) {
-  using namespace lungar::config;
+namespace {
+
+template <class E, std::size_t N>
+std::vector<std::string> names_of(const EnumNames<E, N>& table) {
+  std::vector<std::string> names;
+  for (const auto& [value, name] : table.entries) names.emplace_back(name);
+  return names;
+}
+
+/// `text` (when given) as a value of `table`, into `out`.
+template <class E, std::size_t N>
+Status override_choice(const char* option, const std::string& text, const EnumNames<E, N>& table, E& out) {
+  if (text.empty()) return ok();
+  const auto value = table.parse(text);
+  if (!value) return fail(std::string(option) + ": expected " + table.expected() + ", got '" + text + "'");
+  out = *value;
+  return ok();
+}
+
+Status override_tracker(const std::string& tracker, config::TrackerSettings& t) {
+  if (tracker.empty()) return ok();
+  if (tracker.rfind("replay:", 0) == 0 && tracker.size() > 7) {
+    t.source = config::TrackerSource::Replay;
+    t.replay_file = tracker.substr(7);
+    return ok();
+  }
+  const auto source = config::kTrackerSourceNames.parse(tracker);
+  if (!source || *source == config::TrackerSource::Replay) {
+    return fail("--tracker: expected mock, hid or replay:FILE.trk, got '" + tracker + "'");
+  }
+  t.source = *source;
+  return ok();
+}
+
+}  // namespace
+
+void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
+  app.add_option("--config", o.config_path, "settings TOML (default: built-in defaults; see config/default.toml)");
+  app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached demo lungs)");
+  app.add_option("--scenario", o.scenario_path,
+                 "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
+  app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
+  app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
+  app.add_option("--frames", o.frames, "stop after N frames");
+  app.add_option("--seconds", o.seconds, "stop after S seconds (default 10 unless --frames; 0: until stopped)");
+  app.add_option("--view", o.view, "mono | stereo (default: from the config)")
+      ->check(CLI::IsMember(names_of(config::kViewNames)));
+  app.add_option("--mode", o.mode, "points | mesh")->check(CLI::IsMember(names_of(config::kRenderModeNames)));
+  app.add_option("--deform", o.deform,
+                 "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (the rest shape)")
+      ->check(CLI::IsMember(names_of(config::kDeformNames)));
+  app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default out/snapshot.png)");
+  app.add_option("--stats-json", o.stats_json_path, "stats JSON (default out/stats.json)");
+  app.add_option("--record", o.record_path, "record the raw tracker reports into FILE.trk");
+}
+
+Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
-  if (o.headless) s.display.output = Output::Headless;
-  if (!o.tracker.empty()) {
-    if (o.tracker == "mock") {
-      s.trackers.source = TrackerSource::Mock;
-    } else if (o.tracker == "hid") {
-      s.trackers.source = TrackerSource::Hid;
-    } else if (o.tracker.rfind("replay:", 0) == 0 && o.tracker.size() > 7) {
-      s.trackers.source = TrackerSource::Replay;
-      s.trackers.replay_file = o.tracker.substr(7);
-    } else {
-      return "--tracker: expected mock, hid or replay:FILE.trk, got '" + o.tracker + "'";
-    }
+  if (o.headless) s.display.output = config::Output::Headless;
+  if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
+  if (Status v = override_choice("--view", o.view, config::kViewNames, s.hmd.view); !v) return v;
+  if (Status m = override_choice("--mode", o.mode, config::kRenderModeNames, s.render.mode); !m) return m;
+  if (Status d = override_choice("--deform", o.deform, config::kDeformNames, s.render.deform); !d) return d;
+  if (o.frames && *o.frames <= 0) {
+    return fail("--frames: expected a positive number of frames, got " + std::to_string(*o.frames));
   }
-  if (!o.view.empty()) {
-    if (o.view == "mono") {
-      s.hmd.view = View::Mono;
-    } else if (o.view == "stereo") {
-      s.hmd.view = View::Stereo;
-    } else {
-      return "--view: expected mono or stereo, got '" + o.view + "'";
-    }
+  if (o.seconds && !(*o.seconds >= 0)) {
+    return fail("--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds));
   }
-  if (!o.mode.empty()) {
-    if (o.mode == "points") {
-      s.render.mode = RenderMode::Points;
-    } else if (o.mode == "mesh") {
-      s.render.mode = RenderMode::Mesh;
-    } else {
-      return "--mode: expected points or mesh, got '" + o.mode + "'";
-    }
-  }
-  if (!o.deform.empty()) {
-    if (o.deform == "gpu") {
-      s.render.deform = Deform::Gpu;
-    } else if (o.deform == "cpu7") {
-      s.render.deform = Deform::Cpu7;
-    } else if (o.deform == "cpu1") {
-      s.render.deform = Deform::Cpu1;
-    } else if (o.deform == "none") {
-      s.render.deform = Deform::None;
-    } else {
-      return "--deform: expected gpu, cpu7, cpu1 or none, got '" + o.deform + "'";
-    }
-  }
-  if (o.frames && *o.frames <= 0) return "--frames: expected a positive number of frames, got " + std::to_string(*o.frames);
-  if (o.seconds && !(*o.seconds >= 0)) return "--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds);
-  return "";
+  return ok();
 }
 
 }  // namespace lungar::platform

@@ -1,10 +1,14 @@
 /// @file runtime_options.h
 /// @brief The `lungar` command line's run options, and how they override the loaded settings.
+/// @ingroup platform
 #pragma once
 
 #include <optional>
 #include <string>
 
+#include <CLI/App.hpp>
+
+#include "config/base/result.h"
 #include "config/settings.h"
 
 namespace lungar::platform {
@@ -12,20 +16,23 @@ namespace lungar::platform {
 struct RuntimeOptions {
   std::string config_path;
   std::string asset_path;
-  std::string scenario_path;     ///< breathing/orientation scenario TOML
-  std::string tracker;          ///< "mock" | "hid" | "replay:FILE"; empty: from the config
+  std::string scenario_path;      ///< breathing/orientation scenario TOML
+  std::string tracker;            ///< "mock" | "hid" | "replay:FILE"; empty: from the config
   bool headless = false;
-  std::optional<long> frames;   ///< stop after this many frames
+  std::optional<long> frames;     ///< stop after this many frames
   std::optional<double> seconds;  ///< stop after this much time
-  std::string view;             ///< "mono" | "stereo"; empty: from the config
-  std::string mode;             ///< "points" | "mesh"
-  std::string deform;           ///< "gpu" | "cpu7" | "cpu1"
-  std::string snapshot_path;    ///< PNG of the last frame
+  std::string view;               ///< a name of config::kViewNames; empty: from the config
+  std::string mode;               ///< a name of config::kRenderModeNames
+  std::string deform;             ///< a name of config::kDeformNames
+  std::string snapshot_path;      ///< PNG of the last frame
   std::string stats_json_path;
-  std::string record_path;      ///< raw tracker reports into a .trk
+  std::string record_path;        ///< raw tracker reports into a .trk
 };
 
-/// Applies the command-line overrides to `s`. Returns an error line ("--tracker: expected ..., got ...") or "".
-std::string apply_overrides(const RuntimeOptions& o, config::Settings& s);
+/// Adds the run options to `app`; names of enumerations are checked against config's tables.
+void add_runtime_options(CLI::App& app, RuntimeOptions& o);
+
+/// Applies the command-line overrides to `s`; an error names the option ("--tracker: expected ..., got ...").
+Status apply_overrides(const RuntimeOptions& o, config::Settings& s);
 
 }  // namespace lungar::platform

@@ -4,21 +4,16 @@
 
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <string>
 #include <unistd.h>
 
+#include "config/base/log_line.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
 
 namespace {
 
-void log_line(const std::string& message) {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  std::fprintf(stderr, "%s lungar-bake: %s\n", stamp, message.c_str());
-}
+void log_line(const std::string& message) { lungar::log_line("lungar-bake", message); }
 
 /// A one-line bar redrawn in place; only on a terminal.
 class ProgressBar {

@@ -65,12 +65,12 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   }
   ASSERT_TRUE(writer.commit()) << writer.error();
 
-  std::vector<Eigen::Vector3d> touched;
-  std::string error;
-  ASSERT_TRUE(platform::stylus_points_from_log(log_path, "", touched, error)) << error;
-  ASSERT_EQ(touched.size(), model.size());
-  platform::Registration r;
-  ASSERT_TRUE(platform::register_fiducials(model, touched, r, error)) << error;
+  auto touched = platform::stylus_points_from_log(log_path, "");
+  ASSERT_TRUE(touched) << touched.error();
+  ASSERT_EQ(touched->size(), model.size());
+  auto fitted = platform::register_fiducials(model, *touched);
+  ASSERT_TRUE(fitted) << fitted.error();
+  const platform::Registration& r = *fitted;
   // Positions travel as 0.01 mm integers: the error is the hand's noise averaged over 50 samples, well under 0.2 mm.
   EXPECT_LT(r.fre_rms_mm, 0.2);
   EXPECT_LT(r.rotation.angularDistance(reg_q), 0.2 * M_PI / 180.0);

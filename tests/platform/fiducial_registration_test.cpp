@@ -39,9 +39,9 @@ Synthetic make(int n, double noise_mm, unsigned seed) {
 
 TEST(FiducialRegistration, RecoversAnExactTransform) {
   const Synthetic s = make(6, 0.0, 1);
-  Registration r;
-  std::string error;
-  ASSERT_TRUE(lungar::platform::register_fiducials(s.model, s.tracked, r, error)) << error;
+  auto fitted = lungar::platform::register_fiducials(s.model, s.tracked);
+  ASSERT_TRUE(fitted) << fitted.error();
+  const Registration& r = *fitted;
   EXPECT_LT(r.rotation.angularDistance(s.q), 1e-9);
   EXPECT_LT((r.translation_mm - s.t).norm(), 1e-8);
   EXPECT_LT(r.fre_rms_mm, 1e-8);
@@ -53,9 +53,9 @@ TEST(FiducialRegistration, NoisyFiducialsGiveTheExpectedErrorAndAClosedTransform
   const double sigma = 0.5;
   const int n = 200;
   const Synthetic s = make(n, sigma, 7);
-  Registration r;
-  std::string error;
-  ASSERT_TRUE(lungar::platform::register_fiducials(s.model, s.tracked, r, error)) << error;
+  auto fitted = lungar::platform::register_fiducials(s.model, s.tracked);
+  ASSERT_TRUE(fitted) << fitted.error();
+  const Registration& r = *fitted;
   const double expected_fre = std::sqrt((1.0 - 2.0 / n) * 3.0 * sigma * sigma);
   EXPECT_NEAR(r.fre_rms_mm, expected_fre, 0.1 * expected_fre);
   EXPECT_GT(r.fre_max_mm, r.fre_rms_mm);
@@ -64,17 +64,15 @@ TEST(FiducialRegistration, NoisyFiducialsGiveTheExpectedErrorAndAClosedTransform
 }
 
 TEST(FiducialRegistration, RejectsDegenerateInput) {
-  Registration r;
-  std::string error;
+  using lungar::platform::register_fiducials;
   const std::vector<Eigen::Vector3d> two = {{0, 0, 0}, {1, 0, 0}};
-  EXPECT_FALSE(lungar::platform::register_fiducials(two, two, r, error));
-  EXPECT_EQ(error, "fiducials: expected at least 3 point pairs, got 2");
+  EXPECT_EQ(register_fiducials(two, two).error(), "fiducials: expected at least 3 point pairs, got 2");
   const std::vector<Eigen::Vector3d> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 0, 0}};
-  EXPECT_FALSE(lungar::platform::register_fiducials(line, line, r, error));
-  EXPECT_EQ(error, "fiducials: expected model points spanning a plane, got collinear points");
+  EXPECT_EQ(register_fiducials(line, line).error(),
+            "fiducials: expected model points spanning a plane, got collinear points");
   const std::vector<Eigen::Vector3d> three = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  EXPECT_FALSE(lungar::platform::register_fiducials(three, line, r, error));
-  EXPECT_EQ(error, "fiducials: expected as many tracked points as model points, got 4 tracked and 3 model points");
+  EXPECT_EQ(register_fiducials(three, line).error(),
+            "fiducials: expected as many tracked points as model points, got 4 tracked and 3 model points");
 }
 
 TEST(FiducialRegistration, StylusDwellsBecomeFiducialsInOrder) {
@@ -99,25 +97,25 @@ TEST(FiducialRegistration, StylusDwellsBecomeFiducialsInOrder) {
 TEST(FiducialRegistration, PointsFileErrorsNameTheLine) {
   const auto path = (std::filesystem::temp_directory_path() / "lungar_fiducials_test.csv").string();
   std::ofstream(path) << "# model fiducials\n1, 2, 3\n4, 5\n";
-  std::vector<Eigen::Vector3d> points;
-  std::string error;
-  EXPECT_FALSE(lungar::platform::read_points_csv(path, points, error));
-  EXPECT_EQ(error, path + ":3: expected three finite numbers x, y, z (mm), got '4  5'");
+  EXPECT_EQ(lungar::platform::read_points_csv(path).error(),
+            path + ":3: expected three finite numbers x, y, z (mm), got '4  5'");
   std::ofstream(path) << "1, 2, 3\n4, 5, 6 # a comment\n\n7,8,9\n";
-  ASSERT_TRUE(lungar::platform::read_points_csv(path, points, error)) << error;
-  ASSERT_EQ(points.size(), 3u);
-  EXPECT_EQ(points[2], Eigen::Vector3d(7, 8, 9));
+  auto points = lungar::platform::read_points_csv(path);
+  ASSERT_TRUE(points) << points.error();
+  ASSERT_EQ(points->size(), 3u);
+  EXPECT_EQ((*points)[2], Eigen::Vector3d(7, 8, 9));
   std::filesystem::remove(path);
 }
 
 TEST(FiducialRegistration, WrittenSectionLoadsAsTheSameRegistration) {
   const Synthetic s = make(8, 0.2, 11);
-  Registration r;
-  std::string error;
-  ASSERT_TRUE(lungar::platform::register_fiducials(s.model, s.tracked, r, error)) << error;
+  auto fitted = lungar::platform::register_fiducials(s.model, s.tracked);
+  ASSERT_TRUE(fitted) << fitted.error();
+  const Registration& r = *fitted;
   const auto path = (std::filesystem::temp_directory_path() / "lungar_registration_test.toml").string();
-  ASSERT_TRUE(lungar::platform::write_registration_toml(path, r, error)) << error;
-  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  const lungar::Status written = lungar::platform::write_registration_toml(path, r);
+  ASSERT_TRUE(written) << written.error();
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
   const auto loaded = lungar::config::load_settings(path);
   ASSERT_TRUE(loaded) << loaded.error();
   const auto& q = loaded->registration.rotation_wxyz;

@@ -1,5 +1,8 @@
-// Command-line overrides: each option lands on the right setting, and bad values are named.
+// Command-line overrides: each option lands on the right setting, and bad values are named, whether they come
+// through the command line (checked against config's name tables) or are set directly.
 #include <gtest/gtest.h>
+
+#include <CLI/CLI.hpp>
 
 #include "platform/runtime/runtime_options.h"
 
@@ -7,17 +10,31 @@ using lungar::platform::apply_overrides;
 using lungar::platform::RuntimeOptions;
 namespace cfg = lungar::config;
 
+namespace {
+
+/// Parses `args` as lungar's command line; the CLI11 error text, or "" when it parses.
+std::string parse(std::vector<std::string> args, RuntimeOptions& o) {
+  CLI::App app;
+  lungar::platform::add_runtime_options(app, o);
+  std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
 TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
   RuntimeOptions o;
-  o.tracker = "replay:logs/turn.trk";
-  o.view = "mono";
-  o.mode = "mesh";
-  o.deform = "cpu1";
-  o.headless = true;
-  o.asset_path = "a.lungbake";
-  o.scenario_path = "teach.toml";
+  ASSERT_EQ(parse({"--tracker", "replay:logs/turn.trk", "--view", "mono", "--mode", "mesh", "--deform", "cpu1",
+                   "--headless", "--asset", "a.lungbake", "--scenario", "teach.toml", "--frames", "7"},
+                  o),
+            "");
   cfg::Settings s;
-  EXPECT_EQ(apply_overrides(o, s), "");
+  ASSERT_TRUE(apply_overrides(o, s).ok());
   EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Replay);
   EXPECT_EQ(s.trackers.replay_file, "logs/turn.trk");
   EXPECT_EQ(s.hmd.view, cfg::View::Mono);
@@ -26,20 +43,32 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
   EXPECT_EQ(s.display.output, cfg::Output::Headless);
   EXPECT_EQ(s.sim.asset, "a.lungbake");
   EXPECT_EQ(s.breathing.scenario, "teach.toml");
+  EXPECT_EQ(o.frames, 7);
+  EXPECT_FALSE(o.seconds.has_value());
+}
+
+TEST(RuntimeOptions, TheCommandLineRefusesNamesThatAreNotInTheTables) {
+  RuntimeOptions o;
+  EXPECT_EQ(parse({"--view", "left"}, o), "--view: left not in {mono,stereo}");
+  EXPECT_EQ(parse({"--deform", "cuda"}, o), "--deform: cuda not in {gpu,cpu7,cpu1,none}");
+  EXPECT_EQ(parse({"--frames", "many"}, o), "Could not convert: --frames = many");
 }
 
 TEST(RuntimeOptions, BadValuesAreNamed) {
   cfg::Settings s;
   RuntimeOptions o;
   o.tracker = "replay:";
-  EXPECT_EQ(apply_overrides(o, s), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay:'");
+  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay:'");
+  o = {};
+  o.tracker = "replay";
+  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay'");
   o = {};
   o.view = "left";
-  EXPECT_EQ(apply_overrides(o, s), "--view: expected mono or stereo, got 'left'");
+  EXPECT_EQ(apply_overrides(o, s).error(), "--view: expected mono or stereo, got 'left'");
   o = {};
   o.deform = "cuda";
-  EXPECT_EQ(apply_overrides(o, s), "--deform: expected gpu, cpu7, cpu1 or none, got 'cuda'");
+  EXPECT_EQ(apply_overrides(o, s).error(), "--deform: expected gpu, cpu7, cpu1 or none, got 'cuda'");
   o = {};
   o.frames = 0;
-  EXPECT_EQ(apply_overrides(o, s), "--frames: expected a positive number of frames, got 0");
+  EXPECT_EQ(apply_overrides(o, s).error(), "--frames: expected a positive number of frames, got 0");
 }

@@ -25,7 +25,7 @@ std::string fmt(double v) {
 }
 
 // The spellings below must match sim/breathing (pv_curve.cpp, orientation.cpp); config/ does not depend on sim/,
-// and tests/sim/breathing/scenario_adapter_test.cpp checks that every name here is known there.
+// and tests/platform/scenario_adapter_test.cpp checks that every name here is known there.
 const std::initializer_list<std::string_view> kPresetNames = {"normal", "emphysema", "fibrosis"};
 const std::initializer_list<std::string_view> kPoseNames = {"upright", "supine", "prone", "left_lateral",
                                                             "right_lateral"};

@@ -7,7 +7,10 @@
 
 namespace lungar::platform {
 
-void FrameStats::record(double frame_ms, double pose_age_ms, double volume_ml) {
+void FrameStats::record(double frame_ms, double pose_age_ms, double volume_ml,
+                        const std::array<double, 3>& gravity_lung) {
+  if (frame_ms_.count() == 0) gravity_first_ = gravity_lung;
+  gravity_last_ = gravity_lung;
   frame_ms_.add(frame_ms);
   if (pose_age_ms >= 0) pose_age_ms_.add(pose_age_ms);
   volume_min_ = any_volume_ ? std::min(volume_min_, volume_ml) : volume_ml;
@@ -22,10 +25,13 @@ nlohmann::ordered_json FrameStats::to_json() const {
   j["fps_median"] = p50 > 0 ? 1000.0 / p50 : 0.0;
   j["frame_ms_p50"] = p50;
   j["frame_ms_p99"] = frame_ms_.percentile(99);
+  j["frame_ms_mean"] = frame_ms_.mean();
   j["pose_age_ms_p50"] = pose_age_ms_.percentile(50);
   j["pose_age_ms_p99"] = pose_age_ms_.percentile(99);
   j["volume_ml_min"] = volume_min_;
   j["volume_ml_max"] = volume_max_;
+  j["gravity_lung_first"] = gravity_first_;
+  j["gravity_lung_last"] = gravity_last_;
   return j;
 }
 

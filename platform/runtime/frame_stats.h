@@ -4,6 +4,7 @@
 /// @ingroup platform
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -16,15 +17,17 @@ namespace lungar::platform {
 class FrameStats {
  public:
   /// One frame: its duration (previous submit -> this submit), the age of the head pose it used (report arrival
-  /// -> frame submitted; negative when there was no pose), and the lung volume change drawn. Allocates nothing.
-  void record(double frame_ms, double pose_age_ms, double volume_ml);
+  /// -> frame submitted; negative when there was no pose), the lung volume change drawn, and the direction of
+  /// gravity in the lung frame (LPS: upright is -z, supine +y). Allocates nothing.
+  void record(double frame_ms, double pose_age_ms, double volume_ml, const std::array<double, 3>& gravity_lung);
 
   std::uint64_t frames() const { return frame_ms_.count(); }
   const LogHistogram& frame_ms() const { return frame_ms_; }
   const LogHistogram& pose_age_ms() const { return pose_age_ms_; }
 
   /// The frame keys of the stats JSON (DESIGN.md: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
-  /// frame_ms_p99, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max.
+  /// frame_ms_p99, frame_ms_mean, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max, and gravity_lung_first,
+  /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame).
   nlohmann::ordered_json to_json() const;
   /// "N frames, F fps median (p50 .. ms, p99 .. ms); pose age p50 .. ms; dV a..b mL".
   std::string summary() const;
@@ -33,6 +36,7 @@ class FrameStats {
   LogHistogram frame_ms_, pose_age_ms_;
   double volume_min_ = 0, volume_max_ = 0;
   bool any_volume_ = false;
+  std::array<double, 3> gravity_first_{}, gravity_last_{};
 };
 
 }  // namespace lungar::platform

@@ -16,6 +16,7 @@ void LogHistogram::add(double value) {
   min_ = count_ ? std::min(min_, value) : value;
   max_ = count_ ? std::max(max_, value) : value;
   ++count_;
+  sum_ += value;
   const double index = value > kMin ? std::floor(std::log(value / kMin) / kLogGrowth) : 0.0;
   counts_[static_cast<std::size_t>(std::clamp(index, 0.0, static_cast<double>(kBuckets - 1)))] += 1;
 }

@@ -24,13 +24,14 @@ class LogHistogram {
   std::uint64_t count() const { return count_; }
   double min() const { return count_ ? min_ : 0.0; }
   double max() const { return count_ ? max_ : 0.0; }
+  double mean() const { return count_ ? sum_ / static_cast<double>(count_) : 0.0; }
   /// The nearest-rank p-th percentile (p in 0..100); 0 when empty.
   double percentile(double p) const;
 
  private:
   std::array<std::uint64_t, kBuckets> counts_{};
   std::uint64_t count_ = 0;
-  double min_ = 0, max_ = 0;
+  double min_ = 0, max_ = 0, sum_ = 0;
 };
 
 }  // namespace lungar::platform

@@ -254,7 +254,8 @@ Status Runtime::present_and_record(const FrameState& state) {
   previous_submit_ns_ = submitted;
   frame_estimate_ms_ = 0.9 * frame_estimate_ms_ + 0.1 * frame_ms;
   const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, submitted) : -1.0;
-  stats_.record(frame_ms, age_ms, state.breath.dv_ml);
+  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
+  stats_.record(frame_ms, age_ms, state.breath.dv_ml, {g.x(), g.y(), g.z()});
   ++frames_;
   return ok();
 }

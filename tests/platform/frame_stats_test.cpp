@@ -57,17 +57,18 @@ TEST(FrameStats, MemoryDoesNotGrowWithTheFrameCount) {
   // An 8-hour day at 90 Hz is 2.6 million frames; the statistics are a fixed-size object (no heap at all).
   static_assert(sizeof(FrameStats) < 64 * 1024);
   FrameStats stats;
-  for (int k = 0; k < 3'000'000; ++k) stats.record(11.0 + (k % 7), 5.0, 250.0);
+  for (int k = 0; k < 3'000'000; ++k) stats.record(11.0 + (k % 7), 5.0, 250.0, {0.0, 0.0, -1.0});
   EXPECT_EQ(stats.frames(), 3'000'000u);
   EXPECT_NEAR(stats.frame_ms().percentile(50), 14.0, 14.0 * LogHistogram::kRelativeError);
 }
 
 TEST(FrameStats, JsonCarriesTheFrameKeysWithRecordedValues) {
   FrameStats stats;
-  for (int k = 0; k < 10; ++k) stats.record(20.0 + k, k % 2 ? 4.0 : -1.0, 100.0 * k - 50.0);
+  for (int k = 0; k < 10; ++k) stats.record(20.0 + k, k % 2 ? 4.0 : -1.0, 100.0 * k - 50.0, {0.0, 0.1 * k, -1.0});
   const auto j = stats.to_json();
-  for (const char* key : {"frames", "fps_median", "frame_ms_p50", "frame_ms_p99", "pose_age_ms_p50",
-                          "pose_age_ms_p99", "volume_ml_min", "volume_ml_max"}) {
+  for (const char* key : {"frames", "fps_median", "frame_ms_p50", "frame_ms_p99", "frame_ms_mean", "pose_age_ms_p50",
+                          "pose_age_ms_p99", "volume_ml_min", "volume_ml_max", "gravity_lung_first",
+                          "gravity_lung_last"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   const double tol = LogHistogram::kRelativeError;
@@ -75,7 +76,10 @@ TEST(FrameStats, JsonCarriesTheFrameKeysWithRecordedValues) {
   EXPECT_NEAR(j["frame_ms_p50"].get<double>(), 24.0, 24.0 * tol);
   EXPECT_NEAR(j["fps_median"].get<double>(), 1000.0 / 24.0, 1000.0 / 24.0 * tol * 1.01);
   EXPECT_NEAR(j["frame_ms_p99"].get<double>(), 29.0, 29.0 * tol);
+  EXPECT_DOUBLE_EQ(j["frame_ms_mean"].get<double>(), 24.5);
   EXPECT_NEAR(j["pose_age_ms_p50"].get<double>(), 4.0, 4.0 * tol);  // frames without a pose are not counted
   EXPECT_DOUBLE_EQ(j["volume_ml_min"].get<double>(), -50.0);
   EXPECT_DOUBLE_EQ(j["volume_ml_max"].get<double>(), 850.0);
+  EXPECT_DOUBLE_EQ(j["gravity_lung_first"][1].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j["gravity_lung_last"][1].get<double>(), 0.9);
 }

@@ -157,6 +157,23 @@ TEST_F(RendererTest, BackFaceCullingKeepsTheFrontPicture) {
   EXPECT_LT(differing_fraction(culled, all), 0.01);
 }
 
+TEST_F(RendererTest, BackFaceCullingDropsTheBackPoints) {
+  // The near plane through the lungs' centre clips their front half away, so the back half shows from inside.
+  // Culled, those back-facing points are never drawn and little but the limb remains; without culling, they are.
+  FrameInputs f = frame_;
+  f.level_of_detail = false;
+  std::array<EyeView, 2> cut = eyes_;
+  for (auto& e : cut) {
+    e.projection = glm::perspective(glm::radians(60.f), static_cast<float>(kEyeW) / kEyeH, 600.f, 5000.f);
+  }
+  f.eyes = cut;
+  const double culled = lit_fraction(draw(f));
+  f.cull_back_facing = false;
+  const double all = lit_fraction(draw(f));
+  EXPECT_GT(all, 0.02);
+  EXPECT_LT(culled, 0.5 * all) << "culled " << culled << ", all " << all;
+}
+
 TEST_F(RendererTest, OverlayShowsTheRestShapeInGrey) {
   FrameInputs f = frame_;
   for (auto& l : lungs_) l.volume_change_ml = -400.f;  // deflated: the rest shape shows around it

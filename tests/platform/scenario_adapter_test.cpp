@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "breathing_measure.h"
+#include "tests/sim/breathing/breathing_measure.h"
 #include "config/scenario_load.h"
 #include "platform/scenario_adapter.h"
 

@@ -79,6 +79,32 @@ void upload(gl::Buffer& buffer, GLenum target, const void* data, std::size_t byt
   glBufferData(target, static_cast<GLsizeiptr>(bytes), data, usage);
 }
 
+/// Coefficients padded to whole vec4s, vertex-major: vertex v's k-th vec4 is element v * coeff_vec4 + k.
+std::vector<float> padded_coefficients(const std::vector<float>& src, std::uint32_t n, std::uint32_t coefficients,
+                                       std::uint32_t nv4) {
+  std::vector<float> padded(std::size_t{n} * nv4 * 4, 0.f);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    std::copy_n(src.begin() + std::size_t{v} * coefficients, coefficients, padded.begin() + std::size_t{v} * nv4 * 4);
+  }
+  return padded;
+}
+
+std::vector<std::uint16_t> to_half(const std::vector<float>& values) {
+  std::vector<std::uint16_t> halves(values.size());
+  std::transform(values.begin(), values.end(), halves.begin(), [](float x) { return glm::packHalf1x16(x); });
+  return halves;
+}
+
+/// Positions (attribute 0) and normals (attribute 1), 3 floats each.
+void position_and_normal_attributes(const gl::Buffer& positions, const gl::Buffer& normals) {
+  glBindBuffer(GL_ARRAY_BUFFER, positions.id());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, normals.id());
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+}
+
 }  // namespace
 
 Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const DrawableOptions& options) {
@@ -94,30 +120,14 @@ Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const Dr
                     (options.storage == CoeffStorage::Auto && d.coefficients_ > kMaxAttributeCoefficients);
   if (options.storage == CoeffStorage::Attributes && d.coefficients_ > kMaxAttributeCoefficients) {
     return fail("drawable options: field 'storage': attributes hold at most " +
-                                           std::to_string(kMaxAttributeCoefficients) + " coefficients, the asset has " +
-                                           std::to_string(d.coefficients_));
+                std::to_string(kMaxAttributeCoefficients) + " coefficients, the asset has " +
+                std::to_string(d.coefficients_));
   }
   for (const auto& l : asset.lungs) {
     LungRange r{l.first_vertex, l.vertex_count, l.first_index, l.index_count, 0, {}, 0};
     bound(asset, r);
     d.lungs_.push_back(r);
   }
-
-  // Coefficients padded to whole vec4s, vertex-major: vertex v's k-th vec4 is element v * coeff_vec4 + k.
-  const std::uint32_t nv4 = d.coeff_vec4();
-  const std::vector<float>& src = options.basis == Basis::Linear ? asset.linear_coeffs : asset.sh_coeffs;
-  std::vector<float> padded(std::size_t{n} * nv4 * 4, 0.f);
-  for (std::uint32_t v = 0; v < n; ++v) {
-    std::copy_n(src.begin() + std::size_t{v} * d.coefficients_, d.coefficients_, padded.begin() + std::size_t{v} * nv4 * 4);
-  }
-  std::vector<std::uint16_t> halves;
-  if (options.half_float) {
-    halves.resize(padded.size());
-    std::transform(padded.begin(), padded.end(), halves.begin(), [](float x) { return glm::packHalf1x16(x); });
-  }
-  const void* coeff_data = options.half_float ? static_cast<const void*>(halves.data()) : padded.data();
-  const std::size_t coeff_bytes = padded.size() * (options.half_float ? 2 : 4);
-
   upload(d.positions_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_STATIC_DRAW);
   upload(d.normals_, GL_ARRAY_BUFFER, asset.normals.data(), asset.normals.size() * 4, GL_STATIC_DRAW);
   // The deformed copy starts as the rest shape: drawing it before any deformation shows the rest lungs.
@@ -125,84 +135,87 @@ Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const Dr
   if (d.index_count_ > 0) {
     upload(d.indices_, GL_ELEMENT_ARRAY_BUFFER, asset.triangles.data(), asset.triangles.size() * 4, GL_STATIC_DRAW);
   }
-
-  if (d.uses_texture_) {
-    GLint max_size = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-    const std::size_t texels = std::size_t{n} * nv4;
-    const GLint width = std::min<GLint>(max_size, 4096);
-    const std::size_t height = (texels + width - 1) / static_cast<std::size_t>(width);
-    if (height > static_cast<std::size_t>(max_size)) {
-      return fail("baked asset: field 'sh_coeffs': " + std::to_string(texels) +
-                                             " texels exceed the GL texture limit of " + std::to_string(max_size) + "^2");
-    }
-    // The texture's last row is partial: pad the upload to whole rows.
-    const std::size_t padded_values = height * static_cast<std::size_t>(width) * 4;
-    padded.resize(padded_values, 0.f);
-    if (options.half_float) halves.resize(padded_values, 0);
-    d.coeff_texture_ = gl::Texture::create();
-    d.coeff_texture_width_ = width;
-    glBindTexture(GL_TEXTURE_2D, d.coeff_texture_.id());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // float textures are not filterable
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    if (options.half_float) {
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, static_cast<GLsizei>(height), 0, GL_RGBA, GL_HALF_FLOAT,
-                   halves.data());
-    } else {
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, static_cast<GLsizei>(height), 0, GL_RGBA, GL_FLOAT,
-                   padded.data());
-    }
-    glBindTexture(GL_TEXTURE_2D, 0);
-  } else {
-    upload(d.coeffs_, GL_ARRAY_BUFFER, coeff_data, coeff_bytes, GL_STATIC_DRAW);
+  const std::vector<float>& src = options.basis == Basis::Linear ? asset.linear_coeffs : asset.sh_coeffs;
+  std::vector<float> padded = padded_coefficients(src, n, d.coefficients_, d.coeff_vec4());
+  if (Status coeffs = d.uses_texture_ ? d.upload_coefficient_texture(std::move(padded)) : d.upload_coefficients(padded);
+      !coeffs) {
+    return coeffs.with_context("");
   }
-
-  // rest_vao: rest positions, normals and (attribute storage) coefficients, for the deforming programs.
-  d.rest_vao_ = gl::VertexArray::create();
-  glBindVertexArray(d.rest_vao_.id());
-  glBindBuffer(GL_ARRAY_BUFFER, d.positions_.id());
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-  if (!d.uses_texture_) {
-    glBindBuffer(GL_ARRAY_BUFFER, d.coeffs_.id());
-    const GLsizei stride = static_cast<GLsizei>(nv4 * 4 * (options.half_float ? 2 : 4));
-    for (std::uint32_t k = 0; k < nv4; ++k) {
-      glEnableVertexAttribArray(2 + k);
-      const auto offset = static_cast<std::uintptr_t>(k * 4 * (options.half_float ? 2 : 4));
-      glVertexAttribPointer(2 + k, 4, options.half_float ? GL_HALF_FLOAT : GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<const void*>(offset));
-    }
-  }
-  if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
-
-  // deformed_vao: deformed positions and the normals, for drawing without the shader deformation; rest_plain_vao:
-  // the same for the rest shape (no coefficient arrays enabled, so none are fetched).
-  auto positions_and_normals = [&](gl::VertexArray& vao, const gl::Buffer& positions) {
-    vao = gl::VertexArray::create();
-    glBindVertexArray(vao.id());
-    glBindBuffer(GL_ARRAY_BUFFER, positions.id());
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, d.normals_.id());
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
-    if (d.index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.indices_.id());
-  };
-  positions_and_normals(d.deformed_vao_, d.deformed_);
-  positions_and_normals(d.rest_plain_vao_, d.positions_);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-
+  d.build_vertex_arrays();
   if (GLenum err = glGetError(); err != GL_NO_ERROR) {
     char text[64];
     std::snprintf(text, sizeof text, "baked asset upload: GL error 0x%04x", err);
     return fail(text);
   }
   return d;
+}
+
+Status LungDrawable::upload_coefficients(const std::vector<float>& padded) {
+  if (half_float_) {
+    const std::vector<std::uint16_t> halves = to_half(padded);
+    upload(coeffs_, GL_ARRAY_BUFFER, halves.data(), halves.size() * 2, GL_STATIC_DRAW);
+  } else {
+    upload(coeffs_, GL_ARRAY_BUFFER, padded.data(), padded.size() * 4, GL_STATIC_DRAW);
+  }
+  return ok();
+}
+
+/// Coefficients beyond the attribute limit go to a float texture read by gl_VertexID, 4096 texels a row.
+Status LungDrawable::upload_coefficient_texture(std::vector<float> padded) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  const std::size_t texels = std::size_t{vertex_count_} * coeff_vec4();
+  const GLint width = std::min<GLint>(max_size, 4096);
+  const std::size_t height = (texels + width - 1) / static_cast<std::size_t>(width);
+  if (height > static_cast<std::size_t>(max_size)) {
+    return fail("baked asset: field 'sh_coeffs': " + std::to_string(texels) + " texels exceed the GL texture limit of " +
+                std::to_string(max_size) + "^2");
+  }
+  padded.resize(height * static_cast<std::size_t>(width) * 4, 0.f);  // the last row is partial: whole rows
+  coeff_texture_ = gl::Texture::create();
+  coeff_texture_width_ = width;
+  glBindTexture(GL_TEXTURE_2D, coeff_texture_.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // float textures are not filterable
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  const auto h = static_cast<GLsizei>(height);
+  if (half_float_) {
+    const std::vector<std::uint16_t> halves = to_half(padded);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, h, 0, GL_RGBA, GL_HALF_FLOAT, halves.data());
+  } else {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, h, 0, GL_RGBA, GL_FLOAT, padded.data());
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return ok();
+}
+
+/// rest_vao: rest positions, normals and (attribute storage) coefficients, for the deforming programs.
+/// deformed_vao: deformed positions and the normals, for drawing without the shader deformation; rest_plain_vao:
+/// the same for the rest shape (no coefficient arrays enabled, so none are fetched).
+void LungDrawable::build_vertex_arrays() {
+  rest_vao_ = gl::VertexArray::create();
+  glBindVertexArray(rest_vao_.id());
+  position_and_normal_attributes(positions_, normals_);
+  if (!uses_texture_) {
+    glBindBuffer(GL_ARRAY_BUFFER, coeffs_.id());
+    const GLsizei value_bytes = half_float_ ? 2 : 4;
+    const GLsizei stride = static_cast<GLsizei>(coeff_vec4() * 4) * value_bytes;
+    for (std::uint32_t k = 0; k < coeff_vec4(); ++k) {
+      glEnableVertexAttribArray(2 + k);
+      const auto offset = static_cast<std::uintptr_t>(k * 4 * value_bytes);
+      glVertexAttribPointer(2 + k, 4, half_float_ ? GL_HALF_FLOAT : GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>(offset));
+    }
+  }
+  if (index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  for (auto [vao, positions] : {std::pair{&deformed_vao_, &deformed_}, std::pair{&rest_plain_vao_, &positions_}}) {
+    *vao = gl::VertexArray::create();
+    glBindVertexArray(vao->id());
+    position_and_normal_attributes(*positions, normals_);
+    if (index_count_ > 0) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  }
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 Status LungDrawable::upload_positions(std::span<const float> xyz) {

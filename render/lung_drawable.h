@@ -69,6 +69,10 @@ class LungDrawable {
 
  private:
   LungDrawable() = default;
+  Status upload_coefficients(const std::vector<float>& padded);
+  Status upload_coefficient_texture(std::vector<float> padded);
+  void build_vertex_arrays();
+
   std::uint32_t vertex_count_ = 0;
   std::uint32_t coefficients_ = 0;
   std::uint32_t index_count_ = 0;

@@ -274,6 +274,141 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   return out.commit();
 }
 
+namespace {
+
+/// The counts the header declares, checked against each other and the file's size before anything is allocated.
+struct HeadCounts {
+  std::uint32_t vertices = 0, triangles = 0, lungs = 0;
+  std::uint64_t nnz = 0;
+};
+
+Result<HeadCounts> read_head(Reader& r, const std::string& path, BakedAsset& a) {
+  char magic[8];
+  if (!r.raw(magic, 8, "magic")) return fail(r.error());
+  if (std::memcmp(magic, kAssetMagic, 8) != 0) {
+    return fail(path + ": magic: expected 'LUNGBAKE'; this is not a lungar baked asset");
+  }
+  std::uint32_t version = 0;
+  if (!r.raw(&version, 4, "version")) return fail(r.error());
+  if (version != kAssetVersion) {
+    return fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " + std::to_string(version) +
+                " (re-bake with this lungar-bake)");
+  }
+  std::string payload;
+  if (!r.section("HEAD", kHeadSize, payload)) return fail(r.error());
+  HeadCounts h;
+  Cursor cur{payload};
+  a.bands = cur.get<std::uint32_t>();
+  h.vertices = cur.get<std::uint32_t>();
+  h.triangles = cur.get<std::uint32_t>();
+  h.lungs = cur.get<std::uint32_t>();
+  h.nnz = cur.get<std::uint64_t>();
+  a.p0 = cur.get<double>();
+  a.gamma_per_mm = cur.get<double>();
+  a.decay_length_mm = cur.get<double>();
+  a.transfer_epsilon = cur.get<double>();
+  if (a.bands < 1 || a.bands > 8) {
+    return fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
+  }
+  if (h.lungs < 1 || h.lungs > kMaxLungs) {
+    return fail(path + ": header field 'lungs': expected 1 to 16, found " + std::to_string(h.lungs));
+  }
+  if (h.vertices == 0) return fail(path + ": header field 'vertices': expected at least one vertex");
+  // Every vertex needs more than 16 bytes of the file; this bounds the counts before anything is allocated.
+  const std::uint64_t c = a.bands * a.bands;
+  if (std::uint64_t{h.vertices} * (29 + 4 * c) + std::uint64_t{h.triangles} * 12 + h.nnz * 8 > r.left()) {
+    return fail(path + ": header counts (" + std::to_string(h.vertices) + " vertices, " + std::to_string(h.triangles) +
+                " triangles, " + std::to_string(h.nnz) + " transfer non-zeros) need more bytes than the file has");
+  }
+  if (!std::isfinite(a.p0) || !std::isfinite(a.gamma_per_mm) || !(a.decay_length_mm > 0)) {
+    return fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
+  }
+  return h;
+}
+
+/// One lung's record of the LUNG section; `l` and `remaining` for the messages.
+Result<BakedLung> read_lung(Cursor& lc, const std::string& payload, std::uint64_t c, std::uint32_t l,
+                            const std::string& path) {
+  BakedLung lung;
+  const std::size_t remaining = payload.size() - lc.at;
+  if (remaining < 4) return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " record truncated");
+  const auto name_length = lc.get<std::uint32_t>();
+  if (name_length > kMaxNameLength || lung_record_size(static_cast<std::uint32_t>(c), name_length) > remaining) {
+    return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " name length " + std::to_string(name_length) +
+                "; expected at most " + std::to_string(kMaxNameLength) + " within the section");
+  }
+  lung.name.assign(payload.data() + lc.at, name_length);
+  lc.at += name_length;
+  for (float& x : lung.centre) x = lc.get<float>();
+  lung.first_vertex = lc.get<std::uint32_t>();
+  lung.vertex_count = lc.get<std::uint32_t>();
+  lung.first_index = lc.get<std::uint32_t>();
+  lung.index_count = lc.get<std::uint32_t>();
+  lung.rest_volume_ml = lc.get<double>();
+  lung.volume_share = lc.get<double>();
+  lung.volume_const = lc.get<double>();
+  for (double& x : lung.volume_grad) x = lc.get<double>();
+  lc.get_array(lung.force_const, c);
+  for (auto& f : lung.force_grad) lc.get_array(f, c);
+  lung.paper_force.resize(kPaperAxes * kPaperAngles);
+  for (auto& f : lung.paper_force) lc.get_array(f, c);
+  return lung;
+}
+
+/// LUNG: variable-length names, so its length is read first and checked against the lung count.
+Status read_lungs(Reader& r, const std::string& path, std::uint32_t count, std::uint64_t c, BakedAsset& a) {
+  char tag[4];
+  std::uint64_t length = 0;
+  if (!r.raw(tag, 4, "section 'LUNG' tag")) return fail(r.error());
+  if (std::memcmp(tag, "LUNG", 4) != 0) return fail(path + ": section 'LUNG': expected tag 'LUNG'");
+  if (!r.raw(&length, 8, "section 'LUNG' length")) return fail(r.error());
+  const std::uint64_t min_len = count * lung_record_size(static_cast<std::uint32_t>(c), 0);
+  const std::uint64_t max_len = count * lung_record_size(static_cast<std::uint32_t>(c), kMaxNameLength);
+  if (length < min_len || length > max_len) {
+    return fail(path + ": section 'LUNG': length " + std::to_string(length) + " bytes; expected " +
+                std::to_string(min_len) + " to " + std::to_string(max_len) + " for " + std::to_string(count) +
+                " lungs");
+  }
+  std::string payload(length, '\0');
+  if (!r.raw(payload.data(), length, "section 'LUNG'")) return fail(r.error());
+  std::uint32_t stored = 0;
+  if (!r.raw(&stored, 4, "section 'LUNG' CRC")) return fail(r.error());
+  if (stored != crc32(payload.data(), payload.size())) {
+    return fail(path + ": section 'LUNG': CRC-32 mismatch; the file is damaged");
+  }
+  Cursor lc{payload};
+  for (std::uint32_t l = 0; l < count; ++l) {
+    auto lung = read_lung(lc, payload, c, l, path);
+    if (!lung) return lung.with_context("");
+    a.lungs.push_back(lung.take());
+  }
+  if (lc.at != payload.size()) return fail(path + ": section 'LUNG': trailing bytes after the last lung");
+  return ok();
+}
+
+/// The per-vertex, triangle and transfer-row sections, each of the size the header's counts give.
+Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& a) {
+  const std::uint64_t n = h.vertices;
+  const bool rows = h.nnz > 0;
+  std::string payload;
+  auto read_into = [&](const char* tag, std::uint64_t bytes, auto& vec) {
+    if (!r.section(tag, bytes, payload)) return false;
+    payload_to(payload, vec);
+    return true;
+  };
+  if (!read_into("POSI", 12 * n, a.positions) || !read_into("NORM", 12 * n, a.normals) ||
+      !read_into("AREA", 4 * n, a.areas) || !read_into("LOFV", n, a.lung_of_vertex) ||
+      !read_into("SHCO", 4 * n * c, a.sh_coeffs) || !read_into("LINC", 16 * n, a.linear_coeffs) ||
+      !read_into("TRIS", 12ull * h.triangles, a.triangles) ||
+      !read_into("TROW", rows ? 4 * (n + 1) : 0, a.transfer_row_ptr) || !read_into("TCOL", 4 * h.nnz, a.transfer_cols) ||
+      !read_into("TVAL", 4 * h.nnz, a.transfer_vals)) {
+    return fail(r.error());
+  }
+  return ok();
+}
+
+}  // namespace
+
 Result<BakedAsset> load_asset(const std::string& path) {
   std::error_code ec;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
@@ -281,113 +416,12 @@ Result<BakedAsset> load_asset(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return fail(path + ": cannot open for reading");
   Reader r(in, path, size);
-
-  char magic[8];
-  if (!r.raw(magic, 8, "magic")) return fail(r.error());
-  if (std::memcmp(magic, kAssetMagic, 8) != 0)
-    return fail(path + ": magic: expected 'LUNGBAKE'; this is not a lungar baked asset");
-  std::uint32_t version = 0;
-  if (!r.raw(&version, 4, "version")) return fail(r.error());
-  if (version != kAssetVersion)
-    return fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " +
-                   std::to_string(version) + " (re-bake with this lungar-bake)");
-
-  std::string payload;
-  if (!r.section("HEAD", kHeadSize, payload)) return fail(r.error());
   BakedAsset a;
-  std::uint32_t n = 0, triangles = 0, lung_count = 0;
-  std::uint64_t nnz = 0;
-  {
-    Cursor h{payload};
-    a.bands = h.get<std::uint32_t>();
-    n = h.get<std::uint32_t>();
-    triangles = h.get<std::uint32_t>();
-    lung_count = h.get<std::uint32_t>();
-    nnz = h.get<std::uint64_t>();
-    a.p0 = h.get<double>();
-    a.gamma_per_mm = h.get<double>();
-    a.decay_length_mm = h.get<double>();
-    a.transfer_epsilon = h.get<double>();
-  }
-  if (a.bands < 1 || a.bands > 8)
-    return fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
-  if (lung_count < 1 || lung_count > kMaxLungs)
-    return fail(path + ": header field 'lungs': expected 1 to 16, found " + std::to_string(lung_count));
-  if (n == 0) return fail(path + ": header field 'vertices': expected at least one vertex");
-  // Every vertex needs more than 16 bytes of the file; this bounds the counts before anything is allocated.
+  auto head = read_head(r, path, a);
+  if (!head) return head.with_context("");
   const std::uint64_t c = a.bands * a.bands;
-  if (std::uint64_t{n} * (29 + 4 * c) + std::uint64_t{triangles} * 12 + nnz * 8 > r.left())
-    return fail(path + ": header counts (" + std::to_string(n) + " vertices, " + std::to_string(triangles) +
-                   " triangles, " + std::to_string(nnz) + " transfer non-zeros) need more bytes than the file has");
-  if (!std::isfinite(a.p0) || !std::isfinite(a.gamma_per_mm) || !(a.decay_length_mm > 0))
-    return fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
-
-  // LUNG: variable-length names; read its length first and parse with bounds checks.
-  {
-    char tag[4];
-    std::uint64_t length = 0;
-    if (!r.raw(tag, 4, "section 'LUNG' tag")) return fail(r.error());
-    if (std::memcmp(tag, "LUNG", 4) != 0) return fail(path + ": section 'LUNG': expected tag 'LUNG'");
-    if (!r.raw(&length, 8, "section 'LUNG' length")) return fail(r.error());
-    const std::uint64_t min_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), 0);
-    const std::uint64_t max_len = lung_count * lung_record_size(static_cast<std::uint32_t>(c), kMaxNameLength);
-    if (length < min_len || length > max_len)
-      return fail(path + ": section 'LUNG': length " + std::to_string(length) + " bytes; expected " +
-                     std::to_string(min_len) + " to " + std::to_string(max_len) + " for " +
-                     std::to_string(lung_count) + " lungs");
-    payload.resize(length);
-    if (!r.raw(payload.data(), length, "section 'LUNG'")) return fail(r.error());
-    std::uint32_t stored = 0;
-    if (!r.raw(&stored, 4, "section 'LUNG' CRC")) return fail(r.error());
-    if (stored != crc32(payload.data(), payload.size()))
-      return fail(path + ": section 'LUNG': CRC-32 mismatch; the file is damaged");
-    Cursor lc{payload};
-    for (std::uint32_t l = 0; l < lung_count; ++l) {
-      BakedLung lung;
-      const std::size_t remaining = payload.size() - lc.at;
-      if (remaining < 4) return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " record truncated");
-      const auto name_length = lc.get<std::uint32_t>();
-      if (name_length > kMaxNameLength || lung_record_size(static_cast<std::uint32_t>(c), name_length) > remaining)
-        return fail(path + ": section 'LUNG': lung " + std::to_string(l) + " name length " +
-                       std::to_string(name_length) + "; expected at most " + std::to_string(kMaxNameLength) +
-                       " within the section");
-      lung.name.assign(payload.data() + lc.at, name_length);
-      lc.at += name_length;
-      for (float& x : lung.centre) x = lc.get<float>();
-      lung.first_vertex = lc.get<std::uint32_t>();
-      lung.vertex_count = lc.get<std::uint32_t>();
-      lung.first_index = lc.get<std::uint32_t>();
-      lung.index_count = lc.get<std::uint32_t>();
-      lung.rest_volume_ml = lc.get<double>();
-      lung.volume_share = lc.get<double>();
-      lung.volume_const = lc.get<double>();
-      for (double& x : lung.volume_grad) x = lc.get<double>();
-      lc.get_array(lung.force_const, c);
-      for (auto& f : lung.force_grad) lc.get_array(f, c);
-      lung.paper_force.resize(kPaperAxes * kPaperAngles);
-      for (auto& f : lung.paper_force) lc.get_array(f, c);
-      a.lungs.push_back(std::move(lung));
-    }
-    if (lc.at != payload.size()) return fail(path + ": section 'LUNG': trailing bytes after the last lung");
-  }
-
-  const bool rows = nnz > 0;
-  struct Spec {
-    const char* tag;
-    std::uint64_t bytes;
-  };
-  auto read_into = [&](const Spec& spec, auto& vec) {
-    if (!r.section(spec.tag, spec.bytes, payload)) return false;
-    payload_to(payload, vec);
-    return true;
-  };
-  if (!read_into({"POSI", 12ull * n}, a.positions) || !read_into({"NORM", 12ull * n}, a.normals) ||
-      !read_into({"AREA", 4ull * n}, a.areas) || !read_into({"LOFV", 1ull * n}, a.lung_of_vertex) ||
-      !read_into({"SHCO", 4ull * n * c}, a.sh_coeffs) || !read_into({"LINC", 16ull * n}, a.linear_coeffs) ||
-      !read_into({"TRIS", 12ull * triangles}, a.triangles) ||
-      !read_into({"TROW", rows ? 4ull * (n + 1) : 0}, a.transfer_row_ptr) ||
-      !read_into({"TCOL", 4ull * nnz}, a.transfer_cols) || !read_into({"TVAL", 4ull * nnz}, a.transfer_vals))
-    return fail(r.error());
+  if (Status lungs = read_lungs(r, path, head->lungs, c, a); !lungs) return lungs.with_context("");
+  if (Status arrays = read_arrays(r, *head, c, a); !arrays) return arrays.with_context("");
   if (r.left() != 0) return fail(path + ": " + std::to_string(r.left()) + " unexpected bytes after the last section");
   if (std::string bad = validate_asset(a); !bad.empty()) return fail(path + ": " + bad);
   return a;

@@ -18,7 +18,7 @@
 namespace lungar::platform {
 namespace {
 
-using Result = Result<std::unique_ptr<EglContext>>;
+using ContextResult = Result<std::unique_ptr<EglContext>>;
 
 std::string egl_error(const char* what) {
   char text[128];
@@ -62,9 +62,45 @@ EGLContext create_es3_context(EGLDisplay display, EGLConfig config) {
   return eglCreateContext(display, config, EGL_NO_CONTEXT, attributes);
 }
 
+/// An X window for `visual` at the options' place and size: decorated on a desktop, undecorated and above the
+/// window manager's reach when full-screen on an HMD's output in extended mode. Asks for WM_DELETE_WINDOW.
+Window create_x_window(Display* x, const WindowOptions& o, const XVisualInfo& visual, unsigned long& wm_delete) {
+  const Window root = RootWindow(x, visual.screen);
+  XSetWindowAttributes attributes{};
+  attributes.colormap = XCreateColormap(x, root, visual.visual, AllocNone);
+  attributes.event_mask = StructureNotifyMask | KeyPressMask | ExposureMask;
+  attributes.background_pixel = 0;
+  attributes.border_pixel = 0;
+  attributes.override_redirect = o.fullscreen ? True : False;
+  const unsigned long mask = CWColormap | CWEventMask | CWBackPixel | CWBorderPixel | CWOverrideRedirect;
+  const Window w = XCreateWindow(x, root, o.x_px, o.y_px, static_cast<unsigned>(o.width_px),
+                                 static_cast<unsigned>(o.height_px), 0, visual.depth, InputOutput, visual.visual, mask,
+                                 &attributes);
+  XStoreName(x, w, o.title.c_str());
+  XSizeHints hints{};
+  hints.flags = PPosition | PSize;  // ask the window manager to honour the configured position
+  hints.x = o.x_px;
+  hints.y = o.y_px;
+  hints.width = o.width_px;
+  hints.height = o.height_px;
+  XSetWMNormalHints(x, w, &hints);
+  Atom deleted = XInternAtom(x, "WM_DELETE_WINDOW", False);
+  XSetWMProtocols(x, w, &deleted, 1);
+  wm_delete = deleted;
+  if (o.fullscreen) {
+    Atom state = XInternAtom(x, "_NET_WM_STATE", False);
+    Atom full = XInternAtom(x, "_NET_WM_STATE_FULLSCREEN", False);
+    XChangeProperty(x, w, state, XA_ATOM, 32, PropModeReplace, reinterpret_cast<unsigned char*>(&full), 1);
+  }
+  XMapRaised(x, w);
+  XMoveWindow(x, w, o.x_px, o.y_px);
+  XFlush(x);
+  return w;
+}
+
 }  // namespace
 
-Result EglContext::headless() {
+ContextResult EglContext::headless() {
   std::unique_ptr<EglContext> c(new EglContext());
   EGLDisplay display = headless_display(c->platform_);
   if (display == EGL_NO_DISPLAY) {
@@ -90,7 +126,7 @@ Result EglContext::headless() {
   return c;
 }
 
-Result EglContext::window(const WindowOptions& options) {
+ContextResult EglContext::window(const WindowOptions& options) {
   WindowOptions o = options;
   if (o.width_px <= 0 || o.height_px <= 0) {
     return fail("window: size: expected positive width and height, got " + std::to_string(o.width_px) +
@@ -133,38 +169,8 @@ Result EglContext::window(const WindowOptions& options) {
   XVisualInfo* visual = XGetVisualInfo(x, VisualIDMask, &templ, &visuals);
   if (visual == nullptr) return fail("window: no X visual for the EGL config");
 
-  const Window root = RootWindow(x, visual->screen);
-  XSetWindowAttributes attributes{};
-  attributes.colormap = XCreateColormap(x, root, visual->visual, AllocNone);
-  attributes.event_mask = StructureNotifyMask | KeyPressMask | ExposureMask;
-  attributes.background_pixel = 0;
-  attributes.border_pixel = 0;
-  // Full-screen on an HMD in extended mode: an undecorated window the window manager leaves where it is put.
-  attributes.override_redirect = o.fullscreen ? True : False;
-  const unsigned long mask = CWColormap | CWEventMask | CWBackPixel | CWBorderPixel | CWOverrideRedirect;
-  c->window_ = XCreateWindow(x, root, o.x_px, o.y_px, static_cast<unsigned>(o.width_px),
-                             static_cast<unsigned>(o.height_px), 0, visual->depth, InputOutput, visual->visual, mask,
-                             &attributes);
+  c->window_ = create_x_window(x, o, *visual, c->wm_delete_);
   XFree(visual);
-  XStoreName(x, c->window_, o.title.c_str());
-  XSizeHints hints{};
-  hints.flags = PPosition | PSize;  // ask the window manager to honour the configured position
-  hints.x = o.x_px;
-  hints.y = o.y_px;
-  hints.width = o.width_px;
-  hints.height = o.height_px;
-  XSetWMNormalHints(x, c->window_, &hints);
-  Atom wm_delete = XInternAtom(x, "WM_DELETE_WINDOW", False);
-  XSetWMProtocols(x, c->window_, &wm_delete, 1);
-  c->wm_delete_ = wm_delete;
-  if (o.fullscreen) {
-    Atom state = XInternAtom(x, "_NET_WM_STATE", False);
-    Atom full = XInternAtom(x, "_NET_WM_STATE_FULLSCREEN", False);
-    XChangeProperty(x, c->window_, state, XA_ATOM, 32, PropModeReplace, reinterpret_cast<unsigned char*>(&full), 1);
-  }
-  XMapRaised(x, c->window_);
-  XMoveWindow(x, c->window_, o.x_px, o.y_px);
-  XFlush(x);
   c->width_ = o.width_px;
   c->height_ = o.height_px;
   c->x_ = o.x_px;

@@ -92,7 +92,9 @@ Result<sim::BreathingScript> make_breathing_script(const config::Scenario& sc) {
   }
   auto track = sim::OrientationTrack::create(rotation(sc.start_pose, sc.start_rotation_wxyz), std::move(turns));
   if (!track) return track.with_context(sc.source + ": ");
-  return sim::BreathingScript{driver.take(), track.take(), sc.duration_s};
+  sim::BreathingScript script{driver.take(), track.take(), sc.duration_s, *start, {}};
+  for (const auto& applied : events) script.events.push_back(applied.first);
+  return script;
 }
 
 Result<sim::BreathingScript> load_breathing_script(const config::BreathingSettings& breathing, double duration_s) {

@@ -14,6 +14,8 @@ struct BreathingScript {
   BreathingDriver driver;        ///< every event already applied: driver.at(t) for any t
   OrientationTrack orientation;  ///< orientation.at(t)
   double duration_s = 60.0;      ///< how long the script is meant to run
+  BreathingParams start;         ///< what the driver started from (a classroom shares start and events)
+  std::vector<Event> events;     ///< every event applied, in order
 };
 
 }  // namespace lungar::sim

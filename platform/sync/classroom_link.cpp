@@ -1,0 +1,162 @@
+/// @file classroom_link.cpp
+/// @brief Opening a classroom (domain, topics, Station), the roster of the other stations, dropped samples.
+#include "platform/sync/classroom_link.h"
+
+#include <unistd.h>
+
+#include <cstring>
+#include <random>
+
+#include "config/base/log_line.h"
+#include "platform/sync/wire.h"
+
+namespace lungar::platform::sync {
+
+std::uint64_t new_session_id() {
+  std::random_device rd;
+  std::uint64_t id = 0;
+  while (id == 0) id = (static_cast<std::uint64_t>(rd()) << 32) ^ rd();
+  return id;
+}
+
+std::string default_station_name() {
+  char host[64] = {};
+  if (gethostname(host, sizeof host - 1) != 0 || host[0] == '\0') std::strcpy(host, "station");
+  return std::string(host) + "/" + std::to_string(getpid());
+}
+
+ClassroomLink::ClassroomLink(const SyncOptions& options, dds::Domain domain)
+    : options_(options), clock_(options.clock_skew_ns), domain_(std::move(domain)) {}
+
+template <class T>
+static Status make_topic(dds_entity_t participant, std::optional<dds::Topic<T>>& out) {
+  auto t = dds::Topic<T>::create(participant, TopicInfo<T>::descriptor(), TopicInfo<T>::name);
+  if (!t) return Error{t.error()};
+  out.emplace(t.take());
+  return ok();
+}
+
+Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& options, std::uint8_t wire_role) {
+  if (options.classroom.empty() || options.classroom.size() > 63 ||
+      options.classroom.find_first_of("*?[]\\") != std::string::npos) {
+    return fail("sync.classroom: expected a name of 1 to 63 characters without * ? [ ] \\, got \"" +
+                options.classroom + "\"");
+  }
+  const std::string name = options.station.empty() ? default_station_name() : options.station;
+  if (name.size() > 63) return fail("sync.station: expected at most 63 characters, got \"" + name + "\"");
+  auto domain = dds::Domain::create(options.domain, options.cyclonedds_xml);
+  if (!domain) return Error{domain.error()};
+  std::unique_ptr<ClassroomLink> link(new ClassroomLink(options, domain.take()));
+  link->name_ = name;
+  link->session_ = new_session_id();
+  link->started_ns_ = link->clock_.now_ns();
+  link->wire_role_ = wire_role;
+  const dds_entity_t p = link->domain_.participant();
+  for (Status s : {make_topic(p, link->station_topic_), make_topic(p, link->pose_topic_),
+                   make_topic(p, link->breathing_topic_), make_topic(p, link->events_topic_),
+                   make_topic(p, link->heartbeat_topic_), make_topic(p, link->request_topic_),
+                   make_topic(p, link->reply_topic_)}) {
+    if (!s) return fail("sync: " + s.error());
+  }
+  auto writer = link->writer<lungar_sync_Station>();
+  auto reader = link->reader<lungar_sync_Station>();
+  auto waitset = dds::WaitSet::create(p);
+  if (!writer || !reader || !waitset) {
+    return fail("sync: " + (!writer ? writer.error() : !reader ? reader.error() : waitset.error()));
+  }
+  link->station_writer_.emplace(writer.take());
+  link->station_reader_.emplace(reader.take());
+  link->waitset_.emplace(waitset.take());
+  if (Status a = link->waitset_->attach_reader(link->station_reader_->get()); !a) return fail("sync: " + a.error());
+  return link;
+}
+
+template <class T>
+const dds::Topic<T>& ClassroomLink::topic() const {
+  if constexpr (std::is_same_v<T, lungar_sync_Station>) return *station_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_PatientPose>) return *pose_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_BreathingState>) return *breathing_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_ScenarioEvents>) return *events_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_Heartbeat>) return *heartbeat_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_TimeRequest>) return *request_topic_;
+  if constexpr (std::is_same_v<T, lungar_sync_TimeReply>) return *reply_topic_;
+}
+template const dds::Topic<lungar_sync_Station>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_PatientPose>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_BreathingState>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_ScenarioEvents>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_Heartbeat>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_TimeRequest>& ClassroomLink::topic() const;
+template const dds::Topic<lungar_sync_TimeReply>& ClassroomLink::topic() const;
+
+Status ClassroomLink::announce() {
+  lungar_sync_Station s{};
+  std::strncpy(s.name, name_.c_str(), sizeof s.name - 1);
+  s.role = wire_role_;
+  s.session = session_;
+  s.started_ns = started_ns_;
+  return station_writer_->write(s, clock_.now_ns());
+}
+
+int ClassroomLink::poll_roster() {
+  std::array<lungar_sync_Station, 8> samples{};
+  std::array<dds_sample_info_t, 8> infos{};
+  int total = 0;
+  for (;;) {
+    const int n = station_reader_->take(samples, infos);
+    if (n <= 0) break;
+    total += n;
+    for (int i = 0; i < n; ++i) {
+      RosterEntry* entry = nullptr;
+      for (std::size_t k = 0; k < roster_size_; ++k) {
+        if (roster_[k].instance == infos[i].instance_handle) entry = &roster_[k];
+      }
+      if (!infos[i].valid_data) {  // the instance's writer went away (lease expired or deleted)
+        if (entry) entry->alive = infos[i].instance_state == DDS_IST_ALIVE;
+        continue;
+      }
+      const lungar_sync_Station& s = samples[i];
+      if (Status c = check(s); !c) {
+        malformed(c.error());
+        continue;
+      }
+      if (s.session == session_) continue;  // ourselves
+      if (!entry) {
+        if (roster_size_ == roster_.size()) continue;
+        entry = &roster_[roster_size_++];
+      }
+      *entry = RosterEntry{s.name, s.role, s.session, s.started_ns, infos[i].instance_handle, true};
+    }
+  }
+  return total;
+}
+
+int ClassroomLink::peers() const {
+  int n = 0;
+  for (std::size_t k = 0; k < roster_size_; ++k) n += roster_[k].alive ? 1 : 0;
+  return n;
+}
+
+std::optional<RosterEntry> ClassroomLink::senior_instructor() const {
+  for (std::size_t k = 0; k < roster_size_; ++k) {
+    const RosterEntry& e = roster_[k];
+    if (!e.alive || e.role != kWireInstructor) continue;
+    if (e.started_ns < started_ns_ || (e.started_ns == started_ns_ && e.name < name_)) return e;
+  }
+  return std::nullopt;
+}
+
+void ClassroomLink::log(const std::string& line) const {
+  if (options_.log) {
+    options_.log(line);
+  } else {
+    log_line("lungar", line);
+  }
+}
+
+void ClassroomLink::malformed(const std::string& why) {
+  const std::uint64_t n = malformed_.fetch_add(1, std::memory_order_relaxed) + 1;
+  if (n <= 5 || n % 100 == 0) log("sync: dropped a malformed sample (" + std::to_string(n) + " so far): " + why);
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,105 @@
+/// @file classroom_link.h
+/// @brief What every station of a classroom has: the DDS domain and participant, the classroom's topics, its
+/// own Station announcement and the roster of the others, a waitset, and the malformed-sample counter.
+/// @ingroup platform
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "config/base/result.h"
+#include "platform/sync/classroom_topics.h"
+#include "platform/sync/dds.h"
+#include "platform/sync/station_clock.h"
+#include "platform/sync/sync_types.h"
+
+namespace lungar::platform::sync {
+
+/// Another station of the classroom as its Station sample says.
+struct RosterEntry {
+  std::string name;
+  std::uint8_t role = 0;
+  std::uint64_t session = 0;
+  std::int64_t started_ns = 0;
+  dds_instance_handle_t instance = 0;
+  bool alive = false;
+};
+
+class ClassroomLink {
+ public:
+  /// Creates the domain from the XML, the participant, every topic, and this station's Station writer and the
+  /// roster's reader, all in the classroom's partition.
+  static Result<std::unique_ptr<ClassroomLink>> open(const SyncOptions& options, std::uint8_t wire_role);
+
+  /// Announces this station (reliable, transient-local: a later station learns of it on joining).
+  Status announce();
+  /// Takes new Station samples into the roster; returns how many.
+  int poll_roster();
+  /// Other stations seen alive now.
+  int peers() const;
+  /// The instructor, other than this station, that keeps the room against this one (started earlier, or at
+  /// the same time with a smaller name), if any.
+  std::optional<RosterEntry> senior_instructor() const;
+
+  template <class T>
+  Result<dds::Writer<T>> writer() const {
+    dds::Qos qos;
+    classroom_qos<T>(qos, options_.classroom);
+    return dds::Writer<T>::create(domain_.participant(), topic<T>(), qos);
+  }
+  template <class T>
+  Result<dds::Reader<T>> reader() const {
+    dds::Qos qos;
+    classroom_qos<T>(qos, options_.classroom);
+    return dds::Reader<T>::create(domain_.participant(), topic<T>(), qos);
+  }
+
+  dds::WaitSet& waitset() { return *waitset_; }
+  const StationClock& clock() const { return clock_; }
+  const SyncOptions& options() const { return options_; }
+  const std::string& name() const { return name_; }
+  std::uint64_t session() const { return session_; }
+  std::int64_t started_ns() const { return started_ns_; }
+  void log(const std::string& line) const;
+  /// Counts a dropped sample and logs it, the first few and then one in a hundred.
+  void malformed(const std::string& why);
+  std::uint64_t malformed_count() const { return malformed_.load(std::memory_order_relaxed); }
+
+ private:
+  ClassroomLink(const SyncOptions& options, dds::Domain domain);
+  template <class T>
+  const dds::Topic<T>& topic() const;
+
+  SyncOptions options_;
+  StationClock clock_;
+  std::string name_;
+  std::uint64_t session_ = 0;
+  std::int64_t started_ns_ = 0;
+  std::uint8_t wire_role_ = 0;
+  std::atomic<std::uint64_t> malformed_{0};
+  std::array<RosterEntry, 64> roster_{};
+  std::size_t roster_size_ = 0;
+  // Entities: the domain first, so that it is deleted last.
+  dds::Domain domain_;
+  std::optional<dds::Topic<lungar_sync_Station>> station_topic_;
+  std::optional<dds::Topic<lungar_sync_PatientPose>> pose_topic_;
+  std::optional<dds::Topic<lungar_sync_BreathingState>> breathing_topic_;
+  std::optional<dds::Topic<lungar_sync_ScenarioEvents>> events_topic_;
+  std::optional<dds::Topic<lungar_sync_Heartbeat>> heartbeat_topic_;
+  std::optional<dds::Topic<lungar_sync_TimeRequest>> request_topic_;
+  std::optional<dds::Topic<lungar_sync_TimeReply>> reply_topic_;
+  std::optional<dds::Writer<lungar_sync_Station>> station_writer_;
+  std::optional<dds::Reader<lungar_sync_Station>> station_reader_;
+  std::optional<dds::WaitSet> waitset_;
+};
+
+/// A random 64-bit session id for this run of a station.
+std::uint64_t new_session_id();
+/// "host/pid": a default station name that says where to look.
+std::string default_station_name();
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,203 @@
+/// @file dds.h
+/// @brief A thin RAII layer over Cyclone DDS's C API (Debian ships no C++ binding): every entity is deleted by
+/// its owner's destructor, every failure is a lungar::Result naming the call and Cyclone's reason.
+/// @ingroup platform
+///
+/// Only what the classroom needs: a domain made from an XML file, a participant, QoS, topics, writers with
+/// source timestamps, readers that take into caller-owned storage (no allocation for fixed-size types), read
+/// and guard conditions and a waitset. Deleting a participant deletes its children in Cyclone, so children
+/// are declared after their parent (C++ destroys in reverse order) and each deletes itself first.
+#pragma once
+
+#include <dds/dds.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "config/base/result.h"
+
+namespace lungar::platform::dds {
+
+/// "dds_create_writer: Precondition not met" style text for a Cyclone return code.
+std::string describe(const char* call, dds_return_t rc);
+
+/// One owned dds_entity_t (participant, topic, reader, writer, condition, waitset, domain).
+class Entity {
+ public:
+  Entity() = default;
+  explicit Entity(dds_entity_t handle) : handle_(handle) {}
+  ~Entity() { reset(); }
+  Entity(Entity&& other) noexcept : handle_(other.handle_) { other.handle_ = 0; }
+  Entity& operator=(Entity&& other) noexcept {
+    if (this != &other) {
+      reset();
+      handle_ = other.handle_;
+      other.handle_ = 0;
+    }
+    return *this;
+  }
+  Entity(const Entity&) = delete;
+  Entity& operator=(const Entity&) = delete;
+
+  dds_entity_t get() const { return handle_; }
+  explicit operator bool() const { return handle_ > 0; }
+  /// Deletes the entity (and, in Cyclone, its children) now.
+  void reset();
+
+ private:
+  dds_entity_t handle_ = 0;
+};
+
+/// Turns a handle-or-negative-code into an owned Entity or an error line naming `call`.
+Result<Entity> own(const char* call, dds_entity_t handle);
+
+/// A QoS set, built by chaining; the topic profiles live in classroom_topics.h.
+class Qos {
+ public:
+  Qos() : qos_(dds_create_qos()) {}
+  ~Qos() { dds_delete_qos(qos_); }
+  Qos(const Qos&) = delete;
+  Qos& operator=(const Qos&) = delete;
+
+  Qos& reliable() { return dds_qset_reliability(qos_, DDS_RELIABILITY_RELIABLE, DDS_SECS(1)), *this; }
+  Qos& best_effort() { return dds_qset_reliability(qos_, DDS_RELIABILITY_BEST_EFFORT, 0), *this; }
+  Qos& volatile_() { return dds_qset_durability(qos_, DDS_DURABILITY_VOLATILE), *this; }
+  Qos& transient_local() { return dds_qset_durability(qos_, DDS_DURABILITY_TRANSIENT_LOCAL), *this; }
+  Qos& keep_last(int32_t depth) { return dds_qset_history(qos_, DDS_HISTORY_KEEP_LAST, depth), *this; }
+  Qos& partition(const std::string& name) { return dds_qset_partition1(qos_, name.c_str()), *this; }
+  const dds_qos_t* get() const { return qos_; }
+
+ private:
+  dds_qos_t* qos_;
+};
+
+/// A Cyclone domain made from an XML configuration file, and the one participant lungar uses in it.
+class Domain {
+ public:
+  /// Reads and checks `config_path` (a Cyclone XML file) and creates domain `domain_id` from it. Cyclone's own
+  /// complaint about the file, if any, is part of the error line.
+  static Result<Domain> create(std::uint32_t domain_id, const std::string& config_path);
+
+  dds_entity_t participant() const { return participant_.get(); }
+  std::uint32_t id() const { return id_; }
+
+ private:
+  Domain() = default;
+  std::uint32_t id_ = 0;
+  Entity domain_;       ///< destroyed last
+  Entity participant_;  ///< destroyed first
+};
+
+/// A topic of the idlc-generated type T; `descriptor` is T's generated T_desc.
+template <class T>
+class Topic {
+ public:
+  static Result<Topic> create(dds_entity_t participant, const dds_topic_descriptor_t& descriptor, const char* name) {
+    auto e = own("dds_create_topic", dds_create_topic(participant, &descriptor, name, nullptr, nullptr));
+    if (!e) return Error{e.error()};
+    Topic t;
+    t.entity_ = e.take();
+    return t;
+  }
+  dds_entity_t get() const { return entity_.get(); }
+
+ private:
+  Entity entity_;
+};
+
+/// A writer of T that stamps each sample with the caller's clock (source timestamp).
+template <class T>
+class Writer {
+ public:
+  static Result<Writer> create(dds_entity_t participant, const Topic<T>& topic, const Qos& qos) {
+    auto e = own("dds_create_writer", dds_create_writer(participant, topic.get(), qos.get(), nullptr));
+    if (!e) return Error{e.error()};
+    Writer w;
+    w.entity_ = e.take();
+    return w;
+  }
+  /// Writes `sample` with source timestamp `source_ns` (ns since the epoch on the station clock).
+  Status write(const T& sample, std::int64_t source_ns) const {
+    const dds_return_t rc = dds_write_ts(entity_.get(), &sample, source_ns);
+    if (rc < 0) return fail(describe("dds_write_ts", rc));
+    return ok();
+  }
+  /// Readers matched now (DDS discovery), or -1 when Cyclone cannot say.
+  int matched() const {
+    dds_publication_matched_status_t s{};
+    return dds_get_publication_matched_status(entity_.get(), &s) < 0 ? -1 : static_cast<int>(s.current_count);
+  }
+  dds_entity_t get() const { return entity_.get(); }
+
+ private:
+  Entity entity_;
+};
+
+/// A reader of T that takes samples into caller-owned storage.
+template <class T>
+class Reader {
+ public:
+  static constexpr std::size_t kMaxTake = 16;
+
+  static Result<Reader> create(dds_entity_t participant, const Topic<T>& topic, const Qos& qos) {
+    auto e = own("dds_create_reader", dds_create_reader(participant, topic.get(), qos.get(), nullptr));
+    if (!e) return Error{e.error()};
+    Reader r;
+    r.entity_ = e.take();
+    return r;
+  }
+  /// Takes up to min(samples.size(), kMaxTake) samples; returns how many (0: none), or a negative Cyclone code.
+  /// For fixed-size T (no sequences or unbounded strings) Cyclone fills `samples` in place without allocating.
+  int take(std::span<T> samples, std::span<dds_sample_info_t> infos) const {
+    std::array<void*, kMaxTake> buffers{};
+    const std::size_t n = std::min({samples.size(), infos.size(), kMaxTake});
+    for (std::size_t i = 0; i < n; ++i) buffers[i] = &samples[i];
+    return dds_take(entity_.get(), buffers.data(), infos.data(), n, static_cast<uint32_t>(n));
+  }
+  /// Takes every available sample as a loan and calls `on(sample, info)` for each (for types with sequences,
+  /// whose storage Cyclone owns); returns how many, or a negative Cyclone code.
+  template <class F>
+  int take_loaned(F&& on) const {
+    std::array<void*, kMaxTake> buffers{};
+    std::array<dds_sample_info_t, kMaxTake> infos{};
+    const int n = dds_take(entity_.get(), buffers.data(), infos.data(), kMaxTake, kMaxTake);
+    for (int i = 0; i < n; ++i) on(*static_cast<const T*>(buffers[i]), infos[i]);
+    if (n > 0) dds_return_loan(entity_.get(), buffers.data(), n);
+    return n;
+  }
+  /// Writers matched now (DDS discovery), or -1 when Cyclone cannot say.
+  int matched() const {
+    dds_subscription_matched_status_t s{};
+    return dds_get_subscription_matched_status(entity_.get(), &s) < 0 ? -1 : static_cast<int>(s.current_count);
+  }
+  dds_entity_t get() const { return entity_.get(); }
+
+ private:
+  Entity entity_;
+};
+
+/// A waitset woken by data on readers (read conditions) or by a guard condition the caller triggers.
+class WaitSet {
+ public:
+  static Result<WaitSet> create(dds_entity_t participant);
+  /// Wakes the waitset when `reader` has unread data.
+  Status attach_reader(dds_entity_t reader);
+  /// Wakes the waitset from another thread (no allocation): see trigger().
+  dds_entity_t guard() const { return guard_.get(); }
+  /// Triggers the guard condition; safe from any thread.
+  void trigger() const { dds_set_guardcondition(guard_.get(), true); }
+  /// Waits at most `timeout_ns`; clears the guard. Returns false on a Cyclone error.
+  bool wait(std::int64_t timeout_ns);
+
+ private:
+  Entity waitset_;  ///< destroyed last: conditions detach from it first
+  Entity guard_;
+  std::array<Entity, 16> conditions_;
+  std::size_t condition_count_ = 0;
+};
+
+}  // namespace lungar::platform::dds

@@ -1,0 +1,204 @@
+/// @file instructor.cpp
+/// @brief The instructor's probe for another instructor, its writers, and its sync thread.
+#include "platform/sync/instructor.h"
+
+#include <cstring>
+#include <ctime>
+
+#include "config/base/clock.h"
+#include "platform/sync/wire.h"
+
+namespace lungar::platform::sync {
+
+namespace {
+
+/// "12:00:01" local time of a station-clock stamp, for the refusal line.
+std::string clock_time(std::int64_t ns) {
+  const std::time_t s = static_cast<std::time_t>(ns / 1'000'000'000);
+  std::tm tm{};
+  localtime_r(&s, &tm);
+  char text[16];
+  std::strftime(text, sizeof text, "%H:%M:%S", &tm);
+  return text;
+}
+
+std::string refusal(const ClassroomLink& link, const RosterEntry& other) {
+  return "sync: classroom '" + link.options().classroom + "' (domain " + std::to_string(link.options().domain) +
+         ") already has an instructor: station '" + other.name + "' (started " + clock_time(other.started_ns) +
+         "); start this station with --sync trainee, or give it another classroom";
+}
+
+}  // namespace
+
+Instructor::Instructor(std::unique_ptr<ClassroomLink> link) : link_(std::move(link)) {}
+
+Result<std::unique_ptr<Instructor>> Instructor::create(const SyncOptions& options) {
+  auto link = ClassroomLink::open(options, kWireInstructor);
+  if (!link) return Error{link.error()};
+  std::unique_ptr<Instructor> self(new Instructor(link.take()));
+  ClassroomLink& l = *self->link_;
+  if (Status a = l.announce(); !a) return fail("sync: " + a.error());
+  // Listen for an instructor already there: its Station sample is transient-local, so it arrives on matching.
+  const std::int64_t until = lungar::monotonic_ns() + options.probe_ns;
+  for (std::int64_t now = lungar::monotonic_ns(); now < until; now = lungar::monotonic_ns()) {
+    l.waitset().wait(until - now);
+    l.poll_roster();
+    if (auto other = l.senior_instructor()) return fail(refusal(l, *other));
+  }
+  if (Status w = self->open_writers(); !w) return fail("sync: " + w.error());
+  l.log("sync: instructor '" + l.name() + "' of classroom '" + options.classroom + "' (domain " +
+        std::to_string(options.domain) + "), " + std::to_string(l.peers()) + " other stations");
+  self->thread_ = std::thread([s = self.get()] { s->run(); });
+  return self;
+}
+
+Instructor::~Instructor() {
+  stop_.store(true);
+  if (link_) link_->waitset().trigger();
+  if (thread_.joinable()) thread_.join();
+}
+
+Status Instructor::open_writers() {
+  auto pose = link_->writer<lungar_sync_PatientPose>();
+  if (!pose) return Error{pose.error()};
+  pose_writer_.emplace(pose.take());
+  auto breathing = link_->writer<lungar_sync_BreathingState>();
+  if (!breathing) return Error{breathing.error()};
+  breathing_writer_.emplace(breathing.take());
+  auto events = link_->writer<lungar_sync_ScenarioEvents>();
+  if (!events) return Error{events.error()};
+  events_writer_.emplace(events.take());
+  auto heartbeat = link_->writer<lungar_sync_Heartbeat>();
+  if (!heartbeat) return Error{heartbeat.error()};
+  heartbeat_writer_.emplace(heartbeat.take());
+  auto reply = link_->writer<lungar_sync_TimeReply>();
+  if (!reply) return Error{reply.error()};
+  reply_writer_.emplace(reply.take());
+  auto request = link_->reader<lungar_sync_TimeRequest>();
+  if (!request) return Error{request.error()};
+  request_reader_.emplace(request.take());
+  return link_->waitset().attach_reader(request_reader_->get());
+}
+
+Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
+                                   std::int64_t t0_mono_ns) {
+  const std::int64_t time_base = link_->clock().from_monotonic(t0_mono_ns);
+  lungar_sync_BreathingState state{};
+  state.session = link_->session();
+  std::strncpy(state.station, link_->name().c_str(), sizeof state.station - 1);
+  state.time_base_ns = time_base;
+  state.revision = 1;
+  to_wire(start, state);
+  std::vector<lungar_sync_ScenarioEvent> storage;
+  lungar_sync_ScenarioEvents list{};
+  list.session = link_->session();
+  list.revision = 1;
+  if (Status s = to_wire(events, storage, list); !s) return s;
+  const std::int64_t now = link_->clock().now_ns();
+  if (Status s = events_writer_->write(list, now); !s) return fail("sync: " + s.error());
+  if (Status s = breathing_writer_->write(state, now); !s) return fail("sync: " + s.error());
+  time_base_ns_.store(time_base);
+  shared_.store(true);
+  return ok();
+}
+
+void Instructor::publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
+                              std::int64_t measured_mono_ns) {
+  if (measured_mono_ns == last_measured_) return;
+  last_measured_ = measured_mono_ns;
+  pose_box_.publish(PoseMsg{position_mm, orientation_wxyz, measured_mono_ns});
+  link_->waitset().trigger();
+}
+
+void Instructor::frame_breath(std::int64_t frame_mono_ns, double breath_t_s) {
+  breath_box_.publish(BreathMsg{frame_mono_ns, breath_t_s});
+}
+
+void Instructor::run() {
+  std::int64_t next_heartbeat = lungar::monotonic_ns();
+  while (!stop_.load()) {
+    const std::int64_t now = lungar::monotonic_ns();
+    if (now >= next_heartbeat) {
+      send_heartbeat();
+      next_heartbeat = now + kHeartbeatPeriodNs;
+    }
+    link_->waitset().wait(next_heartbeat - lungar::monotonic_ns());
+    if (link_->poll_roster() > 0) check_roster();
+    answer_requests();
+    send_pose();
+  }
+}
+
+void Instructor::send_pose() {
+  const std::uint64_t n = pose_box_.published();
+  if (n == sent_pose_ || !shared_.load()) return;
+  sent_pose_ = n;
+  const PoseMsg m = pose_box_.read();
+  SharedPose pose{m.position_mm, m.orientation_wxyz, link_->clock().from_monotonic(m.measured_mono_ns)};
+  lungar_sync_PatientPose sample{};
+  to_wire(pose, link_->session(), ++pose_seq_, sample);
+  if (pose_writer_->write(sample, link_->clock().now_ns())) poses_.fetch_add(1, std::memory_order_relaxed);
+}
+
+void Instructor::send_heartbeat() {
+  if (!shared_.load()) return;
+  lungar_sync_Heartbeat hb{};
+  hb.session = link_->session();
+  hb.seq = ++heartbeat_seq_;
+  if (breath_box_.published() > 0) {
+    const BreathMsg m = breath_box_.read();
+    hb.frame_ns = link_->clock().from_monotonic(m.frame_mono_ns);
+    hb.breath_t_s = m.breath_t_s;
+  } else {  // no frame yet: breathing time 0 is the time base itself
+    hb.frame_ns = time_base_ns_.load();
+    hb.breath_t_s = 0.0;
+  }
+  if (heartbeat_writer_->write(hb, link_->clock().now_ns())) heartbeats_.fetch_add(1, std::memory_order_relaxed);
+}
+
+void Instructor::answer_requests() {
+  std::array<lungar_sync_TimeRequest, 8> requests{};
+  std::array<dds_sample_info_t, 8> infos{};
+  for (int n; (n = request_reader_->take(requests, infos)) > 0;) {
+    const std::int64_t t2 = link_->clock().now_ns();
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      lungar_sync_TimeReply reply{};
+      reply.requester = requests[i].requester;
+      reply.seq = requests[i].seq;
+      reply.t1_ns = infos[i].source_timestamp;
+      reply.t2_ns = t2;
+      (void)reply_writer_->write(reply, link_->clock().now_ns());  // a lost reply is a lost exchange: retried
+    }
+  }
+}
+
+void Instructor::check_roster() {
+  peers_.store(link_->peers());
+  auto other = link_->senior_instructor();
+  if (!other) return;
+  std::lock_guard lock(fatal_mutex_);
+  if (fatal_.empty()) {
+    fatal_ = refusal(*link_, *other);
+    link_->log(fatal_);
+  }
+}
+
+std::string Instructor::fatal_error() const {
+  std::lock_guard lock(fatal_mutex_);
+  return fatal_;
+}
+
+SyncReport Instructor::report() const {
+  SyncReport r;
+  r.role = SyncRole::Instructor;
+  r.state = SyncState::InSync;
+  r.peers = peers_.load();
+  r.instructor = link_->name();
+  r.poses = poses_.load();
+  r.heartbeats = heartbeats_.load();
+  r.malformed = link_->malformed_count();
+  return r;
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,100 @@
+/// @file instructor.h
+/// @brief The instructor station: publishes the lung pose its frame drew, the breathing state and scenario
+/// events, a heartbeat, and answers the trainees' clock requests. One instructor per classroom: it refuses to
+/// start (or stops) when an older one is there, with one line naming it.
+/// @ingroup platform
+///
+/// The frame hands its pose and breathing time over through lock-free mailboxes and a guard condition, so the
+/// frame allocates nothing and never waits on DDS; the sync thread does the writing.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "config/base/result.h"
+#include "drivers/pose/mailbox.h"
+#include "platform/sync/classroom_link.h"
+#include "platform/sync/sync_types.h"
+#include "sim/breathing/event.h"
+#include "sim/breathing/pattern.h"
+
+namespace lungar::platform::sync {
+
+class Instructor {
+ public:
+  static constexpr std::int64_t kHeartbeatPeriodNs = 50'000'000;  ///< 20 Hz: lost is seen within 250 ms
+
+  /// Opens the classroom, listens options.probe_ns for another instructor and refuses with one line naming
+  /// it; else starts the sync thread. Nothing of the shared state is published before share_breathing().
+  static Result<std::unique_ptr<Instructor>> create(const SyncOptions& options);
+  ~Instructor();
+  Instructor(const Instructor&) = delete;
+  Instructor& operator=(const Instructor&) = delete;
+
+  /// The breathing the classroom follows: start parameters, every event, and the monotonic instant of
+  /// breathing time 0. Call once before the frames (it allocates).
+  Status share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
+                         std::int64_t t0_mono_ns);
+  /// From the frame: the lung pose in the world it drew and when the tracker read it (monotonic ns). A pose
+  /// with the same reading time as the last is not sent again. Allocates nothing.
+  void publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
+                    std::int64_t measured_mono_ns);
+  /// From the frame: its breathing time at frame_mono_ns, which the heartbeat carries. Allocates nothing.
+  void frame_breath(std::int64_t frame_mono_ns, double breath_t_s);
+
+  SyncState state() const { return SyncState::InSync; }
+  /// Set when an older instructor turned up while running: the runtime stops with this line.
+  std::string fatal_error() const;
+  SyncReport report() const;
+  const std::string& station() const { return link_->name(); }
+
+ private:
+  struct PoseMsg {
+    std::array<double, 3> position_mm;
+    std::array<double, 4> orientation_wxyz;
+    std::int64_t measured_mono_ns;
+  };
+  struct BreathMsg {
+    std::int64_t frame_mono_ns;
+    double breath_t_s;
+  };
+  explicit Instructor(std::unique_ptr<ClassroomLink> link);
+  Status open_writers();
+  void run();
+  void send_pose();
+  void send_heartbeat();
+  void answer_requests();
+  void check_roster();
+
+  std::unique_ptr<ClassroomLink> link_;
+  std::optional<dds::Writer<lungar_sync_PatientPose>> pose_writer_;
+  std::optional<dds::Writer<lungar_sync_BreathingState>> breathing_writer_;
+  std::optional<dds::Writer<lungar_sync_ScenarioEvents>> events_writer_;
+  std::optional<dds::Writer<lungar_sync_Heartbeat>> heartbeat_writer_;
+  std::optional<dds::Writer<lungar_sync_TimeReply>> reply_writer_;
+  std::optional<dds::Reader<lungar_sync_TimeRequest>> request_reader_;
+
+  drivers::LatestMailbox<PoseMsg> pose_box_;
+  drivers::LatestMailbox<BreathMsg> breath_box_;
+  std::int64_t last_measured_ = -1;  ///< frame thread only
+  std::uint64_t sent_pose_ = 0;      ///< sync thread only: the mailbox count last sent
+  std::atomic<std::int64_t> time_base_ns_{0};
+  std::atomic<bool> shared_{false};
+  std::atomic<std::uint64_t> poses_{0};
+  std::atomic<std::uint64_t> heartbeats_{0};
+  std::atomic<int> peers_{0};
+  std::uint32_t pose_seq_ = 0, heartbeat_seq_ = 0;
+  mutable std::mutex fatal_mutex_;
+  std::string fatal_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace lungar::platform::sync

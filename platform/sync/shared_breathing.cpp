@@ -1,0 +1,57 @@
+/// @file shared_breathing.cpp
+/// @brief Rebuilding the instructor's driver, and the trainee's breathing time through the applied offset.
+#include "platform/sync/shared_breathing.h"
+
+#include <cstdlib>
+
+namespace lungar::platform::sync {
+
+Result<sim::BreathingDriver> SharedBreathing::build(const sim::BreathingParams& start,
+                                                    std::span<const sim::Event> events) {
+  auto created = sim::BreathingDriver::create(start);
+  if (!created) return fail("lungar_breathing_state: " + created.error);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    if (std::string e = created.driver->apply(events[i]); !e.empty()) {
+      return fail("lungar_scenario_events: events[" + std::to_string(i) + "]: " + e);
+    }
+  }
+  return std::move(*created.driver);
+}
+
+void SharedBreathing::install(sim::BreathingDriver driver, std::int64_t time_base_ns) {
+  std::optional<sim::BreathingDriver> old;  // freed outside the lock: the frame never waits on free()
+  {
+    std::lock_guard lock(mutex_);
+    old = std::move(driver_);
+    driver_.emplace(std::move(driver));
+    time_base_ns_.store(time_base_ns, std::memory_order_relaxed);
+  }
+  ready_.store(true, std::memory_order_release);
+}
+
+void SharedBreathing::update_offset(std::int64_t estimate_ns) {
+  const std::int64_t applied = applied_ns_.load(std::memory_order_relaxed);
+  const std::int64_t error = estimate_ns - applied;
+  if (!have_offset_ || std::llabs(error) > kStepNs) {
+    applied_ns_.store(estimate_ns, std::memory_order_relaxed);
+    have_offset_ = true;
+  } else {
+    applied_ns_.store(applied + error / 4, std::memory_order_relaxed);
+  }
+}
+
+std::optional<double> SharedBreathing::time_at(std::int64_t station_ns) const {
+  if (!ready()) return std::nullopt;
+  const std::int64_t instructor_ns = station_ns + applied_ns_.load(std::memory_order_relaxed);
+  return static_cast<double>(instructor_ns - time_base_ns_.load(std::memory_order_relaxed)) * 1e-9;
+}
+
+bool SharedBreathing::sample_at(std::int64_t station_ns, sim::BreathingSample& out) const {
+  std::lock_guard lock(mutex_);
+  if (!driver_) return false;
+  const std::int64_t instructor_ns = station_ns + applied_ns_.load(std::memory_order_relaxed);
+  out = driver_->at(static_cast<double>(instructor_ns - time_base_ns_.load(std::memory_order_relaxed)) * 1e-9);
+  return true;
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,311 @@
+/// @file trainee.cpp
+/// @brief The trainee's endpoints and sync thread: shared breathing in, poses in, clock exchanges, state.
+#include "platform/sync/trainee.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "config/base/clock.h"
+#include "platform/runtime/frame_stats.h"
+
+namespace lungar::platform::sync {
+
+namespace {
+constexpr std::int64_t kMaxWaitNs = 20'000'000;
+
+std::int64_t realtime_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+}  // namespace
+
+Trainee::Trainee(std::unique_ptr<ClassroomLink> link) : link_(std::move(link)) {
+  breath_offset_ms_.reserve(kMaxRecorded);
+  pose_age_ms_.reserve(kMaxRecorded);
+  transitions_.reserve(256);
+}
+
+Result<std::unique_ptr<Trainee>> Trainee::create(const SyncOptions& options) {
+  auto link = ClassroomLink::open(options, kWireTrainee);
+  if (!link) return Error{link.error()};
+  std::unique_ptr<Trainee> self(new Trainee(link.take()));
+  if (Status s = self->open_endpoints(); !s) return fail("sync: " + s.error());
+  if (Status a = self->link_->announce(); !a) return fail("sync: " + a.error());
+  self->link_->log("sync: trainee '" + self->link_->name() + "' of classroom '" + options.classroom + "' (domain " +
+                   std::to_string(options.domain) + "); waiting for the instructor");
+  self->transition(SyncState::Lost);
+  self->thread_ = std::thread([s = self.get()] { s->run(); });
+  return self;
+}
+
+Trainee::~Trainee() {
+  stop_.store(true);
+  if (link_) link_->waitset().trigger();
+  if (thread_.joinable()) thread_.join();
+}
+
+template <class T>
+static Status open_reader(ClassroomLink& link, std::optional<dds::Reader<T>>& out) {
+  auto r = link.reader<T>();
+  if (!r) return Error{r.error()};
+  out.emplace(r.take());
+  return link.waitset().attach_reader(out->get());
+}
+
+Status Trainee::open_endpoints() {
+  auto w = link_->writer<lungar_sync_TimeRequest>();
+  if (!w) return Error{w.error()};
+  request_writer_.emplace(w.take());
+  for (Status s : {open_reader(*link_, pose_reader_), open_reader(*link_, breathing_reader_),
+                   open_reader(*link_, events_reader_), open_reader(*link_, heartbeat_reader_),
+                   open_reader(*link_, reply_reader_)}) {
+    if (!s) return s;
+  }
+  return ok();
+}
+
+drivers::PoseSample Trainee::patient_pose() const {
+  drivers::PoseSample p = pose_box_.read();
+  if (p.valid() && state() == SyncState::Lost) p.flags |= drivers::kPoseStale;
+  return p;
+}
+
+bool Trainee::breathing(std::int64_t now_ns, sim::BreathingSample& out) const {
+  return breathing_.sample_at(link_->clock().from_monotonic(now_ns), out);
+}
+
+std::optional<double> Trainee::breathing_time(std::int64_t now_ns) const {
+  return breathing_.time_at(link_->clock().from_monotonic(now_ns));
+}
+
+void Trainee::run() {
+  while (!stop_.load()) {
+    std::int64_t now = lungar::monotonic_ns();
+    const std::int64_t wait = std::clamp<std::int64_t>(next_request_mono_ - now, 0, kMaxWaitNs);
+    link_->waitset().wait(heard_session_ != 0 ? wait : kMaxWaitNs);
+    now = lungar::monotonic_ns();
+    if (link_->poll_roster() > 0) peers_.store(link_->peers());
+    take_breathing();
+    take_events();
+    install_if_complete();
+    take_heartbeats(now);
+    take_poses();
+    take_replies();
+    request_time(now);
+    update_state(lungar::monotonic_ns());
+  }
+}
+
+void Trainee::take_breathing() {
+  std::array<lungar_sync_BreathingState, 4> samples{};
+  std::array<dds_sample_info_t, 4> infos{};
+  for (int n; (n = breathing_reader_->take(samples, infos)) > 0;) {
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      auto params = from_wire(samples[i]);
+      if (!params) {
+        link_->malformed(params.error());
+        continue;
+      }
+      const auto& s = samples[i];
+      hear(s.session, lungar::monotonic_ns());  // a durable sample arrives from a live writer only
+      pending_state_ = PendingState{s.session, s.revision, s.time_base_ns, s.station, *params};
+    }
+  }
+}
+
+void Trainee::take_events() {
+  events_reader_->take_loaned([&](const lungar_sync_ScenarioEvents& s, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    auto events = from_wire(s);
+    if (!events) {
+      link_->malformed(events.error());
+      return;
+    }
+    pending_events_ = PendingEvents{s.session, s.revision, events.take()};
+  });
+}
+
+void Trainee::install_if_complete() {
+  if (!pending_state_ || !pending_events_) return;
+  const PendingState& st = *pending_state_;
+  if (st.session != pending_events_->session || st.revision != pending_events_->revision) return;
+  if (st.session == installed_session_ && st.revision == installed_revision_) return;
+  auto driver = SharedBreathing::build(st.params, pending_events_->events);
+  installed_session_ = st.session;  // a bad pair is not retried until the instructor sends another
+  installed_revision_ = st.revision;
+  if (!driver) {
+    link_->malformed(driver.error());
+    return;
+  }
+  breathing_.install(driver.take(), st.time_base_ns);
+  {
+    std::lock_guard lock(report_mutex_);
+    instructor_ = st.station;
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "sync: breathing of instructor '%s': %s, %.1f/min, %.0f mL, %zu events",
+                st.station.c_str(), std::string(sim::to_string(st.params.preset)).c_str(), st.params.rate_bpm,
+                st.params.tidal_volume_ml, pending_events_->events.size());
+  link_->log(line);
+}
+
+void Trainee::take_heartbeats(std::int64_t now_mono) {
+  std::array<lungar_sync_Heartbeat, 8> samples{};
+  std::array<dds_sample_info_t, 8> infos{};
+  for (int n; (n = heartbeat_reader_->take(samples, infos)) > 0;) {
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      const lungar_sync_Heartbeat& hb = samples[i];
+      if (Status c = check(hb); !c) {
+        link_->malformed(c.error());
+        continue;
+      }
+      hear(hb.session, now_mono);
+      heartbeats_.fetch_add(1, std::memory_order_relaxed);
+      // The trainee's breathing time at the instant of the instructor's frame, by the estimated offset.
+      if (hb.session != installed_session_ || !estimate_) continue;
+      const auto mine = breathing_.time_at(hb.frame_ns - estimate_->offset_ns);
+      if (mine) record(breath_offset_ms_, (*mine - hb.breath_t_s) * 1e3);
+    }
+  }
+}
+
+void Trainee::take_poses() {
+  std::array<lungar_sync_PatientPose, 8> samples{};
+  std::array<dds_sample_info_t, 8> infos{};
+  for (int n; (n = pose_reader_->take(samples, infos)) > 0;) {
+    const std::int64_t arrival = lungar::monotonic_ns();
+    const std::int64_t here_ns = link_->clock().from_monotonic(arrival);
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      auto pose = from_wire(samples[i]);
+      if (!pose) {
+        link_->malformed(pose.error());
+        continue;
+      }
+      hear(samples[i].session, arrival);
+      drivers::PoseSample p;
+      p.role = drivers::Role::Patient;
+      p.flags = drivers::kPoseValid;
+      p.t_arrival_ns = arrival;
+      p.t_device_ns = arrival;
+      p.position_mm = pose->position_mm;
+      p.orientation_wxyz = pose->orientation_wxyz;
+      if (estimate_) {  // publication -> receipt, both on the instructor's clock
+        p.t_device_ns = link_->clock().to_monotonic(pose->measured_ns - estimate_->offset_ns);
+        record(pose_age_ms_, static_cast<double>(here_ns + estimate_->offset_ns - infos[i].source_timestamp) * 1e-6);
+      }
+      pose_box_.publish(p);
+      poses_.fetch_add(1, std::memory_order_relaxed);
+    }
+  }
+}
+
+void Trainee::hear(std::uint64_t session, std::int64_t now_mono) {
+  if (session != heard_session_) {  // a new instructor (or the first): its clock is learnt afresh
+    heard_session_ = session;
+    estimator_.reset();
+    exchanges_ = 0;
+    next_request_mono_ = now_mono;
+    if (join_mono_ == 0) join_mono_ = now_mono;
+    std::lock_guard lock(report_mutex_);
+    estimate_.reset();
+  }
+  last_heard_mono_ = now_mono;
+}
+
+void Trainee::take_replies() {
+  std::array<lungar_sync_TimeReply, 8> samples{};
+  std::array<dds_sample_info_t, 8> infos{};
+  for (int n; (n = reply_reader_->take(samples, infos)) > 0;) {
+    const std::int64_t t4 = link_->clock().now_ns();
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data || samples[i].requester != link_->session()) continue;
+      const ClockExchange x{samples[i].t1_ns, samples[i].t2_ns, infos[i].source_timestamp, t4};
+      if (!estimator_.add(x)) continue;  // a stalled or impossible exchange: the next one will do
+      ++exchanges_;
+      const auto e = estimator_.estimate();
+      breathing_.update_offset(e->offset_ns);
+      std::lock_guard lock(report_mutex_);
+      estimate_ = e;
+    }
+  }
+}
+
+void Trainee::request_time(std::int64_t now_mono) {
+  if (heard_session_ == 0 || now_mono < next_request_mono_ || request_writer_->matched() <= 0) return;
+  lungar_sync_TimeRequest req{link_->session(), ++request_seq_};
+  (void)request_writer_->write(req, link_->clock().now_ns());  // its source timestamp is t1
+  next_request_mono_ = now_mono + (exchanges_ < kBurstExchanges ? kBurstPeriodNs : kRequestPeriodNs);
+}
+
+void Trainee::update_state(std::int64_t now_mono) {
+  const bool heard = heard_session_ != 0 && now_mono - last_heard_mono_ <= link_->options().lost_after_ns;
+  const bool ready = heard && installed_session_ == heard_session_ && breathing_.ready() && estimate_;
+  const SyncState was = state();
+  if (ready && was != SyncState::InSync) {
+    char line[240];
+    const double join_ms = join_mono_ != 0 ? static_cast<double>(now_mono - join_mono_) * 1e-6 : -1.0;
+    std::snprintf(line, sizeof line,
+                  "sync: in step with instructor '%s' %.1f ms after joining (clock offset %.3f ms, spread %.3f ms, "
+                  "round trip %.3f ms)",
+                  instructor_.c_str(), join_ms, static_cast<double>(estimate_->offset_ns) * 1e-6,
+                  estimate_->spread_ns * 1e-6, static_cast<double>(estimate_->delay_ns) * 1e-6);
+    link_->log(line);
+    {
+      std::lock_guard lock(report_mutex_);
+      join_to_in_sync_ms_ = join_ms;
+    }
+    join_mono_ = 0;
+    transition(SyncState::InSync);
+  } else if (!heard && was == SyncState::InSync) {
+    link_->log("sync lost: no word from instructor '" + instructor_ + "' for " +
+               std::to_string((now_mono - last_heard_mono_) / 1'000'000) +
+               " ms; breathing goes on on the shared time base");
+    heard_session_ = 0;  // whoever speaks next is followed as a new instructor
+    transition(SyncState::Lost);
+  }
+}
+
+void Trainee::transition(SyncState to) {
+  state_.store(to, std::memory_order_release);
+  std::lock_guard lock(report_mutex_);
+  if (transitions_.size() < transitions_.capacity()) transitions_.push_back({to, realtime_ns()});
+}
+
+void Trainee::record(std::vector<double>& values, double v) {
+  std::lock_guard lock(report_mutex_);
+  if (values.size() < kMaxRecorded) values.push_back(v);
+}
+
+SyncReport Trainee::report() const {
+  SyncReport r;
+  r.role = SyncRole::Trainee;
+  r.state = state();
+  r.peers = peers_.load();
+  r.poses = poses_.load();
+  r.heartbeats = heartbeats_.load();
+  r.malformed = link_->malformed_count();
+  std::lock_guard lock(report_mutex_);
+  r.instructor = instructor_;
+  std::vector<double> magnitude(breath_offset_ms_.size());
+  std::transform(breath_offset_ms_.begin(), breath_offset_ms_.end(), magnitude.begin(),
+                 [](double v) { return std::abs(v); });
+  r.breath_offset_ms_p50 = FrameStats::percentile(magnitude, 50);
+  r.breath_offset_ms_p99 = FrameStats::percentile(magnitude, 99);
+  r.patient_pose_age_ms_p50 = FrameStats::percentile(pose_age_ms_, 50);
+  r.patient_pose_age_ms_p99 = FrameStats::percentile(pose_age_ms_, 99);
+  if (estimate_) {
+    r.clock_offset_ms = static_cast<double>(estimate_->offset_ns) * 1e-6;
+    r.clock_offset_spread_ms = estimate_->spread_ns * 1e-6;
+    r.clock_delay_ms = static_cast<double>(estimate_->delay_ns) * 1e-6;
+  }
+  r.join_to_in_sync_ms = join_to_in_sync_ms_;
+  r.transitions = transitions_;
+  return r;
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,121 @@
+/// @file trainee.h
+/// @brief The trainee station: follows the instructor's lung pose and breathing (its head stays its own),
+/// estimates the instructor's clock, and says when it is in sync or lost. It never publishes shared state:
+/// it has writers only for its Station announcement and its clock requests.
+/// @ingroup platform
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "config/base/result.h"
+#include "drivers/pose/mailbox.h"
+#include "drivers/pose/pose_sample.h"
+#include "platform/sync/classroom_link.h"
+#include "platform/sync/clock_offset.h"
+#include "platform/sync/shared_breathing.h"
+#include "platform/sync/sync_types.h"
+#include "platform/sync/wire.h"
+
+namespace lungar::platform::sync {
+
+class Trainee {
+ public:
+  /// Clock requests: every kBurstPeriodNs until kBurstExchanges answers, then every kRequestPeriodNs.
+  static constexpr std::int64_t kBurstPeriodNs = 10'000'000;
+  static constexpr int kBurstExchanges = 8;
+  static constexpr std::int64_t kRequestPeriodNs = 200'000'000;
+  static constexpr std::size_t kMaxRecorded = 1 << 16;  ///< offsets and ages kept for the percentiles
+
+  static Result<std::unique_ptr<Trainee>> create(const SyncOptions& options);
+  ~Trainee();
+  Trainee(const Trainee&) = delete;
+  Trainee& operator=(const Trainee&) = delete;
+
+  /// The lung pose in the world from the instructor (role Patient; arrival = its receipt here, monotonic),
+  /// flagged stale while lost; an invalid sample before the first. Lock-free, allocates nothing.
+  drivers::PoseSample patient_pose() const;
+  /// The shared breathing at monotonic `now_ns`; false until the instructor's breathing has arrived.
+  bool breathing(std::int64_t now_ns, sim::BreathingSample& out) const;
+  /// The shared breathing time at monotonic `now_ns` (for the stats), if any.
+  std::optional<double> breathing_time(std::int64_t now_ns) const;
+
+  SyncState state() const { return state_.load(std::memory_order_acquire); }
+  SyncReport report() const;
+  const std::string& station() const { return link_->name(); }
+
+ private:
+  struct PendingState {
+    std::uint64_t session = 0;
+    std::uint32_t revision = 0;
+    std::int64_t time_base_ns = 0;
+    std::string station;
+    sim::BreathingParams params;
+  };
+  struct PendingEvents {
+    std::uint64_t session = 0;
+    std::uint32_t revision = 0;
+    std::vector<sim::Event> events;
+  };
+  explicit Trainee(std::unique_ptr<ClassroomLink> link);
+  Status open_endpoints();
+  void run();
+  void take_breathing();
+  void take_events();
+  void install_if_complete();
+  void take_heartbeats(std::int64_t now_mono);
+  void take_poses();
+  void take_replies();
+  /// A sample from instructor `session` arrived: it is alive; a new session restarts the clock estimate.
+  void hear(std::uint64_t session, std::int64_t now_mono);
+  void request_time(std::int64_t now_mono);
+  void update_state(std::int64_t now_mono);
+  void transition(SyncState to);
+  void record(std::vector<double>& values, double v);
+
+  std::unique_ptr<ClassroomLink> link_;
+  std::optional<dds::Writer<lungar_sync_TimeRequest>> request_writer_;
+  std::optional<dds::Reader<lungar_sync_PatientPose>> pose_reader_;
+  std::optional<dds::Reader<lungar_sync_BreathingState>> breathing_reader_;
+  std::optional<dds::Reader<lungar_sync_ScenarioEvents>> events_reader_;
+  std::optional<dds::Reader<lungar_sync_Heartbeat>> heartbeat_reader_;
+  std::optional<dds::Reader<lungar_sync_TimeReply>> reply_reader_;
+
+  drivers::LatestMailbox<drivers::PoseSample> pose_box_;
+  SharedBreathing breathing_;
+  ClockOffsetEstimator estimator_;
+
+  // Sync thread only.
+  std::optional<PendingState> pending_state_;
+  std::optional<PendingEvents> pending_events_;
+  std::uint64_t installed_session_ = 0;
+  std::uint32_t installed_revision_ = 0;
+  std::uint64_t heard_session_ = 0;     ///< the instructor session last heard from (0: none, or lost)
+  std::int64_t last_heard_mono_ = 0;   ///< its last heartbeat, pose or state
+  std::int64_t join_mono_ = 0;  ///< first word from the current instructor session
+  std::uint32_t request_seq_ = 0;
+  std::int64_t next_request_mono_ = 0;
+  int exchanges_ = 0;
+
+  std::atomic<SyncState> state_{SyncState::Lost};
+  std::atomic<int> peers_{0};
+  std::atomic<std::uint64_t> poses_{0};
+  std::atomic<std::uint64_t> heartbeats_{0};
+  mutable std::mutex report_mutex_;  ///< guards what report() copies
+  std::string instructor_;
+  std::optional<ClockEstimate> estimate_;
+  double join_to_in_sync_ms_ = -1;
+  std::vector<double> breath_offset_ms_;
+  std::vector<double> pose_age_ms_;
+  std::vector<SyncTransition> transitions_;
+
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,196 @@
+/// @file wire.cpp
+/// @brief Checked conversions between the classroom's IDL types and lungar's.
+#include "platform/sync/wire.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace lungar::platform::sync {
+
+namespace {
+
+std::string num(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+/// Bits of ScenarioEvent::set: which optional fields of a change carry a value.
+enum SetBit : std::uint32_t {
+  kSetPreset = 1u << 0,
+  kSetRate = 1u << 1,
+  kSetIe = 1u << 2,
+  kSetTidal = 1u << 3,
+  kSetMode = 1u << 4,
+  kSetTau = 1u << 5,
+  kSetPeep = 1u << 6,
+  kSetAll = (1u << 7) - 1,
+};
+constexpr std::uint8_t kPresetCount = 3;     // sim::Preset's values
+constexpr std::uint8_t kModeCount = 2;       // sim::Mode's values
+constexpr std::uint8_t kEventKindCount = 6;  // sim::EventKind's values
+
+Status finite(const char* topic, const char* field, double v) {
+  if (std::isfinite(v)) return ok();
+  return fail(std::string(topic) + ": " + field + ": expected a finite number, got " + num(v));
+}
+
+template <class T>
+void set_if(std::uint32_t set, std::uint32_t bit, std::optional<T>& field, T value) {
+  if (set & bit) field = value;
+}
+
+}  // namespace
+
+Result<SharedPose> from_wire(const lungar_sync_PatientPose& s) {
+  constexpr const char* kTopic = "lungar_patient_pose";
+  SharedPose p;
+  double norm_sq = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(s.position_mm[i]) || std::abs(s.position_mm[i]) > kMaxPositionMm) {
+      return fail(std::string(kTopic) + ": position_mm[" + std::to_string(i) + "]: expected a finite number within " +
+                  num(kMaxPositionMm) + " mm, got " + num(s.position_mm[i]));
+    }
+    p.position_mm[i] = s.position_mm[i];
+  }
+  for (int i = 0; i < 4; ++i) {
+    if (Status f = finite(kTopic, "orientation_wxyz", s.orientation_wxyz[i]); !f) return Error{f.error()};
+    p.orientation_wxyz[i] = s.orientation_wxyz[i];
+    norm_sq += s.orientation_wxyz[i] * s.orientation_wxyz[i];
+  }
+  if (std::abs(std::sqrt(norm_sq) - 1.0) > kQuaternionNormTolerance) {
+    return fail(std::string(kTopic) + ": orientation_wxyz: expected a unit quaternion (norm 1 +- " +
+                num(kQuaternionNormTolerance) + "), got norm " + num(std::sqrt(norm_sq)));
+  }
+  if (s.measured_ns <= 0) return fail(std::string(kTopic) + ": measured_ns: expected a time after the epoch");
+  p.measured_ns = s.measured_ns;
+  return p;
+}
+
+void to_wire(const SharedPose& pose, std::uint64_t session, std::uint32_t seq, lungar_sync_PatientPose& out) {
+  out.session = session;
+  out.seq = seq;
+  for (int i = 0; i < 3; ++i) out.position_mm[i] = pose.position_mm[i];
+  for (int i = 0; i < 4; ++i) out.orientation_wxyz[i] = pose.orientation_wxyz[i];
+  out.measured_ns = pose.measured_ns;
+}
+
+Result<sim::BreathingParams> from_wire(const lungar_sync_BreathingState& s) {
+  constexpr const char* kTopic = "lungar_breathing_state";
+  if (s.preset >= kPresetCount) {
+    return fail(std::string(kTopic) + ": preset: expected 0..2 (normal, emphysema, fibrosis), got " +
+                std::to_string(s.preset));
+  }
+  if (s.mode >= kModeCount) {
+    return fail(std::string(kTopic) + ": mode: expected 0 or 1 (spontaneous, ventilator), got " + std::to_string(s.mode));
+  }
+  if (s.time_base_ns <= 0) return fail(std::string(kTopic) + ": time_base_ns: expected a time after the epoch");
+  sim::BreathingParams p;
+  p.preset = static_cast<sim::Preset>(s.preset);
+  p.mode = static_cast<sim::Mode>(s.mode);
+  p.rate_bpm = s.rate_bpm;
+  p.ie_ratio = s.ie_ratio;
+  p.tidal_volume_ml = s.tidal_volume_ml;
+  p.ventilator_tau_s = s.ventilator_tau_s;
+  p.peep_cmh2o = s.peep_cmh2o;
+  if (std::string e = sim::validate(p); !e.empty()) return fail(std::string(kTopic) + ": " + e);
+  return p;
+}
+
+void to_wire(const sim::BreathingParams& p, lungar_sync_BreathingState& out) {
+  out.preset = static_cast<std::uint8_t>(p.preset);
+  out.mode = static_cast<std::uint8_t>(p.mode);
+  out.rate_bpm = p.rate_bpm;
+  out.ie_ratio = p.ie_ratio;
+  out.tidal_volume_ml = p.tidal_volume_ml;
+  out.ventilator_tau_s = p.ventilator_tau_s;
+  out.peep_cmh2o = p.peep_cmh2o;
+}
+
+Result<std::vector<sim::Event>> from_wire(const lungar_sync_ScenarioEvents& s) {
+  std::vector<sim::Event> events;
+  events.reserve(s.events._length);
+  double previous = 0;
+  for (std::uint32_t i = 0; i < s.events._length; ++i) {
+    const lungar_sync_ScenarioEvent& w = s.events._buffer[i];
+    const std::string where = "lungar_scenario_events: events[" + std::to_string(i) + "]";
+    if (!std::isfinite(w.t_s) || w.t_s < previous) {
+      return fail(where + ": t_s: expected a finite time not before the previous event's " + num(previous) +
+                  " s, got " + num(w.t_s));
+    }
+    previous = w.t_s;
+    if (w.kind >= kEventKindCount) return fail(where + ": kind: expected 0..5, got " + std::to_string(w.kind));
+    if ((w.set & ~kSetAll) != 0) return fail(where + ": set: expected bits 0..6, got " + std::to_string(w.set));
+    if ((w.set & kSetPreset) && w.preset >= kPresetCount) {
+      return fail(where + ": preset: expected 0..2, got " + std::to_string(w.preset));
+    }
+    if ((w.set & kSetMode) && w.mode >= kModeCount) {
+      return fail(where + ": mode: expected 0 or 1, got " + std::to_string(w.mode));
+    }
+    for (double v : {w.rate_bpm, w.ie_ratio, w.tidal_volume_ml, w.ventilator_tau_s, w.peep_cmh2o, w.sigh_volume_ml,
+                     w.transition_s}) {
+      if (!std::isfinite(v)) return fail(where + ": expected finite numbers, got " + num(v));
+    }
+    sim::Event e;
+    e.t_s = w.t_s;
+    e.kind = static_cast<sim::EventKind>(w.kind);
+    e.sigh_volume_ml = w.sigh_volume_ml;
+    e.transition_s = w.transition_s;
+    set_if(w.set, kSetPreset, e.change.preset, static_cast<sim::Preset>(w.preset));
+    set_if(w.set, kSetRate, e.change.rate_bpm, w.rate_bpm);
+    set_if(w.set, kSetIe, e.change.ie_ratio, w.ie_ratio);
+    set_if(w.set, kSetTidal, e.change.tidal_volume_ml, w.tidal_volume_ml);
+    set_if(w.set, kSetMode, e.change.mode, static_cast<sim::Mode>(w.mode));
+    set_if(w.set, kSetTau, e.change.ventilator_tau_s, w.ventilator_tau_s);
+    set_if(w.set, kSetPeep, e.change.peep_cmh2o, w.peep_cmh2o);
+    events.push_back(e);
+  }
+  return events;
+}
+
+Status to_wire(std::span<const sim::Event> events, std::vector<lungar_sync_ScenarioEvent>& storage,
+               lungar_sync_ScenarioEvents& out) {
+  if (events.size() > kMaxScenarioEvents) {
+    return fail("sync: the scenario has " + std::to_string(events.size()) + " breathing events; a classroom carries at most " +
+                std::to_string(kMaxScenarioEvents));
+  }
+  storage.assign(events.size(), lungar_sync_ScenarioEvent{});
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const sim::Event& e = events[i];
+    lungar_sync_ScenarioEvent& w = storage[i];
+    w.t_s = e.t_s;
+    w.kind = static_cast<std::uint8_t>(e.kind);
+    w.sigh_volume_ml = e.sigh_volume_ml;
+    w.transition_s = e.transition_s;
+    const sim::PatternChange& c = e.change;
+    if (c.preset) w.set |= kSetPreset, w.preset = static_cast<std::uint8_t>(*c.preset);
+    if (c.rate_bpm) w.set |= kSetRate, w.rate_bpm = *c.rate_bpm;
+    if (c.ie_ratio) w.set |= kSetIe, w.ie_ratio = *c.ie_ratio;
+    if (c.tidal_volume_ml) w.set |= kSetTidal, w.tidal_volume_ml = *c.tidal_volume_ml;
+    if (c.mode) w.set |= kSetMode, w.mode = static_cast<std::uint8_t>(*c.mode);
+    if (c.ventilator_tau_s) w.set |= kSetTau, w.ventilator_tau_s = *c.ventilator_tau_s;
+    if (c.peep_cmh2o) w.set |= kSetPeep, w.peep_cmh2o = *c.peep_cmh2o;
+  }
+  out.events._buffer = storage.data();
+  out.events._length = static_cast<std::uint32_t>(storage.size());
+  out.events._maximum = static_cast<std::uint32_t>(storage.size());
+  out.events._release = false;
+  return ok();
+}
+
+Status check(const lungar_sync_Heartbeat& s) {
+  if (Status f = finite("lungar_heartbeat", "breath_t_s", s.breath_t_s); !f) return f;
+  if (s.frame_ns <= 0) return fail("lungar_heartbeat: frame_ns: expected a time after the epoch");
+  return ok();
+}
+
+Status check(const lungar_sync_Station& s) {
+  if (s.role != 1 && s.role != 2) {
+    return fail("lungar_station: role: expected 1 (instructor) or 2 (trainee), got " + std::to_string(s.role));
+  }
+  if (s.name[0] == '\0') return fail("lungar_station: name: expected a station name, got an empty one");
+  return ok();
+}
+
+}  // namespace lungar::platform::sync

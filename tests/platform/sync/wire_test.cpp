@@ -1,0 +1,157 @@
+// Checked conversions of the classroom's samples: round trips, and every malformed or out-of-range sample
+// refused with a line naming the topic and the field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "platform/sync/wire.h"
+
+using namespace lungar;
+using namespace lungar::platform::sync;
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+lungar_sync_PatientPose good_pose() {
+  SharedPose p{{10.0, 700.0, -20.0}, {std::sqrt(0.5), std::sqrt(0.5), 0.0, 0.0}, 1'700'000'000'000'000'000};
+  lungar_sync_PatientPose w{};
+  to_wire(p, 77, 3, w);
+  return w;
+}
+
+lungar_sync_BreathingState good_state() {
+  lungar_sync_BreathingState s{};
+  sim::BreathingParams p;
+  p.preset = sim::Preset::Fibrosis;
+  p.rate_bpm = 18.0;
+  p.tidal_volume_ml = 400.0;
+  to_wire(p, s);
+  s.time_base_ns = 1'700'000'000'000'000'000;
+  return s;
+}
+}  // namespace
+
+TEST(SyncWire, APoseRoundTrips) {
+  const lungar_sync_PatientPose w = good_pose();
+  EXPECT_EQ(w.session, 77u);
+  EXPECT_EQ(w.seq, 3u);
+  auto back = from_wire(w);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_DOUBLE_EQ(back->position_mm[1], 700.0);
+  EXPECT_DOUBLE_EQ(back->orientation_wxyz[1], std::sqrt(0.5));
+  EXPECT_EQ(back->measured_ns, 1'700'000'000'000'000'000);
+}
+
+TEST(SyncWire, ANaNPoseIsRefusedNamingTheField) {
+  lungar_sync_PatientPose w = good_pose();
+  w.orientation_wxyz[2] = kNaN;
+  auto r = from_wire(w);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("lungar_patient_pose: orientation_wxyz"), std::string::npos) << r.error();
+  w = good_pose();
+  w.position_mm[0] = kNaN;
+  r = from_wire(w);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("position_mm[0]"), std::string::npos) << r.error();
+}
+
+TEST(SyncWire, OutOfRangePosesAreRefused) {
+  lungar_sync_PatientPose w = good_pose();
+  w.position_mm[2] = 2e5;  // 200 m away
+  EXPECT_FALSE(from_wire(w));
+  w = good_pose();
+  w.orientation_wxyz[0] = 0.9;  // not a unit quaternion
+  auto r = from_wire(w);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("unit quaternion"), std::string::npos) << r.error();
+  w = good_pose();
+  w.measured_ns = -5;
+  EXPECT_FALSE(from_wire(w));
+}
+
+TEST(SyncWire, BreathingStateRoundTripsAndANegativeRateIsRefused) {
+  lungar_sync_BreathingState s = good_state();
+  auto p = from_wire(s);
+  ASSERT_TRUE(p) << p.error();
+  EXPECT_EQ(p->preset, sim::Preset::Fibrosis);
+  EXPECT_DOUBLE_EQ(p->rate_bpm, 18.0);
+  EXPECT_DOUBLE_EQ(p->tidal_volume_ml, 400.0);
+  s.rate_bpm = -12.0;
+  auto r = from_wire(s);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("lungar_breathing_state: rate_bpm"), std::string::npos) << r.error();
+  s = good_state();
+  s.preset = 9;
+  EXPECT_FALSE(from_wire(s));
+  s = good_state();
+  s.mode = 2;
+  EXPECT_FALSE(from_wire(s));
+  s = good_state();
+  s.tidal_volume_ml = kNaN;
+  EXPECT_FALSE(from_wire(s));
+  s = good_state();
+  s.time_base_ns = 0;
+  EXPECT_FALSE(from_wire(s));
+}
+
+TEST(SyncWire, ScenarioEventsRoundTrip) {
+  sim::PatternChange change;
+  change.rate_bpm = 20.0;
+  change.preset = sim::Preset::Emphysema;
+  const std::vector<sim::Event> events = {sim::Event::set(5.0, change, 3.0), sim::Event::sigh(8.0, 900.0),
+                                          sim::Event::of(10.0, sim::EventKind::HoldStart)};
+  std::vector<lungar_sync_ScenarioEvent> storage;
+  lungar_sync_ScenarioEvents w{};
+  ASSERT_TRUE(to_wire(events, storage, w));
+  ASSERT_EQ(w.events._length, 3u);
+  auto back = from_wire(w);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_EQ(back->size(), 3u);
+  EXPECT_EQ((*back)[0].kind, sim::EventKind::Change);
+  EXPECT_EQ((*back)[0].change.rate_bpm, 20.0);
+  EXPECT_EQ((*back)[0].change.preset, sim::Preset::Emphysema);
+  EXPECT_FALSE((*back)[0].change.tidal_volume_ml.has_value());  // not set stays not set
+  EXPECT_DOUBLE_EQ((*back)[0].transition_s, 3.0);
+  EXPECT_EQ((*back)[1].kind, sim::EventKind::Sigh);
+  EXPECT_DOUBLE_EQ((*back)[1].sigh_volume_ml, 900.0);
+  EXPECT_EQ((*back)[2].kind, sim::EventKind::HoldStart);
+}
+
+TEST(SyncWire, MalformedScenarioEventsAreRefused) {
+  const std::vector<sim::Event> events = {sim::Event::sigh(8.0), sim::Event::sigh(9.0)};
+  std::vector<lungar_sync_ScenarioEvent> storage;
+  lungar_sync_ScenarioEvents w{};
+  ASSERT_TRUE(to_wire(events, storage, w));
+  storage[1].t_s = 2.0;  // before the first
+  auto r = from_wire(w);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("events[1]: t_s"), std::string::npos) << r.error();
+  storage[1].t_s = 9.0;
+  storage[1].kind = 6;
+  EXPECT_FALSE(from_wire(w));
+  storage[1].kind = 0;
+  storage[1].set = 1u << 9;
+  EXPECT_FALSE(from_wire(w));
+  storage[1].set = 1u << 1;
+  storage[1].rate_bpm = kNaN;
+  EXPECT_FALSE(from_wire(w));
+  const std::vector<sim::Event> too_many(kMaxScenarioEvents + 1, sim::Event::sigh(1.0));
+  EXPECT_FALSE(to_wire(too_many, storage, w));
+}
+
+TEST(SyncWire, HeartbeatsAndStationsAreChecked) {
+  lungar_sync_Heartbeat hb{1, 1, 1'700'000'000'000'000'000, 3.5};
+  EXPECT_TRUE(check(hb));
+  hb.breath_t_s = kNaN;
+  EXPECT_FALSE(check(hb));
+  lungar_sync_Station st{};
+  std::snprintf(st.name, sizeof st.name, "ward-3/instructor");
+  st.role = 1;
+  EXPECT_TRUE(check(st));
+  st.role = 7;
+  EXPECT_FALSE(check(st));
+  st.role = 2;
+  st.name[0] = '\0';
+  EXPECT_FALSE(check(st));
+}

@@ -157,6 +157,21 @@ struct RegistrationSettings {
   std::array<double, 4> rotation_wxyz = {1.0, 0.0, 0.0, 0.0};    ///< unit quaternion, model -> tracker
 };
 
+/// A classroom station's part (platform/sync): alone, the instructor, or a trainee.
+enum class SyncRole { Off, Instructor, Trainee };
+inline constexpr EnumNames<SyncRole, 3> kSyncRoleNames{
+    {{{SyncRole::Off, "off"}, {SyncRole::Instructor, "instructor"}, {SyncRole::Trainee, "trainee"}}}};
+
+/// [sync]: several stations sharing one patient and one breath over Cyclone DDS.
+struct SyncSettings {
+  SyncRole role = SyncRole::Off;
+  std::string classroom = "classroom";  ///< the DDS partition: one name per classroom on a network
+  int domain = 0;                       ///< the DDS domain id, [0, 232]
+  std::string cyclonedds_xml;           ///< Cyclone XML; empty: the shipped config/cyclonedds/classroom-lan.xml
+  std::string station;                  ///< this station's name; empty: host/pid
+  double lost_after_ms = 250.0;         ///< a trainee is lost after this long without a word from the instructor
+};
+
 struct SimSettings {
   std::string asset;  ///< baked asset; empty: the cached procedural pair
   OrientationMode orientation_mode = OrientationMode::Exact;
@@ -171,6 +186,7 @@ struct Settings {
   TrackerSettings trackers;
   RegistrationSettings registration;
   SimSettings sim;
+  SyncSettings sync;
   std::string source = "<defaults>";
 };
 
@@ -218,5 +234,6 @@ inline const char* to_string(OrientationMode v) { return kOrientationModeNames.n
 inline const char* to_string(FieldType v) { return kFieldTypeNames.name(v); }
 inline const char* to_string(Endian v) { return kEndianNames.name(v); }
 inline const char* to_string(OrientationKind v) { return kOrientationKindNames.name(v); }
+inline const char* to_string(SyncRole v) { return kSyncRoleNames.name(v); }
 
 }  // namespace lungar::config

@@ -238,6 +238,20 @@ void read_sim(TomlSection s, SimSettings& m) {
   s.finish();
 }
 
+void read_sync(TomlSection s, SyncSettings& y) {
+  s.choice("role", y.role, kSyncRoleNames);
+  s.text("classroom", y.classroom);
+  if (y.classroom.empty() || y.classroom.size() > 63 || y.classroom.find_first_of("*?[]\\") != std::string::npos) {
+    s.fail("classroom", "expected a name of 1 to 63 characters without * ? [ ] \\, got \"" + y.classroom + "\"");
+  }
+  s.integer("domain", y.domain, 0, 232, "");
+  s.text("cyclonedds_xml", y.cyclonedds_xml);
+  s.text("station", y.station);
+  if (y.station.size() > 63) s.fail("station", "expected at most 63 characters, got \"" + y.station + "\"");
+  s.number("lost_after_ms", y.lost_after_ms, 50.0, 10000.0, "ms");
+  s.finish();
+}
+
 Result<Settings> parse(const std::string& text, const std::string& name) {
   auto parsed = parse_toml(text, name);
   if (!parsed) return parsed.with_context("");
@@ -253,6 +267,7 @@ Result<Settings> parse(const std::string& text, const std::string& name) {
     read_trackers(top.section("trackers"), s.trackers);
     read_registration(top.section("registration"), s.registration);
     read_sim(top.section("sim"), s.sim);
+    read_sync(top.section("sync"), s.sync);
     top.finish();
   } catch (const ConfigError& e) {
     return fail(e.what());
@@ -305,6 +320,7 @@ Result<Settings> load_settings(const std::string& path) {
     resolve(r->breathing.scenario);
     resolve(r->trackers.replay_file);
     resolve(r->sim.asset);
+    resolve(r->sync.cyclonedds_xml);
   }
   return r;
 }

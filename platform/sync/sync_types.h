@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "config/base/enum_names.h"
+#include "config/settings.h"
 
 namespace lungar::platform::sync {
 
 /// off: alone; instructor: publishes the shared state; trainee: follows it with its own head tracker.
-enum class SyncRole : std::uint8_t { Off, Instructor, Trainee };
-inline constexpr EnumNames<SyncRole, 3> kSyncRoleNames{
-    {{{SyncRole::Off, "off"}, {SyncRole::Instructor, "instructor"}, {SyncRole::Trainee, "trainee"}}}};
+using config::SyncRole;
+using config::kSyncRoleNames;
 
 /// off: no sync; in_sync: following (a trainee) or followed (the instructor); lost: a trainee that hears no
 /// instructor (yet, or any more) and goes on breathing on the last shared time base.
@@ -23,7 +23,7 @@ enum class SyncState : std::uint8_t { Off, InSync, Lost };
 inline constexpr EnumNames<SyncState, 3> kSyncStateNames{
     {{{SyncState::Off, "off"}, {SyncState::InSync, "in_sync"}, {SyncState::Lost, "lost"}}}};
 
-inline const char* to_string(SyncRole r) { return kSyncRoleNames.name(r); }
+using config::to_string;
 inline const char* to_string(SyncState s) { return kSyncStateNames.name(s); }
 
 struct SyncOptions {

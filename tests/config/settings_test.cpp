@@ -38,6 +38,10 @@ TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   EXPECT_EQ(s.render.color_left, d.render.color_left);
   EXPECT_EQ(s.breathing.preset, d.breathing.preset);
   EXPECT_DOUBLE_EQ(s.breathing.tidal_volume_ml, d.breathing.tidal_volume_ml);
+  EXPECT_EQ(s.sync.role, d.sync.role);
+  EXPECT_EQ(s.sync.classroom, d.sync.classroom);
+  EXPECT_EQ(s.sync.domain, d.sync.domain);
+  EXPECT_DOUBLE_EQ(s.sync.lost_after_ms, d.sync.lost_after_ms);
   EXPECT_DOUBLE_EQ(s.trackers.stale_ms, d.trackers.stale_ms);
   EXPECT_EQ(s.registration.rotation_wxyz, d.registration.rotation_wxyz);
   EXPECT_EQ(s.sim.orientation_mode, d.sim.orientation_mode);
@@ -97,7 +101,7 @@ TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
 
 TEST(BadConfig, UnknownTopLevelSection) {
   EXPECT_EQ(error_of("[displya]\nwidth_px = 3\n"),
-            "bad.toml:1: unknown key 'displya'; expected one of: breathing, display, hmd, registration, render, sim, "
+            "bad.toml:1: unknown key 'displya'; expected one of: breathing, display, hmd, registration, render, sim, sync, "
             "trackers");
 }
 
@@ -200,4 +204,21 @@ TEST(BadConfig, MissingFile) {
   auto r = load_settings("/nonexistent/lungar.toml");
   ASSERT_FALSE(r);
   EXPECT_EQ(r.error(), "/nonexistent/lungar.toml: cannot read the config: expected a TOML file, got no such file");
+}
+
+TEST(Settings, AClassroomStationIsConfigured) {
+  auto r = load_settings_from_string("[sync]\nrole = \"trainee\"\nclassroom = \"ward-3\"\ndomain = 17\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->sync.role, lungar::config::SyncRole::Trainee);
+  EXPECT_EQ(r->sync.classroom, "ward-3");
+  EXPECT_EQ(r->sync.domain, 17);
+}
+
+TEST(BadConfig, SyncKeysOutOfRange) {
+  EXPECT_NE(error_of("[sync]\nrole = \"teacher\"\n").find("key 'sync.role': expected one of \"off\" | "
+                                                             "\"instructor\" | \"trainee\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[sync]\ndomain = 233\n").find("key 'sync.domain'"), std::string::npos);
+  EXPECT_NE(error_of("[sync]\nclassroom = \"\"\n").find("key 'sync.classroom': expected a name"), std::string::npos);
+  EXPECT_NE(error_of("[sync]\nclassroom = \"ward*\"\n").find("key 'sync.classroom'"), std::string::npos);
 }

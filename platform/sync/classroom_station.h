@@ -1,0 +1,45 @@
+/// @file classroom_station.h
+/// @brief The station the config's [sync] asks for: none (off), the instructor or a trainee, opened from
+/// config::SyncSettings; one place for what the runtime asks of either (state, report, a fatal refusal).
+/// @ingroup platform
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "config/base/result.h"
+#include "config/settings.h"
+#include "platform/sync/instructor.h"
+#include "platform/sync/trainee.h"
+
+namespace lungar::platform::sync {
+
+/// The Cyclone XML used when sync.cyclonedds_xml is empty: the shipped classroom-lan.xml.
+std::string default_cyclonedds_xml();
+
+/// SyncOptions from the config ([sync]); `log` receives the station's lines.
+SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log);
+
+class ClassroomStation {
+ public:
+  /// Off: a station that is neither. Else the instructor (refused, with one line naming the other, when the
+  /// classroom has one) or a trainee.
+  static Result<ClassroomStation> open(const config::SyncSettings& s, std::function<void(const std::string&)> log);
+
+  SyncRole role() const;
+  Instructor* instructor() const { return instructor_.get(); }
+  Trainee* trainee() const { return trainee_.get(); }
+  SyncState state() const;
+  /// True while a trainee hears no instructor: the status line says "sync lost".
+  bool lost() const { return state() == SyncState::Lost; }
+  /// Set when an older instructor turned up in the classroom while this one ran: stop with this line.
+  std::string fatal_error() const { return instructor_ ? instructor_->fatal_error() : std::string(); }
+  SyncReport report() const;
+
+ private:
+  std::unique_ptr<Instructor> instructor_;
+  std::unique_ptr<Trainee> trainee_;
+};
+
+}  // namespace lungar::platform::sync

@@ -37,6 +37,7 @@ struct DisplaySettings {
   int y_px = 0;
   std::string x11_output;     ///< with Output::Fullscreen: the X output (RandR monitor) to cover; empty: x, y, size
   bool vsync = true;
+  double max_fps = 0.0;       ///< frames per second at most (0: as fast as the output allows); a headless station
 };
 
 struct LensSettings {

@@ -22,6 +22,7 @@ void read_display(TomlSection s, DisplaySettings& d) {
   s.integer("y_px", d.y_px, -65536, 65536, "pixels");
   s.text("x11_output", d.x11_output);
   s.boolean("vsync", d.vsync);
+  s.number("max_fps", d.max_fps, 0.0, 1000.0, "frames/s");
   s.finish();
 }
 

@@ -2,8 +2,10 @@
 /// @brief Wiring a Runtime from the settings, the frame loop's limits, and the outputs of a run.
 #include "platform/runtime/run.h"
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
+#include <thread>
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
@@ -16,6 +18,7 @@
 #include "platform/runtime/tracker_poses.h"
 #include "config/settings_load.h"
 #include "platform/scenario_adapter.h"
+#include "platform/sync/join_classroom.h"
 #include "sim/asset/asset_io.h"
 
 namespace lungar::platform {
@@ -41,7 +44,7 @@ Result<std::shared_ptr<LungScene>> load_scene(const config::Settings& s) {
 /// This station's tracker, and the breathing script with the teaching scenario's turns when the mock tracker
 /// has no real patient to follow.
 Status add_sources(const config::Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                   RuntimeParts& parts) {
+                   RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
@@ -55,6 +58,10 @@ Status add_sources(const config::Settings& s, const RuntimeOptions& o, double li
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
   parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
+  auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, t0,
+                                     parts, [](const std::string& line) { log_line(line); });
+  if (!joined) return joined.with_context("");
+  classroom = joined.take();
   return ok();
 }
 
@@ -87,9 +94,22 @@ void log_limit(const RuntimeOptions& o, double limit_s) {
   log_line(std::string("running ") + limit + " (Ctrl-C stops)");
 }
 
+/// Sleeps until `next` + `period_ns` (display.max_fps), or not at all when late or unpaced; the next deadline.
+std::int64_t pace(std::int64_t next, std::int64_t period_ns) {
+  if (period_ns == 0) return next;
+  next += period_ns;
+  const std::int64_t now = monotonic_ns();
+  if (next <= now) return now;
+  std::this_thread::sleep_for(std::chrono::nanoseconds(next - now));
+  return next;
+}
+
 /// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
-Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0) {
-  while (!g_stop_requested.load()) {
+Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
+                  const sync::ClassroomStation& classroom, double max_fps) {
+  const std::int64_t period_ns = max_fps > 0 ? static_cast<std::int64_t>(1e9 / max_fps) : 0;
+  for (std::int64_t next = monotonic_ns(); !g_stop_requested.load(); next = pace(next, period_ns)) {
+    if (const std::string refused = classroom.fatal_error(); !refused.empty()) return fail(refused);
     if (o.frames && runtime.frames() >= *o.frames) break;
     if (limit_s > 0 && seconds_between(t0, monotonic_ns()) >= limit_s) break;
     if (!runtime.keep_running()) {
@@ -137,7 +157,8 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     return 1;
   }
   const std::int64_t t0 = monotonic_ns();  // breathing, the scenario and the time limit start now
-  if (Status sources = add_sources(s, o, limit_s, t0, parts); !sources) {
+  std::shared_ptr<sync::ClassroomStation> classroom;
+  if (Status sources = add_sources(s, o, limit_s, t0, parts, classroom); !sources) {
     log_line("error: " + sources.error());
     return 1;
   }
@@ -148,7 +169,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     return 1;
   }
   log_limit(o, limit_s);
-  const Status frames = run_frames(**runtime, o, limit_s, t0);
+  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom, s.display.max_fps);
   if (!frames) log_line("error: " + frames.error());
   return write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
 }

@@ -62,6 +62,12 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default out/snapshot.png)");
   app.add_option("--stats-json", o.stats_json_path, "stats JSON (default out/stats.json)");
   app.add_option("--record", o.record_path, "record the raw tracker reports into FILE.trk");
+  app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
+      ->check(CLI::IsMember(names_of(config::kSyncRoleNames)));
+  app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
+  app.add_option("--sync-domain", o.sync_domain, "the DDS domain id [0, 232] (default: sync.domain)");
+  app.add_option("--station", o.station, "this station's name in the classroom (default: host/pid)");
+  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "tests: pretend this station's clock is off by MS");
 }
 
 Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
@@ -78,6 +84,15 @@ Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   if (o.seconds && !(*o.seconds >= 0)) {
     return fail("--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds));
   }
+  if (Status r = override_choice("--sync", o.sync, config::kSyncRoleNames, s.sync.role); !r) return r;
+  if (!o.classroom.empty()) s.sync.classroom = o.classroom;
+  if (o.sync_domain) {
+    if (*o.sync_domain < 0 || *o.sync_domain > 232) {
+      return fail("--sync-domain: expected a DDS domain id in [0, 232], got " + std::to_string(*o.sync_domain));
+    }
+    s.sync.domain = *o.sync_domain;
+  }
+  if (!o.station.empty()) s.sync.station = o.station;
   return ok();
 }
 

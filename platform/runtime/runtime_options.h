@@ -27,6 +27,11 @@ struct RuntimeOptions {
   std::string snapshot_path;      ///< PNG of the last frame
   std::string stats_json_path;
   std::string record_path;        ///< raw tracker reports into a .trk
+  std::string sync;               ///< a name of config::kSyncRoleNames; empty: from the config
+  std::string classroom;          ///< the classroom's name; empty: from the config
+  std::optional<int> sync_domain; ///< the DDS domain id
+  std::string station;            ///< this station's name in the classroom
+  double sync_clock_skew_ms = 0;  ///< tests: pretend this station's clock is off by this much
 };
 
 /// Adds the run options to `app`; names of enumerations are checked against config's tables.

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -128,6 +129,7 @@ int ClassroomLink::poll_roster() {
       *entry = RosterEntry{s.name, s.role, s.session, s.started_ns, infos[i].instance_handle, true};
     }
   }
+  peers_max_ = std::max(peers_max_, peers());
   return total;
 }
 

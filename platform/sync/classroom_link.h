@@ -39,8 +39,9 @@ class ClassroomLink {
   Status announce();
   /// Takes new Station samples into the roster; returns how many.
   int poll_roster();
-  /// Other stations seen alive now.
+  /// Other stations seen alive now, and the most seen at once.
   int peers() const;
+  int peers_max() const { return peers_max_; }
   /// The instructor, other than this station, that keeps the room against this one (started earlier, or at
   /// the same time with a smaller name), if any.
   std::optional<RosterEntry> senior_instructor() const;
@@ -83,6 +84,7 @@ class ClassroomLink {
   std::atomic<std::uint64_t> malformed_{0};
   std::array<RosterEntry, 64> roster_{};
   std::size_t roster_size_ = 0;
+  int peers_max_ = 0;
   // Entities: the domain first, so that it is deleted last.
   dds::Domain domain_;
   std::optional<dds::Topic<lungar_sync_Station>> station_topic_;

@@ -6,7 +6,8 @@ namespace lungar::platform::sync {
 
 std::string default_cyclonedds_xml() { return std::string(LUNGAR_CYCLONEDDS_DIR) + "/classroom-lan.xml"; }
 
-SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log) {
+SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+                            std::int64_t clock_skew_ns) {
   SyncOptions o;
   o.role = s.role;
   o.classroom = s.classroom;
@@ -15,13 +16,15 @@ SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(co
   o.station = s.station;
   o.lost_after_ns = static_cast<std::int64_t>(s.lost_after_ms * 1e6);
   o.log = std::move(log);
+  o.clock_skew_ns = clock_skew_ns;
   return o;
 }
 
 Result<ClassroomStation> ClassroomStation::open(const config::SyncSettings& s,
-                                                std::function<void(const std::string&)> log) {
+                                                std::function<void(const std::string&)> log,
+                                                std::int64_t clock_skew_ns) {
   ClassroomStation station;
-  const SyncOptions o = to_sync_options(s, std::move(log));
+  const SyncOptions o = to_sync_options(s, std::move(log), clock_skew_ns);
   if (s.role == SyncRole::Instructor) {
     auto made = Instructor::create(o);
     if (!made) return Error{made.error()};

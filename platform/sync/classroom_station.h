@@ -19,13 +19,15 @@ namespace lungar::platform::sync {
 std::string default_cyclonedds_xml();
 
 /// SyncOptions from the config ([sync]); `log` receives the station's lines.
-SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log);
+SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+                            std::int64_t clock_skew_ns = 0);
 
 class ClassroomStation {
  public:
   /// Off: a station that is neither. Else the instructor (refused, with one line naming the other, when the
-  /// classroom has one) or a trainee.
-  static Result<ClassroomStation> open(const config::SyncSettings& s, std::function<void(const std::string&)> log);
+  /// classroom has one) or a trainee. `clock_skew_ns`: tests pretend this station's clock is off.
+  static Result<ClassroomStation> open(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+                                       std::int64_t clock_skew_ns = 0);
 
   SyncRole role() const;
   Instructor* instructor() const { return instructor_.get(); }

@@ -137,7 +137,10 @@ void Instructor::send_pose() {
   SharedPose pose{m.position_mm, m.orientation_wxyz, link_->clock().from_monotonic(m.measured_mono_ns)};
   lungar_sync_PatientPose sample{};
   to_wire(pose, link_->session(), ++pose_seq_, sample);
-  if (pose_writer_->write(sample, link_->clock().now_ns())) poses_.fetch_add(1, std::memory_order_relaxed);
+  if (!pose_writer_->write(sample, link_->clock().now_ns())) return;
+  poses_.fetch_add(1, std::memory_order_relaxed);
+  std::lock_guard lock(fatal_mutex_);
+  last_orientation_ = m.orientation_wxyz;
 }
 
 void Instructor::send_heartbeat() {
@@ -175,6 +178,7 @@ void Instructor::answer_requests() {
 
 void Instructor::check_roster() {
   peers_.store(link_->peers());
+  peers_max_.store(link_->peers_max());
   auto other = link_->senior_instructor();
   if (!other) return;
   std::lock_guard lock(fatal_mutex_);
@@ -194,10 +198,13 @@ SyncReport Instructor::report() const {
   r.role = SyncRole::Instructor;
   r.state = SyncState::InSync;
   r.peers = peers_.load();
+  r.peers_max = peers_max_.load();
   r.instructor = link_->name();
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
   r.malformed = link_->malformed_count();
+  std::lock_guard lock(fatal_mutex_);
+  r.patient_orientation_wxyz = last_orientation_;
   return r;
 }
 

@@ -89,10 +89,11 @@ class Instructor {
   std::atomic<bool> shared_{false};
   std::atomic<std::uint64_t> poses_{0};
   std::atomic<std::uint64_t> heartbeats_{0};
-  std::atomic<int> peers_{0};
+  std::atomic<int> peers_{0}, peers_max_{0};
   std::uint32_t pose_seq_ = 0, heartbeat_seq_ = 0;
-  mutable std::mutex fatal_mutex_;
+  mutable std::mutex fatal_mutex_;  ///< guards fatal_ and last_orientation_, which report() reads
   std::string fatal_;
+  std::array<double, 4> last_orientation_{1, 0, 0, 0};
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -40,12 +40,6 @@ void SharedBreathing::update_offset(std::int64_t estimate_ns) {
   }
 }
 
-std::optional<double> SharedBreathing::time_at(std::int64_t station_ns) const {
-  if (!ready()) return std::nullopt;
-  const std::int64_t instructor_ns = station_ns + applied_ns_.load(std::memory_order_relaxed);
-  return static_cast<double>(instructor_ns - time_base_ns_.load(std::memory_order_relaxed)) * 1e-9;
-}
-
 bool SharedBreathing::sample_at(std::int64_t station_ns, sim::BreathingSample& out) const {
   std::lock_guard lock(mutex_);
   if (!driver_) return false;

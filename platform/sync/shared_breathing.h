@@ -35,8 +35,6 @@ class SharedBreathing {
   /// The offset applied now, ns.
   std::int64_t applied_offset_ns() const { return applied_ns_.load(std::memory_order_relaxed); }
 
-  /// The instructor's breathing time at `station_ns` (this station's clock), s; nothing before install().
-  std::optional<double> time_at(std::int64_t station_ns) const;
   /// The breathing state at `station_ns`; false before install(). Allocates nothing (frame loop).
   bool sample_at(std::int64_t station_ns, sim::BreathingSample& out) const;
 

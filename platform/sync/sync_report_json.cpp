@@ -4,9 +4,10 @@
 
 namespace lungar::platform::sync {
 
-void add_sync_keys(const SyncReport& r, nlohmann::ordered_json& j) {
+void add_sync_keys(const SyncReport& r, nlohmann::json& j) {
   j["sync_role"] = to_string(r.role);
   j["sync_peers"] = r.peers;
+  j["sync_peers_max"] = r.peers_max;
   j["sync_state"] = to_string(r.state);
   j["sync_instructor"] = r.instructor;
   j["sync_breath_offset_ms_p50"] = r.breath_offset_ms_p50;
@@ -18,9 +19,10 @@ void add_sync_keys(const SyncReport& r, nlohmann::ordered_json& j) {
   j["sync_clock_delay_ms"] = r.clock_delay_ms;
   j["sync_join_to_in_sync_ms"] = r.join_to_in_sync_ms;
   j["sync_poses"] = r.poses;
+  j["sync_patient_orientation_wxyz"] = r.patient_orientation_wxyz;
   j["sync_heartbeats"] = r.heartbeats;
   j["sync_malformed"] = r.malformed;
-  nlohmann::ordered_json transitions = nlohmann::ordered_json::array();
+  nlohmann::json transitions = nlohmann::json::array();
   for (const SyncTransition& t : r.transitions) {
     transitions.push_back({{"state", to_string(t.state)}, {"realtime_ns", t.realtime_ns}});
   }
@@ -28,7 +30,7 @@ void add_sync_keys(const SyncReport& r, nlohmann::ordered_json& j) {
 }
 
 std::string report_json(const SyncReport& r) {
-  nlohmann::ordered_json j;
+  nlohmann::json j;
   add_sync_keys(r, j);
   return j.dump();
 }

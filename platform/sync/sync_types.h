@@ -3,6 +3,7 @@
 /// @ingroup platform
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -49,6 +50,7 @@ struct SyncReport {
   SyncRole role = SyncRole::Off;
   SyncState state = SyncState::Off;
   int peers = 0;                        ///< other stations of the classroom seen now
+  int peers_max = 0;                    ///< the most seen at once during the run
   std::string instructor;               ///< the instructor followed (a trainee) or this station (the instructor)
   double breath_offset_ms_p50 = 0;      ///< trainee's breathing time minus the instructor's, same instant
   double breath_offset_ms_p99 = 0;      ///< (absolute values' percentiles)
@@ -59,6 +61,7 @@ struct SyncReport {
   double clock_delay_ms = 0;            ///< the round trip of the best exchange
   double join_to_in_sync_ms = -1;       ///< first word from the instructor -> in step (the last join)
   std::uint64_t poses = 0;              ///< patient poses published (instructor) or applied (trainee)
+  std::array<double, 4> patient_orientation_wxyz{1, 0, 0, 0};  ///< the last lung orientation sent or received
   std::uint64_t malformed = 0;          ///< samples dropped as malformed or out of range
   std::uint64_t heartbeats = 0;
   std::vector<SyncTransition> transitions;

@@ -7,7 +7,6 @@
 #include <cstdio>
 
 #include "config/base/clock.h"
-#include "platform/runtime/frame_stats.h"
 
 namespace lungar::platform::sync {
 
@@ -22,8 +21,6 @@ std::int64_t realtime_ns() {
 }  // namespace
 
 Trainee::Trainee(std::unique_ptr<ClassroomLink> link) : link_(std::move(link)) {
-  breath_offset_ms_.reserve(kMaxRecorded);
-  pose_age_ms_.reserve(kMaxRecorded);
   transitions_.reserve(256);
 }
 
@@ -76,17 +73,16 @@ bool Trainee::breathing(std::int64_t now_ns, sim::BreathingSample& out) const {
   return breathing_.sample_at(link_->clock().from_monotonic(now_ns), out);
 }
 
-std::optional<double> Trainee::breathing_time(std::int64_t now_ns) const {
-  return breathing_.time_at(link_->clock().from_monotonic(now_ns));
-}
-
 void Trainee::run() {
   while (!stop_.load()) {
     std::int64_t now = lungar::monotonic_ns();
     const std::int64_t wait = std::clamp<std::int64_t>(next_request_mono_ - now, 0, kMaxWaitNs);
     link_->waitset().wait(heard_session_ != 0 ? wait : kMaxWaitNs);
     now = lungar::monotonic_ns();
-    if (link_->poll_roster() > 0) peers_.store(link_->peers());
+    if (link_->poll_roster() > 0) {
+      peers_.store(link_->peers());
+      peers_max_.store(link_->peers_max());
+    }
     take_breathing();
     take_events();
     install_if_complete();
@@ -165,12 +161,20 @@ void Trainee::take_heartbeats(std::int64_t now_mono) {
       }
       hear(hb.session, now_mono);
       heartbeats_.fetch_add(1, std::memory_order_relaxed);
-      // The trainee's breathing time at the instant of the instructor's frame, by the estimated offset.
-      if (hb.session != installed_session_ || !estimate_) continue;
-      const auto mine = breathing_.time_at(hb.frame_ns - estimate_->offset_ns);
-      if (mine) record(breath_offset_ms_, (*mine - hb.breath_t_s) * 1e3);
+      if (hb.session == installed_session_ && state() == SyncState::InSync) compare_breath(hb);
     }
   }
+}
+
+/// The breathing time this station's last frame drew minus the instructor's at the same instant: the instructor's
+/// frame time mapped onto this clock by the estimated offset, its breathing time carried forward to the frame.
+void Trainee::compare_breath(const lungar_sync_Heartbeat& hb) {
+  if (!estimate_ || frame_box_.published() == 0) return;
+  const FrameBreath f = frame_box_.read();
+  if (f.now_mono_ns < in_sync_since_mono_) return;  // drawn before this station was in step
+  const std::int64_t frame_on_instructor_clock = link_->clock().from_monotonic(f.now_mono_ns) + estimate_->offset_ns;
+  const double instructor_t = hb.breath_t_s + static_cast<double>(frame_on_instructor_clock - hb.frame_ns) * 1e-9;
+  record(breath_offset_ms_, std::abs(f.t_s - instructor_t) * 1e3);
 }
 
 void Trainee::take_poses() {
@@ -200,6 +204,8 @@ void Trainee::take_poses() {
       }
       pose_box_.publish(p);
       poses_.fetch_add(1, std::memory_order_relaxed);
+      std::lock_guard lock(report_mutex_);
+      last_orientation_ = p.orientation_wxyz;
     }
   }
 }
@@ -260,6 +266,7 @@ void Trainee::update_state(std::int64_t now_mono) {
       join_to_in_sync_ms_ = join_ms;
     }
     join_mono_ = 0;
+    in_sync_since_mono_ = now_mono;
     transition(SyncState::InSync);
   } else if (!heard && was == SyncState::InSync) {
     link_->log("sync lost: no word from instructor '" + instructor_ + "' for " +
@@ -276,9 +283,9 @@ void Trainee::transition(SyncState to) {
   if (transitions_.size() < transitions_.capacity()) transitions_.push_back({to, realtime_ns()});
 }
 
-void Trainee::record(std::vector<double>& values, double v) {
+void Trainee::record(LogHistogram& values, double v) {
   std::lock_guard lock(report_mutex_);
-  if (values.size() < kMaxRecorded) values.push_back(v);
+  values.add(v);
 }
 
 SyncReport Trainee::report() const {
@@ -286,18 +293,17 @@ SyncReport Trainee::report() const {
   r.role = SyncRole::Trainee;
   r.state = state();
   r.peers = peers_.load();
+  r.peers_max = peers_max_.load();
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
   r.malformed = link_->malformed_count();
   std::lock_guard lock(report_mutex_);
   r.instructor = instructor_;
-  std::vector<double> magnitude(breath_offset_ms_.size());
-  std::transform(breath_offset_ms_.begin(), breath_offset_ms_.end(), magnitude.begin(),
-                 [](double v) { return std::abs(v); });
-  r.breath_offset_ms_p50 = FrameStats::percentile(magnitude, 50);
-  r.breath_offset_ms_p99 = FrameStats::percentile(magnitude, 99);
-  r.patient_pose_age_ms_p50 = FrameStats::percentile(pose_age_ms_, 50);
-  r.patient_pose_age_ms_p99 = FrameStats::percentile(pose_age_ms_, 99);
+  r.patient_orientation_wxyz = last_orientation_;
+  r.breath_offset_ms_p50 = breath_offset_ms_.percentile(50);
+  r.breath_offset_ms_p99 = breath_offset_ms_.percentile(99);
+  r.patient_pose_age_ms_p50 = pose_age_ms_.percentile(50);
+  r.patient_pose_age_ms_p99 = pose_age_ms_.percentile(99);
   if (estimate_) {
     r.clock_offset_ms = static_cast<double>(estimate_->offset_ns) * 1e-6;
     r.clock_offset_spread_ms = estimate_->spread_ns * 1e-6;

@@ -16,6 +16,7 @@
 #include "config/base/result.h"
 #include "drivers/pose/mailbox.h"
 #include "drivers/pose/pose_sample.h"
+#include "platform/runtime/log_histogram.h"
 #include "platform/sync/classroom_link.h"
 #include "platform/sync/clock_offset.h"
 #include "platform/sync/shared_breathing.h"
@@ -30,7 +31,6 @@ class Trainee {
   static constexpr std::int64_t kBurstPeriodNs = 10'000'000;
   static constexpr int kBurstExchanges = 8;
   static constexpr std::int64_t kRequestPeriodNs = 200'000'000;
-  static constexpr std::size_t kMaxRecorded = 1 << 16;  ///< offsets and ages kept for the percentiles
 
   static Result<std::unique_ptr<Trainee>> create(const SyncOptions& options);
   ~Trainee();
@@ -42,8 +42,9 @@ class Trainee {
   drivers::PoseSample patient_pose() const;
   /// The shared breathing at monotonic `now_ns`; false until the instructor's breathing has arrived.
   bool breathing(std::int64_t now_ns, sim::BreathingSample& out) const;
-  /// The shared breathing time at monotonic `now_ns` (for the stats), if any.
-  std::optional<double> breathing_time(std::int64_t now_ns) const;
+  /// From the frame: the breathing time it drew at monotonic `now_ns`, whichever clock gave it. The sync thread
+  /// compares it with the instructor's at the same instant (sync_breath_offset_ms_*). Allocates nothing.
+  void frame_breath(std::int64_t now_ns, double t_s) { frame_box_.publish(FrameBreath{now_ns, t_s}); }
 
   SyncState state() const { return state_.load(std::memory_order_acquire); }
   SyncReport report() const;
@@ -62,7 +63,12 @@ class Trainee {
     std::uint32_t revision = 0;
     std::vector<sim::Event> events;
   };
+  struct FrameBreath {
+    std::int64_t now_mono_ns;
+    double t_s;
+  };
   explicit Trainee(std::unique_ptr<ClassroomLink> link);
+  void compare_breath(const lungar_sync_Heartbeat& hb);
   Status open_endpoints();
   void run();
   void take_breathing();
@@ -76,7 +82,7 @@ class Trainee {
   void request_time(std::int64_t now_mono);
   void update_state(std::int64_t now_mono);
   void transition(SyncState to);
-  void record(std::vector<double>& values, double v);
+  void record(LogHistogram& values, double v);
 
   std::unique_ptr<ClassroomLink> link_;
   std::optional<dds::Writer<lungar_sync_TimeRequest>> request_writer_;
@@ -87,6 +93,7 @@ class Trainee {
   std::optional<dds::Reader<lungar_sync_TimeReply>> reply_reader_;
 
   drivers::LatestMailbox<drivers::PoseSample> pose_box_;
+  drivers::LatestMailbox<FrameBreath> frame_box_;
   SharedBreathing breathing_;
   ClockOffsetEstimator estimator_;
 
@@ -98,20 +105,22 @@ class Trainee {
   std::uint64_t heard_session_ = 0;     ///< the instructor session last heard from (0: none, or lost)
   std::int64_t last_heard_mono_ = 0;   ///< its last heartbeat, pose or state
   std::int64_t join_mono_ = 0;  ///< first word from the current instructor session
+  std::int64_t in_sync_since_mono_ = 0;  ///< frames from here on are compared with the instructor
   std::uint32_t request_seq_ = 0;
   std::int64_t next_request_mono_ = 0;
   int exchanges_ = 0;
 
   std::atomic<SyncState> state_{SyncState::Lost};
-  std::atomic<int> peers_{0};
+  std::atomic<int> peers_{0}, peers_max_{0};
   std::atomic<std::uint64_t> poses_{0};
   std::atomic<std::uint64_t> heartbeats_{0};
   mutable std::mutex report_mutex_;  ///< guards what report() copies
   std::string instructor_;
+  std::array<double, 4> last_orientation_{1, 0, 0, 0};
   std::optional<ClockEstimate> estimate_;
   double join_to_in_sync_ms_ = -1;
-  std::vector<double> breath_offset_ms_;
-  std::vector<double> pose_age_ms_;
+  LogHistogram breath_offset_ms_;  ///< magnitudes: constant memory over a teaching day
+  LogHistogram pose_age_ms_;
   std::vector<SyncTransition> transitions_;
 
   std::atomic<bool> stop_{false};

@@ -68,7 +68,9 @@ int run_trainee(const SyncOptions& o, double seconds, const std::string& report_
     return 1;
   }
   const std::int64_t t0 = monotonic_ns();
-  while (!g_stop && monotonic_ns() - t0 < static_cast<std::int64_t>(seconds * 1e9)) {
+  for (std::int64_t now = t0; !g_stop && now - t0 < static_cast<std::int64_t>(seconds * 1e9); now = monotonic_ns()) {
+    sim::BreathingSample b;  // a frame every 16 ms that draws the shared breathing, as the runtime's does
+    if ((*made)->breathing(now, b)) (*made)->frame_breath(now, b.t_s);
     std::this_thread::sleep_for(std::chrono::milliseconds(16));
   }
   const std::string json = report_json((*made)->report());

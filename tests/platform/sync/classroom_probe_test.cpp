@@ -1,7 +1,7 @@
-// The classroom's DDS link between separate processes on loopback (lungar-sync-probe: stations without
-// rendering): a skewed clock estimated, a late joiner in step at once, an instructor killed and restarted, a
-// second instructor refused, two classrooms apart, malformed samples dropped, a trainee that never publishes.
-// Tolerances are the issue's: in step within 100 ms of joining, breath offset p99 <= 5 ms, lost within 500 ms.
+// The classroom's DDS link between separate processes on loopback, where the test itself plays one side with
+// raw DDS entities: a rogue instructor's malformed samples are dropped and counted by a trainee
+// (lungar-sync-probe, a station without rendering), and a trainee never publishes shared state. The whole
+// runtime's classroom (turns, breath offset, late joiner, lost and back, refusals) is classroom_runtime_test.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -65,78 +65,6 @@ class ClassroomProbe : public ::testing::Test {
 };
 
 }  // namespace
-
-TEST_F(ClassroomProbe, SkewedClockLateJoinerLostAndBack) {
-  auto instructor = start("instructor", "inst", 30);
-  auto skewed = start("trainee", "skewed", 10.5, [&] {
-    auto e = report_to("skewed");
-    e.insert(e.end(), {"--clock-skew-ms", "250"});
-    return e;
-  }());
-  sleep_s(3.0);
-  auto late = start("trainee", "late", 7.5, report_to("late"));
-  sleep_s(2.5);
-  const std::int64_t killed_ns = realtime_ns();
-  instructor->kill_now();
-  sleep_s(1.5);
-  auto again = start("instructor", "inst-again", 8);
-  ASSERT_EQ(skewed->wait(30), 0) << skewed->err();
-  ASSERT_EQ(late->wait(30), 0) << late->err();
-
-  const auto s = report("skewed");
-  // The estimate finds the skew (its error is at most half the round trip, well under a millisecond here).
-  EXPECT_NEAR(s["sync_clock_offset_ms"].get<double>(), -250.0, 2.0) << s.dump();
-  EXPECT_LE(s["sync_breath_offset_ms_p99"].get<double>(), 5.0) << s.dump();
-  EXPECT_EQ(s["sync_malformed"], 0);
-  const auto l = report("late");
-  EXPECT_GE(l["sync_join_to_in_sync_ms"].get<double>(), 0.0) << l.dump();
-  for (const auto& r : {s, l}) {
-    // in_sync, then lost within 500 ms of the kill, then in_sync again with the restarted instructor.
-    const auto& tr = r["sync_transitions"];
-    std::int64_t lost_ns = 0, back_ns = 0;
-    for (const auto& t : tr) {
-      if (t["state"] == "lost" && t["realtime_ns"].get<std::int64_t>() > killed_ns && lost_ns == 0) {
-        lost_ns = t["realtime_ns"].get<std::int64_t>();
-      }
-      if (t["state"] == "in_sync" && lost_ns != 0) back_ns = t["realtime_ns"].get<std::int64_t>();
-    }
-    ASSERT_NE(lost_ns, 0) << r.dump();
-    EXPECT_LE((lost_ns - killed_ns) * 1e-6, 500.0) << r.dump();
-    EXPECT_GT(back_ns, lost_ns) << r.dump();
-    EXPECT_EQ(r["sync_state"], "in_sync");
-    EXPECT_EQ(r["sync_instructor"], "inst-again");
-    EXPECT_GT(r["sync_poses"].get<int>(), 100);
-  }
-  // The late trainee joined a running instructor: in step within 100 ms of its first word... measured on its
-  // first join, before the restart; its log has the line.
-  const std::string log = late->err();
-  const auto at = log.find("sync: in step with instructor 'inst' ");
-  ASSERT_NE(at, std::string::npos) << log;
-  const double join_ms = std::stod(log.substr(at + std::string("sync: in step with instructor 'inst' ").size()));
-  EXPECT_LE(join_ms, 100.0) << log;
-  again->kill_now();
-}
-
-TEST_F(ClassroomProbe, ASecondInstructorIsRefusedAndAnotherClassroomIsApart) {
-  auto first = start("instructor", "first", 8);
-  sleep_s(1.0);
-  auto second = start("instructor", "second", 3);
-  EXPECT_EQ(second->wait(10), 1);
-  const std::string err = second->err();
-  EXPECT_NE(err.find("already has an instructor: station 'first'"), std::string::npos) << err;
-  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;  // one line
-  // The same domain, another classroom: an instructor of its own, and a trainee that follows it alone.
-  const std::string other = lungar::testing::test_classroom("other-room");
-  auto other_instructor = start("instructor", "other-inst", 6, {}, other);
-  auto trainee = start("trainee", "other-trainee", 3, report_to("other-trainee"), other);
-  ASSERT_EQ(trainee->wait(20), 0) << trainee->err();
-  EXPECT_EQ(other_instructor->wait(20), 0) << other_instructor->err();
-  const auto r = report("other-trainee");
-  EXPECT_EQ(r["sync_instructor"], "other-inst");
-  EXPECT_EQ(r["sync_state"], "in_sync");
-  EXPECT_EQ(r["sync_peers"], 1) << r.dump();  // other-inst only: 'first' is in another classroom
-  EXPECT_EQ(first->wait(20), 0) << first->err();
-}
 
 TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
   auto trainee = start("trainee", "victim", 3, report_to("victim"));

@@ -1,0 +1,25 @@
+/// @file classroom_breathing.cpp
+/// @brief Shared or own breathing, and the sync keys of the stats JSON.
+#include "platform/sync/classroom_breathing.h"
+
+#include <nlohmann/json.hpp>
+
+#include "platform/sync/sync_report_json.h"
+
+namespace lungar::platform::sync {
+
+sim::BreathingSample ClassroomBreathing::at(std::int64_t now_ns) const {
+  Trainee* trainee = station_->trainee();
+  if (trainee == nullptr) return own_->at(now_ns);
+  sim::BreathingSample drawn;
+  if (!trainee->breathing(now_ns, drawn)) drawn = own_->at(now_ns);
+  trainee->frame_breath(now_ns, drawn.t_s);  // what the frame draws is what the breath offset measures
+  return drawn;
+}
+
+void ClassroomBreathing::add_stats(nlohmann::json& stats) const {
+  own_->add_stats(stats);
+  add_sync_keys(station_->report(), stats);
+}
+
+}  // namespace lungar::platform::sync

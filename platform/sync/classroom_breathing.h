@@ -1,0 +1,28 @@
+/// @file classroom_breathing.h
+/// @brief The breathing clock of a classroom station: a trainee breathes on the instructor's shared time base
+/// once it has it (and keeps breathing on it when the instructor goes away); before that, and on the
+/// instructor or a station alone, the station's own script answers. It also writes the stats' sync_* keys.
+/// @ingroup platform
+#pragma once
+
+#include <memory>
+
+#include "platform/runtime/breathing_clock.h"
+#include "platform/sync/classroom_station.h"
+
+namespace lungar::platform::sync {
+
+class ClassroomBreathing final : public BreathingClock {
+ public:
+  ClassroomBreathing(std::unique_ptr<BreathingClock> own, std::shared_ptr<ClassroomStation> station)
+      : own_(std::move(own)), station_(std::move(station)) {}
+
+  sim::BreathingSample at(std::int64_t now_ns) const override;
+  void add_stats(nlohmann::json& stats) const override;
+
+ private:
+  std::unique_ptr<BreathingClock> own_;
+  std::shared_ptr<ClassroomStation> station_;
+};
+
+}  // namespace lungar::platform::sync

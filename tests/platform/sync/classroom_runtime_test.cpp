@@ -1,0 +1,167 @@
+// A classroom of `lungar` runtimes, each its own process, over Cyclone DDS on loopback, headless and light
+// (config/classroom-station.toml: mono, a small frame at 60 frames/s; a 2,032-node asset). The issue's
+// tolerances, read from each station's stats JSON and log: every trainee's patient follows the instructor's
+// turn within one tracker period (16 ms) and its breath offset p99 is at most 5 ms; a trainee started 3 s late
+// is in step within 100 ms of joining; killing the instructor makes trainees lost within 500 ms and a
+// restarted one brings them back; a second instructor is refused; two classrooms on one domain stay apart.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "station_process.h"
+#include "sync_test_support.h"
+
+using lungar::testing::StationProcess;
+
+namespace {
+
+const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
+const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
+const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
+constexpr double kTrackerPeriodMs = 1000.0 / 62.5;  // the mock tracker's report period
+
+std::int64_t realtime_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+void sleep_s(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
+
+/// The "N ms" of the first "sync: in step with instructor 'NAME' N ms after joining" line of a log.
+double first_join_ms(const std::string& log, const std::string& instructor) {
+  const std::string key = "sync: in step with instructor '" + instructor + "' ";
+  const auto at = log.find(key);
+  return at == std::string::npos ? -1.0 : std::stod(log.substr(at + key.size()));
+}
+
+/// Realtime of the first transition to `state` after `after_ns`, 0 when none.
+std::int64_t transition_after(const nlohmann::json& stats, const std::string& state, std::int64_t after_ns) {
+  for (const auto& t : stats["sync_transitions"]) {
+    if (t["state"] == state && t["realtime_ns"].get<std::int64_t>() > after_ns) return t["realtime_ns"];
+  }
+  return 0;
+}
+
+class ClassroomRuntime : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = lungar::testing::test_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    domain = std::to_string(lungar::testing::test_domain());
+    room = lungar::testing::test_classroom("ward");
+  }
+  std::unique_ptr<StationProcess> start(const std::string& name, const std::string& role, double seconds,
+                                        std::vector<std::string> extra = {}, const std::string& classroom = "") {
+    std::vector<std::string> a = {"--config", config, "--asset", kAsset, "--sync", role, "--station", name,
+                                  "--classroom", classroom.empty() ? room : classroom, "--sync-domain", domain,
+                                  "--seconds", std::to_string(seconds), "--tracker", "mock",
+                                  "--stats-json", (dir / (name + ".json")).string(),
+                                  "--snapshot", (dir / (name + ".png")).string()};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return std::make_unique<StationProcess>(kLungar, a, dir / name);
+  }
+  nlohmann::json stats(const std::string& name) const {
+    std::ifstream in(dir / (name + ".json"));
+    return nlohmann::json::parse(in);
+  }
+
+  std::filesystem::path dir;
+  std::string domain, room;
+  std::string config = kConfig;  ///< the profile of the stations started next
+};
+
+}  // namespace
+
+TEST_F(ClassroomRuntime, ThreeTraineesFollowTheInstructorsTurnAndBreath) {
+  // The instructor's mock patient turns from upright to supine 1-5 s into its run; the trainees' own mock
+  // trackers keep theirs upright ("static"), and their registration turns the model 30 degrees: only the
+  // classroom can turn their lungs, and it must hand over the instructor's lung pose whatever their registration.
+  const std::string trainee_toml = (dir / "trainee.toml").string();
+  std::ofstream(trainee_toml) << "[display]\noutput = \"headless\"\nmax_fps = 60.0\n[hmd]\nview = \"mono\"\n"
+                                 "eye_width_px = 320\neye_height_px = 240\n[trackers]\nmock_trajectory = \"static\"\n"
+                                 "[registration]\nrotation_wxyz = [0.9659258, 0.0, 0.2588190, 0.0]\n"
+                                 "translation_mm = [10.0, -20.0, 5.0]\n[sync]\ncyclonedds_xml = \""
+                              << lungar::testing::kLoopbackXml << "\"\n";
+  auto instructor = start("instructor", "instructor", 9.5);
+  sleep_s(0.3);
+  config = trainee_toml;
+  auto t1 = start("trainee-1", "trainee", 8.5);
+  auto t2 = start("trainee-2", "trainee", 8.5, {"--sync-clock-skew-ms", "250"});  // a PC whose clock is off
+  sleep_s(3.0);
+  auto t3 = start("trainee-3", "trainee", 5.5);  // joins 3 s late
+  for (auto* t : {t1.get(), t2.get(), t3.get()}) ASSERT_EQ(t->wait(60), 0) << t->err();
+  ASSERT_EQ(instructor->wait(60), 0) << instructor->err();
+
+  const auto in = stats("instructor");
+  EXPECT_EQ(in["sync_role"], "instructor");
+  EXPECT_EQ(in["sync_peers_max"], 3) << in.dump();
+  const auto supine = in["sync_patient_orientation_wxyz"];
+  EXPECT_NEAR(supine[0].get<double>(), std::sqrt(0.5), 1e-6) << in.dump();  // 90 degrees about x: turned
+  for (const std::string name : {"trainee-1", "trainee-2", "trainee-3"}) {
+    SCOPED_TRACE(name);
+    const auto t = stats(name);
+    EXPECT_EQ(t["sync_role"], "trainee");
+    EXPECT_EQ(t["sync_state"], "in_sync");
+    EXPECT_EQ(t["sync_instructor"], "instructor");
+    EXPECT_EQ(t["sync_malformed"], 0);
+    EXPECT_LE(t["sync_patient_pose_age_ms_p99"].get<double>(), kTrackerPeriodMs) << t.dump();
+    EXPECT_LE(t["sync_breath_offset_ms_p99"].get<double>(), 5.0) << t.dump();
+    for (int k = 0; k < 4; ++k) {  // the last shared pose is the instructor's (supine), and so is what it drew
+      EXPECT_NEAR(t["sync_patient_orientation_wxyz"][k].get<double>(), supine[k].get<double>(), 1e-9);
+      EXPECT_NEAR(t["sync_frame_lung_orientation_wxyz"][k].get<double>(), supine[k].get<double>(), 1e-6) << t.dump();
+    }
+    EXPECT_GT(t["sync_poses"].get<int>(), 200);
+    EXPECT_GE(t["volume_ml_max"].get<double>() - t["volume_ml_min"].get<double>(), 400.0);  // it breathes
+  }
+  EXPECT_NEAR(stats("trainee-2")["sync_clock_offset_ms"].get<double>(), -250.0, 2.0);
+  EXPECT_LE(first_join_ms(t3->err(), "instructor"), 100.0) << t3->err();
+  EXPECT_GE(first_join_ms(t3->err(), "instructor"), 0.0) << t3->err();
+}
+
+TEST_F(ClassroomRuntime, KillingTheInstructorIsLostWithin500msAndARestartBringsItBack) {
+  auto instructor = start("instructor", "instructor", 30);
+  sleep_s(0.3);
+  auto trainee = start("trainee", "trainee", 7.0);
+  sleep_s(3.0);
+  const std::int64_t killed = realtime_ns();
+  instructor->kill_now();
+  sleep_s(1.0);
+  auto again = start("instructor-again", "instructor", 5);
+  ASSERT_EQ(trainee->wait(60), 0) << trainee->err();
+  const auto t = stats("trainee");
+  const std::int64_t lost = transition_after(t, "lost", killed);
+  ASSERT_NE(lost, 0) << t.dump();
+  EXPECT_LE((lost - killed) * 1e-6, 500.0) << t.dump();
+  EXPECT_NE(transition_after(t, "in_sync", lost), 0) << t.dump();
+  EXPECT_EQ(t["sync_state"], "in_sync");
+  EXPECT_EQ(t["sync_instructor"], "instructor-again");
+  EXPECT_NE(trainee->err().find("sync lost: no word from instructor 'instructor'"), std::string::npos);
+  again->kill_now();
+}
+
+TEST_F(ClassroomRuntime, ASecondInstructorIsRefusedAndTwoClassroomsOnOneDomainAreApart) {
+  auto first = start("first", "instructor", 7);
+  sleep_s(1.5);
+  auto second = start("second", "instructor", 3);
+  EXPECT_EQ(second->wait(30), 1);
+  const std::string err = second->err();
+  EXPECT_NE(err.find("error: sync: classroom '" + room + "' (domain " + domain +
+                     ") already has an instructor: station 'first'"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("running"), std::string::npos) << err;  // refused before the first frame
+  const std::string other = lungar::testing::test_classroom("lab");
+  auto other_instructor = start("other-instructor", "instructor", 4.5, {}, other);
+  auto other_trainee = start("other-trainee", "trainee", 3, {}, other);
+  ASSERT_EQ(other_trainee->wait(30), 0) << other_trainee->err();
+  ASSERT_EQ(other_instructor->wait(30), 0) << other_instructor->err();
+  ASSERT_EQ(first->wait(30), 0) << first->err();
+  const auto t = stats("other-trainee");
+  EXPECT_EQ(t["sync_instructor"], "other-instructor");
+  EXPECT_EQ(t["sync_peers_max"], 1) << t.dump();  // 'first' shares the domain, not the classroom
+  EXPECT_EQ(stats("first")["sync_peers_max"], 0);
+}

@@ -9,13 +9,13 @@ namespace lungar::platform::sync {
 Result<sim::BreathingDriver> SharedBreathing::build(const sim::BreathingParams& start,
                                                     std::span<const sim::Event> events) {
   auto created = sim::BreathingDriver::create(start);
-  if (!created) return fail("lungar_breathing_state: " + created.error);
+  if (!created) return created.with_context("lungar_breathing_state: ");
   for (std::size_t i = 0; i < events.size(); ++i) {
-    if (std::string e = created.driver->apply(events[i]); !e.empty()) {
-      return fail("lungar_scenario_events: events[" + std::to_string(i) + "]: " + e);
+    if (Status e = created->apply(events[i]); !e) {
+      return e.with_context("lungar_scenario_events: events[" + std::to_string(i) + "]: ");
     }
   }
-  return std::move(*created.driver);
+  return created.take();
 }
 
 void SharedBreathing::install(sim::BreathingDriver driver, std::int64_t time_base_ns) {

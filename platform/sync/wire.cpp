@@ -94,7 +94,7 @@ Result<sim::BreathingParams> from_wire(const lungar_sync_BreathingState& s) {
   p.tidal_volume_ml = s.tidal_volume_ml;
   p.ventilator_tau_s = s.ventilator_tau_s;
   p.peep_cmh2o = s.peep_cmh2o;
-  if (std::string e = sim::validate(p); !e.empty()) return fail(std::string(kTopic) + ": " + e);
+  if (Status e = sim::validate(p); !e) return e.with_context(std::string(kTopic) + ": ");
   return p;
 }
 

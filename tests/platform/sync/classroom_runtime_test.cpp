@@ -163,5 +163,7 @@ TEST_F(ClassroomRuntime, ASecondInstructorIsRefusedAndTwoClassroomsOnOneDomainAr
   const auto t = stats("other-trainee");
   EXPECT_EQ(t["sync_instructor"], "other-instructor");
   EXPECT_EQ(t["sync_peers_max"], 1) << t.dump();  // 'first' shares the domain, not the classroom
-  EXPECT_EQ(stats("first")["sync_peers_max"], 0);
+  // 'first' may have seen the refused 'second' (it announces itself while it listens), never the other
+  // classroom's two stations, which ran together.
+  EXPECT_LE(stats("first")["sync_peers_max"].get<int>(), 1) << stats("first").dump();
 }

@@ -65,7 +65,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
   auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
   ASSERT_TRUE(script);
-  ASSERT_TRUE(teacher->instructor()->share_breathing(script.script->start, script.script->events, t0));
+  ASSERT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, t0));
   auto trainee = ClassroomStation::open(sync_settings(config::SyncRole::Trainee), quiet);
   ASSERT_TRUE(trainee) << trainee.error();
   auto learner = std::make_shared<ClassroomStation>(trainee.take());
@@ -76,7 +76,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   reg.translation_mm = {10.0, -20.0, 5.0};
   const Eigen::Isometry3d registration = registration_isometry(reg);
   TraineePoses poses(std::make_unique<StillPoses>(), learner, registration);
-  auto own = std::make_shared<const sim::BreathingScript>(std::move(*script.script));
+  auto own = std::make_shared<const sim::BreathingScript>(script.take());
   ClassroomBreathing breathing(std::make_unique<ScriptBreathing>(own, monotonic_ns()), learner);
   InstructorPublisher publisher(teacher);
   FrameState frame;

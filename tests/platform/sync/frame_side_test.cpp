@@ -78,7 +78,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   TraineePoses poses(std::make_unique<StillPoses>(), learner, registration);
   auto own = std::make_shared<const sim::BreathingScript>(script.take());
   ClassroomBreathing breathing(std::make_unique<ScriptBreathing>(own, monotonic_ns()), learner);
-  InstructorPublisher publisher(teacher);
+  auto publisher = std::make_unique<InstructorPublisher>(teacher);
   FrameState frame;
   frame.lung_in_world = Eigen::Quaterniond(Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitX()));
   frame.lung_origin_mm = Eigen::Vector3d(0.0, 700.0, 100.0);
@@ -87,7 +87,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
     frame.now_ns = now;
     frame.patient.t_arrival_ns = now;  // a new tracker reading every frame
     frame.breath.t_s = seconds_between(t0, now);
-    publisher.on_frame(frame);
+    if (publisher) publisher->on_frame(frame);
     sim::BreathingSample b = breathing.at(now);
     drivers::PoseSample p = poses.latest(drivers::Role::Patient, now);
     drivers::PoseSample h = poses.predicted(drivers::Role::Head, now, 0);
@@ -99,6 +99,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   ASSERT_EQ(learner->state(), SyncState::InSync);
+  EXPECT_STREQ(poses.state(), "streaming");  // the own tracker's state again
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
 
   const long before = lungar::testing::g_thread_allocations;
@@ -121,4 +122,16 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   const Eigen::Isometry3d lung = lung_to_world(pose_isometry(patient), registration);
   EXPECT_TRUE(Eigen::Quaterniond(lung.rotation()).isApprox(frame.lung_in_world, 1e-9));
   EXPECT_TRUE(lung.translation().isApprox(frame.lung_origin_mm, 1e-9));
+
+  // The instructor goes away: the status line says so, and the trainee breathes on on the shared time base.
+  publisher.reset();
+  teacher.reset();
+  const std::int64_t gone = monotonic_ns();
+  while (!learner->lost() && monotonic_ns() < gone + 5'000'000'000) {
+    one_frame(monotonic_ns());
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_STREQ(poses.state(), "sync lost");
+  now = monotonic_ns();
+  EXPECT_NEAR(breathing.at(now).t_s, seconds_between(t0, now), 0.005);
 }

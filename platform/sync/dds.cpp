@@ -110,6 +110,16 @@ Status WaitSet::attach_reader(dds_entity_t reader) {
   return ok();
 }
 
+Status WaitSet::attach_publication_matched(dds_entity_t writer) {
+  if (const dds_return_t rc = dds_set_status_mask(writer, DDS_PUBLICATION_MATCHED_STATUS); rc < 0) {
+    return fail(describe("dds_set_status_mask", rc));
+  }
+  if (const dds_return_t rc = dds_waitset_attach(waitset_.get(), writer, 0); rc < 0) {
+    return fail(describe("dds_waitset_attach", rc));
+  }
+  return ok();
+}
+
 bool WaitSet::wait(std::int64_t timeout_ns) {
   const dds_return_t rc = dds_waitset_wait(waitset_.get(), nullptr, 0, timeout_ns);
   bool triggered = false;

@@ -186,6 +186,8 @@ class WaitSet {
   static Result<WaitSet> create(dds_entity_t participant);
   /// Wakes the waitset when `reader` has unread data.
   Status attach_reader(dds_entity_t reader);
+  /// Wakes the waitset when a reader matches or unmatches `writer` (reading the status clears it).
+  Status attach_publication_matched(dds_entity_t writer);
   /// Wakes the waitset from another thread (no allocation): see trigger().
   dds_entity_t guard() const { return guard_.get(); }
   /// Triggers the guard condition; safe from any thread.

@@ -77,29 +77,42 @@ Status Instructor::open_writers() {
   auto request = link_->reader<lungar_sync_TimeRequest>();
   if (!request) return Error{request.error()};
   request_reader_.emplace(request.take());
+  for (dds_entity_t durable : {breathing_writer_->get(), events_writer_->get()}) {
+    if (Status s = link_->waitset().attach_publication_matched(durable); !s) return s;
+  }
   return link_->waitset().attach_reader(request_reader_->get());
 }
 
 Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
                                    std::int64_t t0_mono_ns) {
   const std::int64_t time_base = link_->clock().from_monotonic(t0_mono_ns);
-  lungar_sync_BreathingState state{};
-  state.session = link_->session();
-  std::strncpy(state.station, link_->name().c_str(), sizeof state.station - 1);
-  state.time_base_ns = time_base;
-  state.revision = 1;
-  to_wire(start, state);
-  std::vector<lungar_sync_ScenarioEvent> storage;
-  lungar_sync_ScenarioEvents list{};
-  list.session = link_->session();
-  list.revision = 1;
-  if (Status s = to_wire(events, storage, list); !s) return s;
+  state_.session = link_->session();
+  std::strncpy(state_.station, link_->name().c_str(), sizeof state_.station - 1);
+  state_.time_base_ns = time_base;
+  state_.revision = 1;
+  to_wire(start, state_);
+  events_.session = link_->session();
+  events_.revision = 1;
+  if (Status s = to_wire(events, event_storage_, events_); !s) return s;
   const std::int64_t now = link_->clock().now_ns();
-  if (Status s = events_writer_->write(list, now); !s) return fail("sync: " + s.error());
-  if (Status s = breathing_writer_->write(state, now); !s) return fail("sync: " + s.error());
+  if (Status s = events_writer_->write(events_, now); !s) return fail("sync: " + s.error());
+  if (Status s = breathing_writer_->write(state_, now); !s) return fail("sync: " + s.error());
   time_base_ns_.store(time_base);
-  shared_.store(true);
+  shared_.store(true);  // from here on the sync thread owns state_ and events_
+  link_->waitset().trigger();
   return ok();
+}
+
+void Instructor::push_to_new_readers() {
+  const int state_readers = breathing_writer_->matched();  // reading the status clears the waitset's trigger
+  const int event_readers = events_writer_->matched();
+  if (shared_.load() && (state_readers > state_readers_ || event_readers > event_readers_)) {
+    const std::int64_t now = link_->clock().now_ns();
+    (void)events_writer_->write(events_, now);  // reliable: a failure here is Cyclone's to retry
+    (void)breathing_writer_->write(state_, now);
+  }
+  state_readers_ = state_readers;
+  event_readers_ = event_readers;
 }
 
 void Instructor::publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
@@ -125,6 +138,7 @@ void Instructor::run() {
     link_->waitset().wait(next_heartbeat - lungar::monotonic_ns());
     if (link_->poll_roster() > 0) check_roster();
     answer_requests();
+    push_to_new_readers();
     send_pose();
   }
 }

@@ -72,6 +72,9 @@ class Instructor {
   void send_heartbeat();
   void answer_requests();
   void check_roster();
+  /// Writes the breathing state and events again when a new reader matched: it gets them at once, instead of
+  /// on the reliable protocol's next heartbeat (about 100 ms later).
+  void push_to_new_readers();
 
   std::unique_ptr<ClassroomLink> link_;
   std::optional<dds::Writer<lungar_sync_PatientPose>> pose_writer_;
@@ -80,6 +83,11 @@ class Instructor {
   std::optional<dds::Writer<lungar_sync_Heartbeat>> heartbeat_writer_;
   std::optional<dds::Writer<lungar_sync_TimeReply>> reply_writer_;
   std::optional<dds::Reader<lungar_sync_TimeRequest>> request_reader_;
+
+  lungar_sync_BreathingState state_{};                 ///< the shared state, as last written
+  lungar_sync_ScenarioEvents events_{};                ///< points into event_storage_
+  std::vector<lungar_sync_ScenarioEvent> event_storage_;
+  int state_readers_ = 0, event_readers_ = 0;          ///< sync thread: matched readers at the last look
 
   drivers::LatestMailbox<PoseMsg> pose_box_;
   drivers::LatestMailbox<BreathMsg> breath_box_;

@@ -13,11 +13,6 @@ namespace lungar::platform::sync {
 namespace {
 constexpr std::int64_t kMaxWaitNs = 20'000'000;
 
-std::int64_t realtime_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_REALTIME, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
 }  // namespace
 
 Trainee::Trainee(std::unique_ptr<ClassroomLink> link) : link_(std::move(link)) {
@@ -280,7 +275,7 @@ void Trainee::update_state(std::int64_t now_mono) {
 void Trainee::transition(SyncState to) {
   state_.store(to, std::memory_order_release);
   std::lock_guard lock(report_mutex_);
-  if (transitions_.size() < transitions_.capacity()) transitions_.push_back({to, realtime_ns()});
+  if (transitions_.size() < transitions_.capacity()) transitions_.push_back({to, StationClock().now_ns()});  // the machine's clock, unskewed
 }
 
 void Trainee::record(LogHistogram& values, double v) {

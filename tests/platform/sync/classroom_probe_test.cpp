@@ -21,18 +21,12 @@
 using namespace lungar;
 using namespace lungar::platform;
 using lungar::testing::StationProcess;
+using lungar::testing::realtime_ns;
+using lungar::testing::sleep_s;
 
 namespace {
 
 const std::string kProbe = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar-sync-probe";
-
-std::int64_t realtime_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_REALTIME, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
-void sleep_s(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 
 class ClassroomProbe : public ::testing::Test {
  protected:

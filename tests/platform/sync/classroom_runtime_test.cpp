@@ -16,6 +16,8 @@
 #include "sync_test_support.h"
 
 using lungar::testing::StationProcess;
+using lungar::testing::realtime_ns;
+using lungar::testing::sleep_s;
 
 namespace {
 
@@ -23,14 +25,6 @@ const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
 const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
 const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
 constexpr double kTrackerPeriodMs = 1000.0 / 62.5;  // the mock tracker's report period
-
-std::int64_t realtime_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_REALTIME, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
-
-void sleep_s(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 
 /// The "N ms" of the first "sync: in step with instructor 'NAME' N ms after joining" line of a log.
 double first_join_ms(const std::string& log, const std::string& instructor) {

@@ -155,6 +155,7 @@ void Trainee::take_heartbeats(std::int64_t now_mono) {
         continue;
       }
       hear(hb.session, now_mono);
+      provisional_offset(infos[i].source_timestamp, link_->clock().now_ns());
       heartbeats_.fetch_add(1, std::memory_order_relaxed);
       if (hb.session == installed_session_ && state() == SyncState::InSync) compare_breath(hb);
     }
@@ -186,6 +187,7 @@ void Trainee::take_poses() {
         continue;
       }
       hear(samples[i].session, arrival);
+      provisional_offset(infos[i].source_timestamp, here_ns);
       drivers::PoseSample p;
       p.role = drivers::Role::Patient;
       p.flags = drivers::kPoseValid;
@@ -214,8 +216,19 @@ void Trainee::hear(std::uint64_t session, std::int64_t now_mono) {
     if (join_mono_ == 0) join_mono_ = now_mono;
     std::lock_guard lock(report_mutex_);
     estimate_.reset();
+    provisional_ = false;
   }
   last_heard_mono_ = now_mono;
+}
+
+void Trainee::provisional_offset(std::int64_t source_ns, std::int64_t here_ns) {
+  if (estimate_ && !provisional_) return;
+  const std::int64_t candidate = source_ns - here_ns;  // offset - delay: the largest has the least delay
+  if (estimate_ && candidate <= estimate_->offset_ns) return;
+  breathing_.update_offset(candidate);
+  std::lock_guard lock(report_mutex_);
+  estimate_ = ClockEstimate{candidate, 0, 0.0, 0};
+  provisional_ = true;
 }
 
 void Trainee::take_replies() {
@@ -232,6 +245,7 @@ void Trainee::take_replies() {
       breathing_.update_offset(e->offset_ns);
       std::lock_guard lock(report_mutex_);
       estimate_ = e;
+      provisional_ = false;
     }
   }
 }
@@ -251,10 +265,9 @@ void Trainee::update_state(std::int64_t now_mono) {
     char line[240];
     const double join_ms = join_mono_ != 0 ? static_cast<double>(now_mono - join_mono_) * 1e-6 : -1.0;
     std::snprintf(line, sizeof line,
-                  "sync: in step with instructor '%s' %.1f ms after joining (clock offset %.3f ms, spread %.3f ms, "
-                  "round trip %.3f ms)",
+                  "sync: in step with instructor '%s' %.1f ms after joining (clock offset %.3f ms, %s)",
                   instructor_.c_str(), join_ms, static_cast<double>(estimate_->offset_ns) * 1e-6,
-                  estimate_->spread_ns * 1e-6, static_cast<double>(estimate_->delay_ns) * 1e-6);
+                  provisional_ ? "one-way until the first clock exchange" : "from a clock exchange");
     link_->log(line);
     {
       std::lock_guard lock(report_mutex_);

@@ -79,6 +79,10 @@ class Trainee {
   void take_replies();
   /// A sample from instructor `session` arrived: it is alive; a new session restarts the clock estimate.
   void hear(std::uint64_t session, std::int64_t now_mono);
+  /// Until the first clock exchange, a one-way estimate from a sample's source timestamp: the instructor's clock
+  /// minus this one at its receipt is the offset less the path's delay (a fraction of a millisecond on a LAN),
+  /// so a joining trainee is in step on its first heartbeat or pose; the exchanges refine it smoothly.
+  void provisional_offset(std::int64_t source_ns, std::int64_t here_ns);
   void request_time(std::int64_t now_mono);
   void update_state(std::int64_t now_mono);
   void transition(SyncState to);
@@ -118,6 +122,7 @@ class Trainee {
   std::string instructor_;
   std::array<double, 4> last_orientation_{1, 0, 0, 0};
   std::optional<ClockEstimate> estimate_;
+  bool provisional_ = false;  ///< estimate_ is one-way, not yet from an exchange
   double join_to_in_sync_ms_ = -1;
   LogHistogram breath_offset_ms_;  ///< magnitudes: constant memory over a teaching day
   LogHistogram pose_age_ms_;

@@ -80,8 +80,8 @@ TEST_F(ClassroomRuntime, ThreeTraineesFollowTheInstructorsTurnAndBreath) {
                                  "[registration]\nrotation_wxyz = [0.9659258, 0.0, 0.2588190, 0.0]\n"
                                  "translation_mm = [10.0, -20.0, 5.0]\n[sync]\ncyclonedds_xml = \""
                               << lungar::testing::kLoopbackXml << "\"\n";
-  auto instructor = start("instructor", "instructor", 9.5);
-  sleep_s(0.3);
+  auto instructor = start("instructor", "instructor", 11.5);  // it outlives the trainees: they end in step
+  ASSERT_TRUE(instructor->wait_for("running", 30)) << instructor->err();  // its turn starts 1 s from here
   config = trainee_toml;
   auto t1 = start("trainee-1", "trainee", 8.5);
   auto t2 = start("trainee-2", "trainee", 8.5, {"--sync-clock-skew-ms", "250"});  // a PC whose clock is off
@@ -118,13 +118,14 @@ TEST_F(ClassroomRuntime, ThreeTraineesFollowTheInstructorsTurnAndBreath) {
 
 TEST_F(ClassroomRuntime, KillingTheInstructorIsLostWithin500msAndARestartBringsItBack) {
   auto instructor = start("instructor", "instructor", 30);
-  sleep_s(0.3);
-  auto trainee = start("trainee", "trainee", 7.0);
-  sleep_s(3.0);
+  ASSERT_TRUE(instructor->wait_for("running", 30)) << instructor->err();
+  auto trainee = start("trainee", "trainee", 10.0);
+  ASSERT_TRUE(trainee->wait_for("sync: in step with instructor 'instructor'", 30)) << trainee->err();
+  sleep_s(0.5);
   const std::int64_t killed = realtime_ns();
   instructor->kill_now();
   sleep_s(1.0);
-  auto again = start("instructor-again", "instructor", 5);
+  auto again = start("instructor-again", "instructor", 30);  // still there when the trainee ends
   ASSERT_EQ(trainee->wait(60), 0) << trainee->err();
   const auto t = stats("trainee");
   const std::int64_t lost = transition_after(t, "lost", killed);
@@ -139,7 +140,7 @@ TEST_F(ClassroomRuntime, KillingTheInstructorIsLostWithin500msAndARestartBringsI
 
 TEST_F(ClassroomRuntime, ASecondInstructorIsRefusedAndTwoClassroomsOnOneDomainAreApart) {
   auto first = start("first", "instructor", 7);
-  sleep_s(1.5);
+  ASSERT_TRUE(first->wait_for("running", 30)) << first->err();
   auto second = start("second", "instructor", 3);
   EXPECT_EQ(second->wait(30), 1);
   const std::string err = second->err();

@@ -53,6 +53,15 @@ int StationProcess::wait(double timeout_s) {
   return -1;
 }
 
+bool StationProcess::wait_for(const std::string& text, double timeout_s) const {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < until) {
+    if (err().find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
 void StationProcess::kill_now() {
   if (pid_ > 0) ::kill(pid_, SIGKILL);
 }

@@ -21,6 +21,9 @@ class StationProcess {
 
   /// Waits at most `timeout_s` for the exit; the exit code, or -1 when it did not end (then it is killed).
   int wait(double timeout_s);
+  /// Waits at most `timeout_s` for `text` on its stderr (a log line): true when it came. Stations start slowly
+  /// under load or a sanitizer, so a test waits for what it needs instead of sleeping a guessed time.
+  bool wait_for(const std::string& text, double timeout_s) const;
   /// SIGKILL now: the station goes away without a word, as a crashed or unplugged PC does.
   void kill_now();
   std::string err() const;

@@ -61,7 +61,7 @@ class ClassroomProbe : public ::testing::Test {
 }  // namespace
 
 TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
-  auto trainee = start("trainee", "victim", 3, report_to("victim"));
+  auto trainee = start("trainee", "victim", 5, report_to("victim"));
   // A rogue instructor made by hand: a NaN pose, a negative breathing rate, a heartbeat with a NaN time.
   auto d = dds::Domain::create(static_cast<std::uint32_t>(std::stoul(domain)), lungar::testing::kLoopbackXml);
   ASSERT_TRUE(d) << d.error();
@@ -89,17 +89,20 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
   state.ventilator_tau_s = 0.5;
   state.time_base_ns = realtime_ns();
   ASSERT_TRUE(state_writer->write(state, realtime_ns()));
-  for (int i = 0; i < 5; ++i) {
+  for (int i = 0; i < 20; ++i) {  // best effort, keep-last 1: not every one need arrive, one must
     ASSERT_TRUE(pose_writer->write(pose, realtime_ns()));
     sleep_s(0.05);
   }
   ASSERT_EQ(trainee->wait(20), 0) << trainee->err();
   const auto r = report("victim");
-  EXPECT_GE(r["sync_malformed"].get<int>(), 6) << r.dump();
+  EXPECT_GE(r["sync_malformed"].get<int>(), 2) << r.dump();  // the state, and at least one pose
   EXPECT_EQ(r["sync_poses"], 0);  // never applied
   EXPECT_EQ(r["sync_state"], "lost");
   EXPECT_EQ(r["sync_instructor"], "");
-  EXPECT_NE(trainee->err().find("rate_bpm: expected [2, 60]"), std::string::npos) << trainee->err();
+  EXPECT_NE(trainee->err().find("lungar_breathing_state: rate_bpm: expected [2, 60]"), std::string::npos)
+      << trainee->err();
+  EXPECT_NE(trainee->err().find("lungar_patient_pose: orientation_wxyz: expected a finite number"), std::string::npos)
+      << trainee->err();
 }
 
 TEST_F(ClassroomProbe, ATraineeNeverPublishesSharedState) {

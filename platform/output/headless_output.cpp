@@ -9,12 +9,12 @@
 namespace lungar::platform {
 
 HeadlessOutput::HeadlessOutput(std::shared_ptr<EglContext> context, const config::HmdSettings& hmd,
-                               render::FrameTarget target)
-    : context_(std::move(context)), target_(std::move(target)),
-      views_(hmd, target_->width(), target_->height()) {}
+                               render::FrameTarget target, double max_fps)
+    : context_(std::move(context)), target_(std::move(target)), views_(hmd, target_->width(), target_->height()),
+      pacer_(max_fps) {}
 
 Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::HmdSettings& hmd,
-                                                               std::shared_ptr<EglContext> context) {
+                                                               std::shared_ptr<EglContext> context, double max_fps) {
   if (!context) {
     auto made = EglContext::headless();
     if (!made) return made.with_context("display: ");
@@ -25,7 +25,7 @@ Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::Hmd
   const auto [w, h] = HmdViews::target_size(hmd);
   auto target = render::FrameTarget::create(w, h);
   if (!target) return target.with_context("display: ");
-  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(std::move(context), hmd, target.take()));
+  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(std::move(context), hmd, target.take(), max_fps));
 }
 
 std::string HeadlessOutput::describe() const {

@@ -21,7 +21,7 @@ Result<std::unique_ptr<FrameOutput>> open_output(const config::Settings& s,
     if (s.display.output != Output::Auto) return window.with_context("");
     log("no window (" + window.error() + "); running headless");
   }
-  auto headless = HeadlessOutput::create(s.hmd);
+  auto headless = HeadlessOutput::create(s.hmd, nullptr, s.display.max_fps);
   if (!headless) return headless.with_context("");
   return std::unique_ptr<FrameOutput>(headless.take());
 }

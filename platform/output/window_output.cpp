@@ -25,7 +25,7 @@ Result<std::unique_ptr<WindowOutput>> WindowOutput::create(const config::Display
     // The field to fix: a named output that is not there, or no window at all.
     return context.with_context(fullscreen && !w.output.empty() ? "display.x11_output: " : "display: ");
   }
-  return std::unique_ptr<WindowOutput>(new WindowOutput(context.take(), hmd));
+  return std::unique_ptr<WindowOutput>(new WindowOutput(context.take(), hmd, d.max_fps));
 }
 
 std::string WindowOutput::describe() const {

@@ -8,6 +8,7 @@
 
 #include "config/settings.h"
 #include "platform/egl/egl_context.h"
+#include "platform/output/frame_pacer.h"
 #include "platform/output/hmd_views.h"
 #include "platform/runtime/frame_output.h"
 
@@ -21,7 +22,10 @@ class WindowOutput final : public FrameOutput {
 
   std::string describe() const override;
   bool poll_events() override { return context_->process_events(); }
-  Result<FrameTiming> begin_frame(std::int64_t) override { return FrameTiming{}; }
+  Result<FrameTiming> begin_frame(std::int64_t now_ns) override {
+    pacer_.wait(now_ns);  // on top of the swap interval, when display.max_fps asks for less
+    return FrameTiming{};
+  }
   const FrameViews& views(const glm::mat4& head_to_world) override { return views_.views(head_to_world); }
   void bind_target(std::size_t) override;
   std::array<int, 2> target_size() const override { return {context_->width(), context_->height()}; }
@@ -29,10 +33,11 @@ class WindowOutput final : public FrameOutput {
   Status snapshot(const std::string& png_path) override;
 
  private:
-  WindowOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd)
-      : context_(std::move(context)), views_(hmd, context_->width(), context_->height()) {}
+  WindowOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd, double max_fps)
+      : context_(std::move(context)), views_(hmd, context_->width(), context_->height()), pacer_(max_fps) {}
   std::unique_ptr<EglContext> context_;
   HmdViews views_;
+  FramePacer pacer_;
 };
 
 }  // namespace lungar::platform

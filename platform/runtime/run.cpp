@@ -2,10 +2,8 @@
 /// @brief Wiring a Runtime from the settings, the frame loop's limits, and the outputs of a run.
 #include "platform/runtime/run.h"
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
-#include <thread>
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
@@ -94,21 +92,10 @@ void log_limit(const RuntimeOptions& o, double limit_s) {
   log_line(std::string("running ") + limit + " (Ctrl-C stops)");
 }
 
-/// Sleeps until `next` + `period_ns` (display.max_fps), or not at all when late or unpaced; the next deadline.
-std::int64_t pace(std::int64_t next, std::int64_t period_ns) {
-  if (period_ns == 0) return next;
-  next += period_ns;
-  const std::int64_t now = monotonic_ns();
-  if (next <= now) return now;
-  std::this_thread::sleep_for(std::chrono::nanoseconds(next - now));
-  return next;
-}
-
 /// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
 Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                  const sync::ClassroomStation& classroom, double max_fps) {
-  const std::int64_t period_ns = max_fps > 0 ? static_cast<std::int64_t>(1e9 / max_fps) : 0;
-  for (std::int64_t next = monotonic_ns(); !g_stop_requested.load(); next = pace(next, period_ns)) {
+                  const sync::ClassroomStation& classroom) {
+  while (!g_stop_requested.load()) {
     if (const std::string refused = classroom.fatal_error(); !refused.empty()) return fail(refused);
     if (o.frames && runtime.frames() >= *o.frames) break;
     if (limit_s > 0 && seconds_between(t0, monotonic_ns()) >= limit_s) break;
@@ -169,7 +156,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
     return 1;
   }
   log_limit(o, limit_s);
-  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom, s.display.max_fps);
+  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
   if (!frames) log_line("error: " + frames.error());
   return write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
 }

@@ -1,13 +1,15 @@
 /// @file lungar_main.cpp
-/// @brief The `lungar` entry point: the runtime (no arguments: the demo) and `lungar calibrate`.
+/// @brief The `lungar` entry point: the runtime (no arguments: the demo), `lungar calibrate` and `lungar doctor`.
 #include <csignal>
 #include <cstdio>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "config/settings_load.h"
+#include "config/base/log_line.h"
+#include "config/config_paths.h"
 #include "lungar/version.h"
+#include "platform/doctor/doctor.h"
 #include "platform/registration/calibrate_command.h"
 #include "platform/runtime/run.h"
 
@@ -23,10 +25,11 @@ int main(int argc, char** argv) {
       "lungar: breathing 3-D lungs superimposed on a patient simulator, for a head-mounted display.\n"
       "With no arguments it runs the demo: the procedural lungs, the mock tracker turning the patient from upright "
       "to supine, normal breathing, for 10 s; in a window when DISPLAY is set, headless otherwise; then a snapshot "
-      "(out/snapshot.png), stats (out/stats.json) and a summary."};
+      "and stats in $XDG_STATE_HOME/lungar/ (~/.local/state/lungar/) and a summary."};
   app.set_version_flag("--version", std::string("lungar ") + LUNGAR_VERSION);
   RuntimeOptions o;
   lungar::platform::add_runtime_options(app, o);
+  CLI::App* doctor = app.add_subcommand("doctor", "check this machine's set-up, one line each with the fix")->fallthrough();
 
   lungar::platform::CalibrateOptions c;
   CLI::App* calibrate = app.add_subcommand(
@@ -44,16 +47,19 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   if (*calibrate) return lungar::platform::run_calibrate(c);
+  if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);
 
-  lungar::config::Settings settings;
-  if (!o.config_path.empty()) {
-    auto loaded = lungar::config::load_settings(o.config_path);
-    if (!loaded) {
-      std::fprintf(stderr, "lungar: %s\n", loaded.error().c_str());
-      return 2;
-    }
-    settings = *loaded;
+  const auto dirs = lungar::config::XdgDirs::from_environment();
+  const auto chosen = lungar::config::choose_config(o.config_path, dirs);
+  auto loaded = lungar::config::load_chosen_settings(chosen);
+  if (!loaded) {
+    std::fprintf(stderr, "lungar: %s\n", loaded.error().c_str());
+    return 2;
   }
+  lungar::log_line("lungar", chosen.describe());
+  lungar::config::Settings settings = loaded.take();
+  o.record_requested = app.get_option("--record")->count() > 0;
+  lungar::platform::default_output_paths(o, lungar::config::state_dir(dirs));
   if (const lungar::Status applied = lungar::platform::apply_overrides(o, settings); !applied) {
     std::fprintf(stderr, "lungar: %s\n", applied.error().c_str());
     return 2;

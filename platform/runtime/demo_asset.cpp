@@ -3,27 +3,16 @@
 #include "platform/runtime/demo_asset.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
+#include "config/config_paths.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
 
 namespace lungar::platform {
 
-namespace {
-
-std::string default_cache_dir() {
-  if (const char* d = std::getenv("LUNGAR_CACHE_DIR"); d && *d) return d;
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::string(d) + "/lungar";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/lungar";
-  return (std::filesystem::temp_directory_path() / "lungar-cache").string();
-}
-
-}  // namespace
-
 std::string demo_asset_path(const DemoAssetOptions& o) {
-  const std::string dir = o.cache_dir.empty() ? default_cache_dir() : o.cache_dir;
+  const std::string dir = o.cache_dir.empty() ? config::cache_dir(config::XdgDirs::from_environment()) : o.cache_dir;
   char name[160];
   std::snprintf(name, sizeof name, "procedural-n%u-s%llu-L%u%s-v%u-b%u.lungbake", o.nodes,
                 static_cast<unsigned long long>(o.seed), o.bands, o.transfer_rows ? "-rows" : "",

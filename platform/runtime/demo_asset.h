@@ -16,7 +16,7 @@ struct DemoAssetOptions {
   std::uint64_t seed = 1;
   std::uint32_t bands = 4;
   bool transfer_rows = false;    ///< explicit rows for --deform cpu1 (a larger bake and file)
-  std::string cache_dir;         ///< empty: $LUNGAR_CACHE_DIR, else $XDG_CACHE_HOME/lungar, else ~/.cache/lungar
+  std::string cache_dir;         ///< empty: config::cache_dir() ($LUNGAR_CACHE_DIR, $XDG_CACHE_HOME/lungar, ~/.cache/lungar)
 };
 
 /// Where the cached procedural asset for `o` lives.

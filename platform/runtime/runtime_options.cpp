@@ -2,9 +2,13 @@
 /// @brief Command-line options and their overrides on top of the config file.
 #include "platform/runtime/runtime_options.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "config/base/clock.h"
 
 namespace lungar::platform {
 
@@ -45,12 +49,15 @@ Status override_tracker(const std::string& tracker, config::TrackerSettings& t) 
 }  // namespace
 
 void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
-  app.add_option("--config", o.config_path, "settings TOML (default: built-in defaults; see config/default.toml)");
+  app.add_option("--config", o.config_path,
+                 "settings TOML (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, else "
+                 "built-in; every key: default.toml)");
   app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached demo lungs)");
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
   app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
+  app.add_flag("--fullscreen", o.fullscreen, "full screen on display.x11_output (the HMD), as the user unit runs it");
   app.add_option("--frames", o.frames, "stop after N frames");
   app.add_option("--seconds", o.seconds, "stop after S seconds (default 10 unless --frames; 0: until stopped)");
   app.add_option("--view", o.view, "mono | stereo (default: from the config)")
@@ -59,9 +66,11 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--deform", o.deform,
                  "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (the rest shape)")
       ->check(CLI::IsMember(names_of(config::kDeformNames)));
-  app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default out/snapshot.png)");
-  app.add_option("--stats-json", o.stats_json_path, "stats JSON (default out/stats.json)");
-  app.add_option("--record", o.record_path, "record the raw tracker reports into FILE.trk");
+  app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default $XDG_STATE_HOME/lungar/snapshot.png)");
+  app.add_option("--stats-json", o.stats_json_path, "stats JSON (default $XDG_STATE_HOME/lungar/stats.json)");
+  app.add_option("--record", o.record_path,
+                 "record the raw tracker reports into FILE.trk (no FILE: into $XDG_STATE_HOME/lungar/recordings/)")
+      ->expected(0, 1);
   app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
       ->check(CLI::IsMember(names_of(config::kSyncRoleNames)));
   app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
@@ -73,6 +82,7 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
 Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
+  if (o.fullscreen) s.display.output = config::Output::Fullscreen;
   if (o.headless) s.display.output = config::Output::Headless;
   if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
   if (Status v = override_choice("--view", o.view, config::kViewNames, s.hmd.view); !v) return v;
@@ -94,6 +104,18 @@ Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   }
   if (!o.station.empty()) s.sync.station = o.station;
   return ok();
+}
+
+void default_output_paths(RuntimeOptions& o, const std::string& state_dir) {
+  if (o.snapshot_path.empty()) o.snapshot_path = state_dir + "/snapshot.png";
+  if (o.stats_json_path.empty()) o.stats_json_path = state_dir + "/stats.json";
+  if (o.record_requested && o.record_path.empty()) {
+    std::string stamp = utc_timestamp();
+    std::replace(stamp.begin(), stamp.end(), ':', '-');  // no colons: they trouble scp and other tools
+    std::error_code ec;
+    std::filesystem::create_directories(state_dir + "/recordings", ec);  // the .trk writer makes no folders
+    o.record_path = state_dir + "/recordings/" + stamp + ".trk";
+  }
 }
 
 }  // namespace lungar::platform

@@ -19,6 +19,7 @@ struct RuntimeOptions {
   std::string scenario_path;      ///< breathing/orientation scenario TOML
   std::string tracker;            ///< "mock" | "hid" | "replay:FILE"; empty: from the config
   bool headless = false;
+  bool fullscreen = false;        ///< display.output = "fullscreen" (the user unit's way to cover the HMD output)
   std::optional<long> frames;     ///< stop after this many frames
   std::optional<double> seconds;  ///< stop after this much time
   std::string view;               ///< a name of config::kViewNames; empty: from the config
@@ -32,6 +33,7 @@ struct RuntimeOptions {
   std::optional<int> sync_domain; ///< the DDS domain id
   std::string station;            ///< this station's name in the classroom
   double sync_clock_skew_ms = 0;  ///< tests: pretend this station's clock is off by this much
+  bool record_requested = false;  ///< --record given, with or without a file
 };
 
 /// Adds the run options to `app`; names of enumerations are checked against config's tables.
@@ -39,5 +41,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o);
 
 /// Applies the command-line overrides to `s`; an error names the option ("--tracker: expected ..., got ...").
 Status apply_overrides(const RuntimeOptions& o, config::Settings& s);
+
+/// Outputs given no path go under `state_dir` ($XDG_STATE_HOME/lungar): snapshot.png, stats.json, and
+/// recordings/<UTC time>.trk for a bare --record (whose folder this makes).
+void default_output_paths(RuntimeOptions& o, const std::string& state_dir);
 
 }  // namespace lungar::platform

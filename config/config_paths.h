@@ -1,0 +1,51 @@
+/// @file config_paths.h
+/// @brief Where lungar looks for its settings and puts its files, as a Debian program does (XDG base directories):
+/// `--config` wins, then `$XDG_CONFIG_HOME/lungar/lungar.toml`, then `/etc/lungar/lungar.toml`, then the built-in
+/// defaults; baked assets in `$XDG_CACHE_HOME/lungar/`, snapshots, stats and recordings in `$XDG_STATE_HOME/lungar/`.
+/// @ingroup config
+#pragma once
+
+#include <string>
+
+#include "config/base/result.h"
+#include "config/settings.h"
+
+namespace lungar::config {
+
+/// The folders the lookup depends on, read once from the environment (tests make their own).
+struct XdgDirs {
+  std::string home;           ///< $HOME
+  std::string config_home;    ///< $XDG_CONFIG_HOME as set; empty or relative: unset (the spec ignores relative ones)
+  std::string cache_home;     ///< $XDG_CACHE_HOME
+  std::string state_home;     ///< $XDG_STATE_HOME
+  std::string cache_override; ///< $LUNGAR_CACHE_DIR: the cache folder itself, for tests and CI
+  std::string system_config_dir = "/etc/lungar";
+
+  static XdgDirs from_environment();
+};
+
+/// `$XDG_CONFIG_HOME/lungar/lungar.toml`, or `~/.config/lungar/lungar.toml`.
+std::string user_config_file(const XdgDirs& d);
+/// `/etc/lungar/lungar.toml` (system_config_dir).
+std::string system_config_file(const XdgDirs& d);
+/// `$LUNGAR_CACHE_DIR`, else `$XDG_CACHE_HOME/lungar`, else `~/.cache/lungar`: baked assets.
+std::string cache_dir(const XdgDirs& d);
+/// `$XDG_STATE_HOME/lungar`, else `~/.local/state/lungar`: snapshots, stats, recordings with no path given.
+std::string state_dir(const XdgDirs& d);
+
+/// Which settings file a run uses and why; `path` empty means the built-in defaults.
+struct ConfigChoice {
+  std::string path;
+  std::string reason;  ///< e.g. "--config", "$XDG_CONFIG_HOME", "/etc/lungar", "none of ... exists"
+  /// The start-up log line: "config: /etc/lungar/lungar.toml (no ~/.config/lungar/lungar.toml)".
+  std::string describe() const;
+};
+
+/// `--config` (when not empty) wins even when it does not exist (loading then names it); otherwise the first of the
+/// user's and the system's file that exists; otherwise the defaults.
+ConfigChoice choose_config(const std::string& cli_path, const XdgDirs& d);
+
+/// The chosen file loaded over the defaults (or the defaults); the error names the file, the line and the key.
+Result<Settings> load_chosen_settings(const ConfigChoice& choice);
+
+}  // namespace lungar::config

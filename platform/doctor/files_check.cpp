@@ -40,6 +40,11 @@ std::string asset_summary(const sim::BakedAsset& a) {
 
 Check check_config(const config::ConfigChoice& choice, const Result<config::Settings>& loaded) {
   const std::string where = choice.path.empty() ? "built-in defaults" : choice.path;
+  std::error_code ec;
+  if (!loaded && !fs::exists(choice.path, ec)) {
+    return failed("config", loaded.error(), "give --config an existing file, or none to use " +
+                                                std::string("~/.config/lungar/lungar.toml or /etc/lungar/lungar.toml"));
+  }
   if (!loaded) {
     return failed("config", loaded.error(),
                   "correct that key (every key, its unit and range: /usr/share/lungar/default.toml or "

@@ -1,7 +1,9 @@
 /// @file output_check.cpp
 /// @brief The output check: what display.output needs (an X display, the HMD's X output, an OpenXR runtime).
+#include <chrono>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "platform/doctor/checks.h"
 #include "platform/egl/x11_outputs.h"
@@ -16,6 +18,16 @@ struct DisplayCloser {
   void operator()(Display* d) const { XCloseDisplay(d); }
 };
 using DisplayPtr = std::unique_ptr<Display, DisplayCloser>;
+
+/// XOpenDisplay, tried three times 50 ms apart: Xvfb was seen refusing one connection in a few right after a
+/// client closed its own, and a check should not fail on that.
+DisplayPtr open_display(const std::string& name) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (Display* d = XOpenDisplay(name.c_str())) return DisplayPtr(d);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return nullptr;
+}
 
 const char* const kNoDisplayFix =
     "start lungar from the trainer's desktop session (the user unit does), or export DISPLAY=:0";
@@ -48,7 +60,7 @@ Check check_output(const config::Settings& s, const DoctorEnv& env) {
   }
   const std::string what = std::string("display.output = \"") + config::to_string(out) + "\"";
   if (env.display.empty()) return failed("output", what + " needs an X display, and DISPLAY is not set", kNoDisplayFix);
-  DisplayPtr x(XOpenDisplay(env.display.c_str()));
+  DisplayPtr x = open_display(env.display);
   if (!x) {
     const std::string detail = "cannot open the X display '" + env.display + "'";
     const std::string fix = "run as the user logged in on that display, or allow this user: xhost +SI:localuser:$USER";

@@ -147,7 +147,8 @@ TEST_F(Doctor, FullscreenOnAnOutputTheXServerDoesNotHaveFailsListingTheOnesItHas
   EXPECT_TRUE(contains(c.detail, "NO-SUCH-OUTPUT-9")) << c.detail;
   EXPECT_TRUE(contains(c.fix, "xrandr --output NO-SUCH-OUTPUT-9 --auto")) << c.fix;
   s.display.x11_output.clear();
-  EXPECT_EQ(check_output(s, env).verdict, Verdict::Pass);
+  const Check whole_screen = check_output(s, env);
+  EXPECT_EQ(whole_screen.verdict, Verdict::Pass) << format_check(whole_screen);
 }
 
 TEST_F(Doctor, AssetCheckLoadsTheConfiguredAssetAndNamesABrokenOne) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "config/config_paths.h"
+#include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
 using lungar::config::XdgDirs;
@@ -17,22 +18,17 @@ namespace {
 class ConfigPaths : public ::testing::Test {
  protected:
   void SetUp() override {
-    root = fs::temp_directory_path() / ("lungar_config_paths_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root);
     fs::create_directories(root / "home");
     dirs.home = (root / "home").string();
     dirs.system_config_dir = (root / "etc/lungar").string();
   }
-  void TearDown() override { fs::remove_all(root); }
-
   /// A settings file with one recognisable value.
   static void write_profile(const fs::path& path, double ipd_mm) {
     fs::create_directories(path.parent_path());
     std::ofstream(path) << "[hmd]\nipd_mm = " << ipd_mm << "\n";
   }
 
-  fs::path root;
+  lungar::testing::ScratchDir root{"lungar_config_paths"};
   XdgDirs dirs;
 };
 

@@ -10,6 +10,7 @@
 
 #include "platform/doctor/checks.h"
 #include "platform/doctor/doctor.h"
+#include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
 using namespace lungar::platform::doctor;
@@ -34,8 +35,7 @@ TEST(DoctorGles, ReadsTheVersionsAndNamesSoftwareRenderingAsSuch) {
 }
 
 TEST(DoctorGles, AHeadlessMockSetUpHasNoFailureAndABrokenConfigFailsOnlyItsCheck) {
-  const fs::path root = fs::temp_directory_path() / ("lungar_doctor_all_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const lungar::testing::ScratchDir root("lungar_doctor_all");
   fs::create_directories(root / "home");
   DoctorEnv env;
   env.xdg.home = (root / "home").string();
@@ -52,5 +52,4 @@ TEST(DoctorGles, AHeadlessMockSetUpHasNoFailureAndABrokenConfigFailsOnlyItsCheck
   EXPECT_EQ(checks[0].name, "config");
   EXPECT_EQ(checks[0].verdict, Verdict::Fail) << format_check(checks[0]);
   for (std::size_t k = 1; k < checks.size(); ++k) EXPECT_NE(checks[k].verdict, Verdict::Fail) << format_check(checks[k]);
-  fs::remove_all(root);
 }

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "platform/doctor/checks.h"
+#include "tests/scratch_dir.h"
 #include "umockdev_tracker.h"
 
 namespace fs = std::filesystem;
@@ -57,17 +58,12 @@ class DoctorHid : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!UmockdevTracker::available()) GTEST_SKIP() << "not under umockdev-wrapper";
-    rules = fs::temp_directory_path() / ("lungar_doctor_rules_" + std::to_string(::getpid()));
-    fs::remove_all(rules);
-    fs::create_directories(rules);
-    fs::permissions(rules, fs::perms(0755));
-    env.udev_rule_dirs = {rules.string()};
+    fs::permissions(rules.path(), fs::perms(0755));
+    env.udev_rule_dirs = {rules.path().string()};
     tracker.source = lungar::config::TrackerSource::Hid;
     tracker.hid.vendor_id = 0x1234;
     tracker.hid.product_id = 0x5678;
   }
-  void TearDown() override { fs::remove_all(rules); }
-
   /// Plugs the emulated tracker in and sets its node's mode; the testbed folder is opened to other users so that
   /// only the node's own mode decides.
   void plug_with_mode(fs::perms mode) {
@@ -87,7 +83,7 @@ class DoctorHid : public ::testing::Test {
     ASSERT_EQ(::chmod(node.c_str(), static_cast<mode_t>(mode)), 0) << node;
   }
 
-  fs::path rules;
+  lungar::testing::ScratchDir rules{"lungar_doctor_rules"};
   DoctorEnv env;
   lungar::config::TrackerSettings tracker;
   UmockdevTracker device;

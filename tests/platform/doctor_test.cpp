@@ -12,6 +12,7 @@
 
 #include "config/config_paths.h"
 #include "platform/doctor/checks.h"
+#include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
 using namespace lungar::platform::doctor;
@@ -23,9 +24,6 @@ const std::string kData = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/";
 class Doctor : public ::testing::Test {
  protected:
   void SetUp() override {
-    root = fs::temp_directory_path() / ("lungar_doctor_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root);
     fs::create_directories(root / "home");
     env.xdg.home = (root / "home").string();
     env.xdg.system_config_dir = (root / "etc/lungar").string();
@@ -33,8 +31,6 @@ class Doctor : public ::testing::Test {
     env.sysconf_dir = (root / "etc").string();
     env.display.clear();
   }
-  void TearDown() override { fs::remove_all(root); }
-
   /// A runtime manifest at `path` naming `library` (written relative or absolute as given).
   static void write_manifest(const fs::path& path, const std::string& name, const std::string& library) {
     fs::create_directories(path.parent_path());
@@ -48,7 +44,7 @@ class Doctor : public ::testing::Test {
     return lib;
   }
 
-  fs::path root;
+  lungar::testing::ScratchDir root{"lungar_doctor"};
   DoctorEnv env;
 };
 

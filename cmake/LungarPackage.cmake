@@ -7,13 +7,17 @@ set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "the lungar developers")
 set(CPACK_PACKAGE_CONTACT "lungar developers <lungar@example.org>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "breathing 3-D lungs on a patient simulator, for a head-mounted display")
+# Wrapped below 80 columns, as Debian's control files want.
 set(CPACK_PACKAGE_DESCRIPTION
-  "lungar superimposes breathing 3-D lungs on a human patient simulator seen through a head-mounted display. It
-reads head and patient-tracker poses over USB HID, turns the patient's orientation into the applied force in
-spherical-harmonic form, and deforms the lung surface in the vertex shader (Santhanam, Hamza-Lup and Rolland,
-IEEE TITB 2007), for stereo point rendering on OpenGL ES 3.0 through EGL.
-This package holds the runtime (lungar, with lungar doctor), the offline baker (lungar-bake), the tracker-log
-tool (lungar-trk), the profiles and teaching scenarios, the tracker udev rules and a systemd user unit.")
+  "lungar superimposes breathing 3-D lungs on a human patient simulator seen
+through a head-mounted display. It reads head and patient-tracker poses over
+USB HID, turns the patient's orientation into the applied force in
+spherical-harmonic form, and deforms the lung surface in the vertex shader
+(Santhanam, Hamza-Lup and Rolland, IEEE TITB 2007), for stereo point rendering
+on OpenGL ES 3.0 through EGL.
+This package holds the runtime (lungar, with lungar doctor), the offline baker
+(lungar-bake), the tracker-log tool (lungar-trk), the profiles and teaching
+scenarios, the tracker udev rules and a systemd user unit.")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)                 # lungar_VERSION_ARCH.deb

@@ -57,7 +57,7 @@ Check check_asset(const config::Settings& s, const DoctorEnv& env) {
   if (!s.sim.asset.empty()) {
     auto asset = sim::load_asset(s.sim.asset);
     if (!asset) {
-      return failed("asset", "sim.asset: " + asset.error,
+      return failed("asset", "sim.asset: " + asset.error(),
                     "bake it again (lungar-bake --mesh LUNG.stl --units mm --out " + s.sim.asset +
                         "), or empty sim.asset to use the demo lungs");
     }
@@ -70,7 +70,7 @@ Check check_asset(const config::Settings& s, const DoctorEnv& env) {
   if (fs::exists(cached, ec)) {
     auto asset = sim::load_asset(cached);
     if (!asset) {
-      return warned("asset", "the cached demo asset is unusable (" + asset.error + "); the next run bakes it again",
+      return warned("asset", "the cached demo asset is unusable (" + asset.error() + "); the next run bakes it again",
                     "nothing to do, or rm " + cached);
     }
     return passed("asset", "demo lungs cached at " + cached + ": " + asset_summary(*asset));

@@ -119,6 +119,7 @@ ContextResult EglContext::headless() {
     return fail(egl_error("eglChooseConfig(OpenGL ES 3)"));
   }
   c->context_ = create_es3_context(display, config);
+  c->config_ = config;
   if (c->context_ == EGL_NO_CONTEXT) return fail(egl_error("eglCreateContext(OpenGL ES 3.0)"));
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context_)) {
     return fail(egl_error("eglMakeCurrent(surfaceless)"));
@@ -180,6 +181,7 @@ ContextResult EglContext::window(const WindowOptions& options) {
   c->surface_ = eglCreatePlatformWindowSurface(display, config, &native, nullptr);
   if (c->surface_ == EGL_NO_SURFACE) return fail(egl_error("eglCreatePlatformWindowSurface(X11)"));
   c->context_ = create_es3_context(display, config);
+  c->config_ = config;
   if (c->context_ == EGL_NO_CONTEXT) return fail(egl_error("eglCreateContext(OpenGL ES 3.0)"));
   if (!eglMakeCurrent(display, c->surface_, c->surface_, c->context_)) {
     return fail(egl_error("eglMakeCurrent(window)"));

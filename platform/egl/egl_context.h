@@ -48,11 +48,16 @@ class EglContext {
   bool process_events();
   /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.
   std::string describe() const;
+  /// The EGLDisplay, EGLConfig and EGLContext, for a runtime that takes the context (OpenXR's XR_MNDX_egl_enable).
+  void* egl_display() const { return display_; }
+  void* egl_config() const { return config_; }
+  void* egl_context() const { return context_; }
 
  private:
   EglContext() = default;
   void* display_ = nullptr;    // EGLDisplay
   void* context_ = nullptr;    // EGLContext
+  void* config_ = nullptr;     // EGLConfig the context was made with
   void* surface_ = nullptr;    // EGLSurface (window only)
   void* x_display_ = nullptr;  // Display*
   unsigned long window_ = 0;   // Window

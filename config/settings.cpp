@@ -10,7 +10,9 @@ namespace lungar::config {
 
 std::string summarize(const Settings& s) {
   std::ostringstream o;
-  o << "config " << s.source << ": output " << to_string(s.display.output) << ", view " << to_string(s.hmd.view)
+  o << "config " << s.source << ": output " << to_string(s.display.output)
+    << (s.display.output == Output::OpenXr ? std::string(" (head ") + to_string(s.display.openxr.head) + ")" : "")
+    << ", view " << to_string(s.hmd.view)
     << " (" << s.hmd.eye_width_px << "x" << s.hmd.eye_height_px << " per eye, IPD " << s.hmd.ipd_mm << " mm)"
     << ", " << to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
     << to_string(s.render.deform) << ", breathing " << s.breathing.preset << " " << s.breathing.rate_bpm

@@ -17,7 +17,11 @@
 namespace lungar::config {
 
 /// Where frames go.
-enum class Output { Auto, Window, Fullscreen, Headless };
+enum class Output { Auto, Window, Fullscreen, Headless, OpenXr };
+/// With Output::OpenXr: whose head pose places the eyes (the runtime's tracking, or lungar's head tracker).
+enum class XrHead { OpenXr, Tracker };
+/// The OpenXR reference space the runtime's poses are located in.
+enum class XrSpace { Local, Stage };
 enum class View { Mono, Stereo };
 enum class RenderMode { Points, Mesh };
 /// Where the deformation is evaluated: the vertex shader (eq. 7), or the CPU by eq. (7) or eq. (1); or None,
@@ -29,6 +33,12 @@ enum class TrackerSource { Mock, Hid, Replay };
 /// Orientation -> force SH: exact linear combination of baked vectors, or the paper's eq. (8)-(9).
 enum class OrientationMode { Exact, PaperInterp };
 
+/// [display.openxr]: the OpenXR output (an HMD through its OpenXR runtime).
+struct OpenXrSettings {
+  XrHead head = XrHead::OpenXr;
+  XrSpace reference_space = XrSpace::Local;
+};
+
 struct DisplaySettings {
   Output output = Output::Auto;
   int width_px = 1280;        ///< window or full-screen size
@@ -38,6 +48,7 @@ struct DisplaySettings {
   std::string x11_output;     ///< with Output::Fullscreen: the X output (RandR monitor) to cover; empty: x, y, size
   bool vsync = true;
   double max_fps = 0.0;       ///< frames per second at most (0: as fast as the output allows); a headless station
+  OpenXrSettings openxr;
 };
 
 struct LensSettings {
@@ -156,6 +167,11 @@ struct TrackerSettings {
 struct RegistrationSettings {
   std::array<double, 3> translation_mm = {0.0, 0.0, 0.0};        ///< lung model -> patient tracker
   std::array<double, 4> rotation_wxyz = {1.0, 0.0, 0.0, 0.0};    ///< unit quaternion, model -> tracker
+  /// The OpenXR reference space's pose in the tracker world (the runtime's tracking -> the trackers'), with
+  /// display.openxr.head = "openxr". Default: LOCAL's origin (the head where the session started) at the default
+  /// viewer's eyes, 0.8 m in front of the patient and looking at it, as the window output's default view.
+  std::array<double, 3> xr_space_translation_mm = {0.0, -801.1, 1267.2};
+  std::array<double, 4> xr_space_rotation_wxyz = {0.83485, 0.55048, 0.0, 0.0};
 };
 
 /// A classroom station's part (platform/sync): alone, the instructor, or a trainee.
@@ -202,10 +218,13 @@ struct SignedAxis {
 std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, std::string_view letters);
 
 /// The names of each enumeration as TOML, the command line and logs spell them: one table each.
-inline constexpr EnumNames<Output, 4> kOutputNames{{{{Output::Auto, "auto"},
+inline constexpr EnumNames<Output, 5> kOutputNames{{{{Output::Auto, "auto"},
                                                       {Output::Window, "window"},
                                                       {Output::Fullscreen, "fullscreen"},
-                                                      {Output::Headless, "headless"}}}};
+                                                      {Output::Headless, "headless"},
+                                                      {Output::OpenXr, "openxr"}}}};
+inline constexpr EnumNames<XrHead, 2> kXrHeadNames{{{{XrHead::OpenXr, "openxr"}, {XrHead::Tracker, "tracker"}}}};
+inline constexpr EnumNames<XrSpace, 2> kXrSpaceNames{{{{XrSpace::Local, "local"}, {XrSpace::Stage, "stage"}}}};
 inline constexpr EnumNames<View, 2> kViewNames{{{{View::Mono, "mono"}, {View::Stereo, "stereo"}}}};
 inline constexpr EnumNames<RenderMode, 2> kRenderModeNames{{{{RenderMode::Points, "points"}, {RenderMode::Mesh, "mesh"}}}};
 inline constexpr EnumNames<Deform, 4> kDeformNames{
@@ -226,6 +245,8 @@ inline constexpr EnumNames<OrientationKind, 2> kOrientationKindNames{
     {{{OrientationKind::Quaternion, "quaternion"}, {OrientationKind::Euler, "euler"}}}};
 
 inline const char* to_string(Output v) { return kOutputNames.name(v); }
+inline const char* to_string(XrHead v) { return kXrHeadNames.name(v); }
+inline const char* to_string(XrSpace v) { return kXrSpaceNames.name(v); }
 inline const char* to_string(View v) { return kViewNames.name(v); }
 inline const char* to_string(RenderMode v) { return kRenderModeNames.name(v); }
 inline const char* to_string(Deform v) { return kDeformNames.name(v); }

@@ -23,6 +23,10 @@ void read_display(TomlSection s, DisplaySettings& d) {
   s.text("x11_output", d.x11_output);
   s.boolean("vsync", d.vsync);
   s.number("max_fps", d.max_fps, 0.0, 1000.0, "frames/s");
+  TomlSection xr = s.section("openxr");
+  xr.choice("head", d.openxr.head, kXrHeadNames);
+  xr.choice("reference_space", d.openxr.reference_space, kXrSpaceNames);
+  xr.finish();
   s.finish();
 }
 
@@ -222,14 +226,21 @@ void read_trackers(TomlSection s, TrackerSettings& t) {
   s.finish();
 }
 
-void read_registration(TomlSection s, RegistrationSettings& r) {
-  s.numbers("translation_mm", r.translation_mm, -1e4, 1e4, "mm");
-  s.numbers("rotation_wxyz", r.rotation_wxyz, -1.0, 1.0, "");
-  const auto& q = r.rotation_wxyz;
+// A rigid pose: translation in mm, rotation a unit quaternion (w, x, y, z).
+void read_pose(TomlSection& s, const char* translation_key, std::array<double, 3>& t, const char* rotation_key,
+               std::array<double, 4>& q) {
+  s.numbers(translation_key, t, -1e4, 1e4, "mm");
+  s.numbers(rotation_key, q, -1.0, 1.0, "");
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (std::abs(norm - 1.0) > 1e-3) {
-    s.fail("rotation_wxyz", "expected a unit quaternion (norm 1 within 1e-3), got norm " + std::to_string(norm));
+    s.fail(rotation_key, "expected a unit quaternion (norm 1 within 1e-3), got norm " + std::to_string(norm));
   }
+}
+
+void read_registration(TomlSection s, RegistrationSettings& r) {
+  read_pose(s, "translation_mm", r.translation_mm, "rotation_wxyz", r.rotation_wxyz);
+  read_pose(s, "xr_space_translation_mm", r.xr_space_translation_mm, "xr_space_rotation_wxyz",
+            r.xr_space_rotation_wxyz);
   s.finish();
 }
 

@@ -71,7 +71,7 @@ Status OpenXrOutput::connect() {
     instance_.emplace(instance.take());
     runtime_ = instance_->runtime();
   }
-  if (auto current = context_.make_current(); !current) return fail(current.error);
+  if (auto current = context_.make_current(); !current) return fail(current.error());
   std::optional<XrGraphicsBindingEGLMNDX> binding;
   if (!instance_->headless()) {
     auto b = egl_binding(*instance_, context_);
@@ -95,7 +95,8 @@ Status OpenXrOutput::connect() {
 }
 
 void OpenXrOutput::disconnect(bool instance_too) {
-  context_.make_current();  // GL names are deleted in it; the swapchains go before their session
+  // GL names are deleted in the context; the swapchains go before their session.
+  if (Status current = context_.make_current(); !current) log("OpenXR: disconnecting: " + current.error());
   targets_.clear();
   session_.reset();
   if (instance_too) instance_.reset();
@@ -118,8 +119,8 @@ Status OpenXrOutput::handle(LifecycleAction action) {
   }
 }
 
-Result<FrameTiming> OpenXrOutput::wait_frame() {
-  FrameTiming timing;
+Result<XrFrameTiming> OpenXrOutput::wait_frame() {
+  XrFrameTiming timing;
   if (exited_) return timing;
   if (reconnect_at_ns_ >= 0) {
     std::this_thread::sleep_for(kIdleWait);

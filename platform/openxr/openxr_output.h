@@ -35,7 +35,7 @@ struct OpenXrOptions {
 };
 
 /// One frame's timing, from xrWaitFrame.
-struct FrameTiming {
+struct XrFrameTiming {
   bool begun = false;          ///< xrBeginFrame was called: end_frame() must follow
   bool should_render = false;  ///< the runtime will show this frame: locate and draw the views
   std::int64_t display_ns = 0; ///< predicted display time, CLOCK_MONOTONIC nanoseconds
@@ -52,7 +52,7 @@ class OpenXrOutput {
 
   /// Handles the runtime's events, then xrWaitFrame + xrBeginFrame while the session runs: this paces the loop.
   /// While it does not (waiting for READY, reconnecting) it waits a little and returns begun = false.
-  Result<FrameTiming> wait_frame();
+  Result<XrFrameTiming> wait_frame();
   /// xrLocateViews at the predicted display time. `world_from_head` null: the runtime's head, placed in the world
   /// by OpenXrOptions::world_from_space; else lungar's head (head frame: +x right, +y up, -z ahead, mm), with
   /// each view's pose relative to the runtime's head (its IPD and eye offsets) and its field of view.

@@ -44,7 +44,7 @@ LifecycleAction Lifecycle::on_session_state(XrSessionState state) {
     case XR_SESSION_STATE_VISIBLE: line_ = name + ": frames shown, no input focus"; break;
     case XR_SESSION_STATE_FOCUSED: line_ = name + ": frames shown, input focus"; break;
     case XR_SESSION_STATE_IDLE:
-      line_ = name + (running_ ? "" : ": waiting for the runtime");
+      line_ = name + (reached(XR_SESSION_STATE_READY) ? ": ended" : ": waiting for the runtime to be ready");
       break;
     default: line_ = name; break;
   }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "platform/output/headless_output.h"
+#include "platform/output/openxr_frame_output.h"
 #include "platform/output/window_output.h"
 
 namespace lungar::platform {
@@ -15,6 +16,11 @@ Result<std::unique_ptr<FrameOutput>> open_output(const config::Settings& s,
   Output kind = s.display.output;
   const char* display = std::getenv("DISPLAY");
   if (kind == Output::Auto) kind = (display != nullptr && *display != '\0') ? Output::Window : Output::Headless;
+  if (kind == Output::OpenXr) {
+    auto xr = OpenXrFrameOutput::create(s, log);
+    if (!xr) return xr.with_context("");
+    return std::unique_ptr<FrameOutput>(xr.take());
+  }
   if (kind == Output::Window || kind == Output::Fullscreen) {
     auto window = WindowOutput::create(s.display, s.hmd);
     if (window) return std::unique_ptr<FrameOutput>(window.take());

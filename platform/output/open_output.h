@@ -1,7 +1,7 @@
 /// @file open_output.h
-/// @brief The output the settings ask for: display.output = window | fullscreen | headless | auto (a window when
-/// a display is there, else headless). The one place that chooses an output; a new kind of output is one more
-/// case here.
+/// @brief The output the settings ask for: display.output = window | fullscreen | headless | openxr | auto (a
+/// window when a display is there, else headless). The one place that chooses an output; a new kind of output is
+/// one more case here.
 /// @ingroup platform
 #pragma once
 

@@ -121,9 +121,9 @@ bool Runtime::keep_running() {
 
 /// DESIGN.md's "One frame". The final frame (a snapshot) is drawn the same way but not recorded.
 Status Runtime::draw_frame(const std::string* snapshot_png) {
-  const std::int64_t now = parts_.clock();
-  Result<FrameTiming> timing = parts_.output->begin_frame(now);
+  Result<FrameTiming> timing = parts_.output->begin_frame(parts_.clock());
   if (!timing) return timing.with_context("output: ");
+  const std::int64_t now = parts_.clock();  // after the output's pacing, which may block (xrWaitFrame)
   const std::int64_t display_ns =
       timing->display_ns != 0 ? timing->display_ns : now + static_cast<std::int64_t>(frame_estimate_ms_ * 1e6);
   FrameState state;

@@ -57,6 +57,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
   app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
+  app.add_option("--output", o.output,
+                 "auto | window | fullscreen | headless | openxr (a headset through its OpenXR runtime)")
+      ->check(CLI::IsMember(names_of(config::kOutputNames)));
   app.add_flag("--fullscreen", o.fullscreen, "full screen on display.x11_output (the HMD), as the user unit runs it");
   app.add_option("--frames", o.frames, "stop after N frames");
   app.add_option("--seconds", o.seconds, "stop after S seconds (default 10 unless --frames; 0: until stopped)");
@@ -82,6 +85,7 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
 Status apply_overrides(const RuntimeOptions& o, config::Settings& s) {
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
+  if (Status out = override_choice("--output", o.output, config::kOutputNames, s.display.output); !out) return out;
   if (o.fullscreen) s.display.output = config::Output::Fullscreen;
   if (o.headless) s.display.output = config::Output::Headless;
   if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;

@@ -20,6 +20,7 @@ struct RuntimeOptions {
   std::string tracker;            ///< "mock" | "hid" | "replay:FILE"; empty: from the config
   bool headless = false;
   bool fullscreen = false;        ///< display.output = "fullscreen" (the user unit's way to cover the HMD output)
+  std::string output;             ///< a name of config::kOutputNames; empty: from the config
   std::optional<long> frames;     ///< stop after this many frames
   std::optional<double> seconds;  ///< stop after this much time
   std::string view;               ///< a name of config::kViewNames; empty: from the config

@@ -152,11 +152,11 @@ class OpenXrLungs : public ::testing::Test {
       in.cull_back_facing = false;
       in.point_size_px = kPointSizePx;
       const auto drawn = renderer_->draw(*drawable_, in);
-      EXPECT_TRUE(drawn) << drawn.error;
+      EXPECT_TRUE(drawn) << drawn.error();
       EXPECT_TRUE(out.read_view(v, images_[v]));
     }
     const auto captured = renderer_->capture_deformed(*drawable_, lungs_, deformed_);
-    EXPECT_TRUE(captured) << captured.error;
+    EXPECT_TRUE(captured) << captured.error();
     for (std::size_t v = 0; v < 2; ++v) located_[v] = out.located()[v];
     EXPECT_TRUE(out.end_frame());
     return true;

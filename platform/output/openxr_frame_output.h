@@ -1,0 +1,57 @@
+/// @file openxr_frame_output.h
+/// @brief The Runtime's frames on an OpenXR headset (display.output = "openxr"): the FrameOutput face of
+/// openxr::OpenXrOutput. xrWaitFrame paces the frame and says when it is shown; the views are the runtime's
+/// (display.openxr.head = "openxr", placed in the world by registration.xr_space_*) or lungar's head tracker's
+/// with the runtime's eye offsets ("tracker"); each view has its own target, a swapchain image.
+/// @ingroup platform
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "config/settings.h"
+#include "platform/egl/egl_context.h"
+#include "platform/openxr/openxr_output.h"
+#include "platform/runtime/frame_output.h"
+
+namespace lungar::platform {
+
+/// The OpenXR options the settings give (reference space, clip planes, the reference space's registration).
+openxr::OpenXrOptions openxr_options(const config::Settings& settings);
+
+class OpenXrFrameOutput final : public FrameOutput {
+ public:
+  /// A surfaceless GLES 3 context handed to the runtime; the session, its swapchains. `log` hears the session's
+  /// lines (state changes, reconnections).
+  static Result<std::unique_ptr<OpenXrFrameOutput>> create(const config::Settings& settings,
+                                                           std::function<void(const std::string&)> log);
+  /// Asks the runtime to end the session and waits (a little) for EXITING: a clean goodbye.
+  ~OpenXrFrameOutput() override;
+
+  std::string describe() const override;
+  bool poll_events() override { return !xr_->exited(); }
+  Result<FrameTiming> begin_frame(std::int64_t now_ns) override;
+  const FrameViews& views(const glm::mat4& head_to_world) override;
+  void bind_target(std::size_t i) override;
+  std::array<int, 2> target_size() const override { return {xr_->view_width(), xr_->view_height()}; }
+  Status end_frame() override;
+  /// Both views side by side, as the headless output's stereo snapshot.
+  Status snapshot(const std::string& png_path) override;
+  void add_stats(nlohmann::json& stats) const override;
+
+  openxr::OpenXrOutput& xr() { return *xr_; }
+
+ private:
+  OpenXrFrameOutput(std::unique_ptr<EglContext> context, bool tracker_head)
+      : context_(std::move(context)), tracker_head_(tracker_head) {}
+  std::unique_ptr<EglContext> context_;
+  std::unique_ptr<openxr::OpenXrOutput> xr_;
+  bool tracker_head_ = false;
+  FrameViews views_;
+  std::string bind_error_;  ///< bind_target() cannot fail in place: its error comes out of end_frame()
+  std::vector<std::uint8_t> view_pixels_, side_by_side_;
+};
+
+}  // namespace lungar::platform

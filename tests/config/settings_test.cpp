@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <array>
 #include <cctype>
 #include <string>
 
@@ -44,6 +45,10 @@ TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   EXPECT_DOUBLE_EQ(s.sync.lost_after_ms, d.sync.lost_after_ms);
   EXPECT_DOUBLE_EQ(s.trackers.stale_ms, d.trackers.stale_ms);
   EXPECT_EQ(s.registration.rotation_wxyz, d.registration.rotation_wxyz);
+  EXPECT_EQ(s.registration.xr_space_translation_mm, d.registration.xr_space_translation_mm);
+  EXPECT_EQ(s.registration.xr_space_rotation_wxyz, d.registration.xr_space_rotation_wxyz);
+  EXPECT_EQ(s.display.openxr.head, d.display.openxr.head);
+  EXPECT_EQ(s.display.openxr.reference_space, d.display.openxr.reference_space);
   EXPECT_EQ(s.sim.orientation_mode, d.sim.orientation_mode);
 }
 
@@ -77,6 +82,19 @@ TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
   EXPECT_EQ(r->hmd.view, lungar::config::View::Mono);
   EXPECT_DOUBLE_EQ(r->hmd.ipd_mm, Settings{}.hmd.ipd_mm);
   EXPECT_EQ(r->source, "x.toml");
+}
+
+TEST(Settings, OpenXrOutputAndItsHead) {
+  auto r = load_settings_from_string(
+      "[display]\noutput = \"openxr\"\n[display.openxr]\nhead = \"tracker\"\nreference_space = \"stage\"\n"
+      "[registration]\nxr_space_translation_mm = [10.0, 20.0, 30.0]\nxr_space_rotation_wxyz = [0.0, 0.0, 1.0, 0.0]\n",
+      "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->display.output, lungar::config::Output::OpenXr);
+  EXPECT_EQ(r->display.openxr.head, lungar::config::XrHead::Tracker);
+  EXPECT_EQ(r->display.openxr.reference_space, lungar::config::XrSpace::Stage);
+  EXPECT_EQ(r->registration.xr_space_translation_mm, (std::array<double, 3>{10.0, 20.0, 30.0}));
+  EXPECT_EQ(r->registration.xr_space_rotation_wxyz, (std::array<double, 4>{0.0, 0.0, 1.0, 0.0}));
 }
 
 TEST(Settings, HexUsbIdsAreAccepted) {
@@ -178,6 +196,17 @@ TEST(BadConfig, RegistrationRotationNotAUnitQuaternion) {
   EXPECT_EQ(error_of("[registration]\nrotation_wxyz = [1.0, 1.0, 0.0, 0.0]\n"),
             "bad.toml:2: key 'registration.rotation_wxyz': expected a unit quaternion (norm 1 within 1e-3), got norm "
             "1.414214");
+}
+
+TEST(BadConfig, OpenXrHeadFromNowhere) {
+  EXPECT_EQ(error_of("[display.openxr]\nhead = \"eyes\"\n"),
+            "bad.toml:2: key 'display.openxr.head': expected one of \"openxr\" | \"tracker\", got the string \"eyes\"");
+}
+
+TEST(BadConfig, XrSpaceRotationNotAUnitQuaternion) {
+  EXPECT_EQ(error_of("[registration]\nxr_space_rotation_wxyz = [0.5, 0.5, 0.0, 0.0]\n"),
+            "bad.toml:2: key 'registration.xr_space_rotation_wxyz': expected a unit quaternion (norm 1 within 1e-3), "
+            "got norm 0.707107");
 }
 
 TEST(BadConfig, UsbIdOutOfRange) {

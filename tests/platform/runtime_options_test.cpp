@@ -54,9 +54,20 @@ TEST(RuntimeOptions, TheCommandLineRefusesNamesThatAreNotInTheTables) {
   EXPECT_EQ(parse({"--frames", "many"}, o), "Could not convert: --frames = many");
 }
 
+TEST(RuntimeOptions, OutputOpenXr) {
+  RuntimeOptions o;
+  o.output = "openxr";
+  cfg::Settings s;
+  EXPECT_TRUE(apply_overrides(o, s));
+  EXPECT_EQ(s.display.output, cfg::Output::OpenXr);
+}
+
 TEST(RuntimeOptions, BadValuesAreNamed) {
   cfg::Settings s;
   RuntimeOptions o;
+  o.output = "hmd";
+  EXPECT_EQ(apply_overrides(o, s).error(), "--output: expected auto, window, fullscreen, headless or openxr, got 'hmd'");
+  o = {};
   o.tracker = "replay:";
   EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay:'");
   o = {};

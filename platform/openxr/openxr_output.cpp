@@ -3,11 +3,13 @@
 #include "platform/openxr/openxr_output.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <thread>
 
 #include "config/base/clock.h"
 #include "platform/openxr/xr_egl_binding.h"
 #include "platform/openxr/xr_error.h"
+#include "platform/openxr/xr_runtime_quirks.h"
 #include "platform/openxr/xr_view_math.h"
 #include "render/frame_target.h"
 
@@ -74,6 +76,9 @@ Status OpenXrOutput::connect() {
   if (auto current = context_.make_current(); !current) return fail(current.error());
   std::optional<XrGraphicsBindingEGLMNDX> binding;
   if (!instance_->headless()) {
+    if (Status can = check_runtime_can_start(runtime_.name, [](const char* n) { return std::getenv(n); }); !can) {
+      return can;
+    }
     auto b = egl_binding(*instance_, context_);
     if (!b) return fail(b.error());
     binding = *b;

@@ -14,11 +14,11 @@ namespace lungar::platform::doctor {
 Check check_config(const config::ConfigChoice& choice, const Result<config::Settings>& loaded);
 /// EGL and OpenGL ES: versions (ES 3.0 needed) and the renderer; software rendering (llvmpipe) is a warning.
 Check check_gles();
-/// The configured output: an X display for a window, the named X output for full screen.
+/// The configured output: an X display for a window, the named X output for full screen, an OpenXR runtime for
+/// display.output = "openxr".
 Check check_output(const config::Settings& s, const DoctorEnv& env);
 /// The active OpenXR runtime, found the way the OpenXR loader finds it (XR_RUNTIME_JSON, then XDG config folders,
-/// then /etc), without loading OpenXR. check_output() is to return it for display.output = "openxr" once that
-/// output exists (one line there).
+/// then /etc), without loading OpenXR.
 Check check_openxr_runtime(const DoctorEnv& env);
 /// The configured tracker: for HID, the device node present and readable by this user; a missing udev rule gives
 /// the command that installs one.

@@ -55,6 +55,7 @@ Check check_output(const config::Settings& s, const DoctorEnv& env) {
   using config::Output;
   const Output out = s.display.output;
   if (out == Output::Headless) return passed("output", "headless (display.output = \"headless\"): no display needed");
+  if (out == Output::OpenXr) return check_openxr_runtime(env);  // the runtime owns the display
   if (out == Output::Auto && env.display.empty()) {
     return passed("output", "auto: no DISPLAY, so the runtime draws headless");
   }

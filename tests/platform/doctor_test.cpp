@@ -119,6 +119,18 @@ TEST_F(Doctor, OpenXrEnvironmentOverrideIsTheOnlyPlaceLookedAtAndAMissingLibrary
   EXPECT_TRUE(contains(c.detail, forced.string())) << c.detail;
 }
 
+TEST_F(Doctor, TheOpenXrOutputNeedsAnActiveRuntimeNotAnXDisplay) {
+  lungar::config::Settings s;
+  s.display.output = lungar::config::Output::OpenXr;
+  Check c = check_output(s, env);  // no DISPLAY, no runtime
+  EXPECT_EQ(c.verdict, Verdict::Fail) << format_check(c);
+  EXPECT_TRUE(contains(c.fix, "active_runtime.json")) << c.fix;
+  write_manifest(root / "home/.config/openxr/1/active_runtime.json", "UserXR", make_library("libu.so").string());
+  c = check_output(s, env);
+  EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
+  EXPECT_TRUE(contains(c.detail, "UserXR")) << c.detail;
+}
+
 TEST_F(Doctor, OutputNeedsNoDisplayHeadlessButAWindowNeedsOne) {
   lungar::config::Settings s;
   s.display.output = lungar::config::Output::Headless;

@@ -46,58 +46,57 @@ double read_field(const std::uint8_t* p, const FieldFormat& f, bool big) {
   return std::ldexp(raw, -f.frac_bits) * f.scale;
 }
 
-DecodeError decode_sensor(const std::uint8_t* block, const ReportLayout& l, DecodedPose& out) {
+DecodeError decode_sensor(const std::uint8_t* block, const ReportLayout& l, PoseSample& out) {
   const std::uint8_t* pp = block + l.position_offset;
-  quat::V device_pos{};
+  Eigen::Vector3d device_pos;
   for (int k = 0; k < 3; ++k) {
     const Component c = l.position_components[k];
     device_pos[c.index] = c.sign * read_field(pp + k * l.position.bytes(), l.position, l.big_endian);
   }
   const std::uint8_t* op = block + l.orientation_offset;
-  quat::Q q{};
+  Eigen::Quaterniond q;
   if (l.euler) {
-    quat::V angle_rad{};
+    Eigen::Vector3d angle_rad;  // indexed by axis
     for (int k = 0; k < 3; ++k) {
       const Component c = l.orientation_components[k];
       angle_rad[c.index] =
           c.sign * read_field(op + k * l.orientation.bytes(), l.orientation, l.big_endian) * (M_PI / 180.0);
     }
-    for (double a : angle_rad) {
-      if (!std::isfinite(a)) return DecodeError::NotFinite;
-    }
+    if (!angle_rad.allFinite()) return DecodeError::NotFinite;
     const auto& s = l.euler_sequence;  // intrinsic: R = R_s0 R_s1 R_s2
-    q = quat::mul(quat::mul(quat::about(s[0], angle_rad[s[0]]), quat::about(s[1], angle_rad[s[1]])),
-                  quat::about(s[2], angle_rad[s[2]]));
+    q = Eigen::AngleAxisd(angle_rad[s[0]], Eigen::Vector3d::Unit(s[0])) *
+        Eigen::AngleAxisd(angle_rad[s[1]], Eigen::Vector3d::Unit(s[1])) *
+        Eigen::AngleAxisd(angle_rad[s[2]], Eigen::Vector3d::Unit(s[2]));
   } else {
+    Eigen::Vector4d wxyz;
     for (int k = 0; k < 4; ++k) {
       const Component c = l.orientation_components[k];
-      q[c.index] = c.sign * read_field(op + k * l.orientation.bytes(), l.orientation, l.big_endian);
+      wxyz[c.index] = c.sign * read_field(op + k * l.orientation.bytes(), l.orientation, l.big_endian);
     }
+    q = Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
   }
-  for (double v : device_pos) {
-    if (!std::isfinite(v)) return DecodeError::NotFinite;
-  }
-  for (double v : q) {
-    if (!std::isfinite(v)) return DecodeError::NotFinite;
-  }
-  const double n = quat::norm(q);
-  if (!std::isfinite(n)) return DecodeError::NotFinite;
-  if (std::abs(n - 1.0) > l.quat_norm_tolerance) return DecodeError::QuaternionNorm;
-  q = {q[0] / n, q[1] / n, q[2] / n, q[3] / n};
-  // Change of basis tracker -> world: p' = M p + offset, R' = M R M^T (= r q r* with r the proper part of M).
-  for (int i = 0; i < 3; ++i) {
-    double v = l.world_offset_mm[i];
-    for (int j = 0; j < 3; ++j) v += l.remap[i][j] * device_pos[j];
-    if (!(v >= l.workspace_min_mm[i] && v <= l.workspace_max_mm[i])) return DecodeError::OutsideWorkspace;
-    out.position_mm[i] = v;
-  }
-  q = quat::mul(quat::mul(l.remap_rotation, q), quat::conj(l.remap_rotation));
-  if (q[0] < 0) q = {-q[0], -q[1], -q[2], -q[3]};  // one sign per rotation, so equal reports compare equal
-  out.orientation_wxyz = q;
-  return DecodeError::None;
+  return to_world(device_pos, q, l.world, out);
 }
 
 }  // namespace
+
+DecodeError to_world(const Eigen::Vector3d& device_pos_mm, const Eigen::Quaterniond& q, const WorldFrame& w,
+                     PoseSample& out) {
+  if (!device_pos_mm.allFinite() || !q.coeffs().allFinite()) return DecodeError::NotFinite;
+  const double n = q.norm();
+  if (!std::isfinite(n)) return DecodeError::NotFinite;
+  if (std::abs(n - 1.0) > w.quat_norm_tolerance) return DecodeError::QuaternionNorm;
+  // Change of basis tracker -> world: p' = M p + offset, R' = M R M^T (= r q r* with r the proper part of M).
+  const Eigen::Vector3d p = w.remap * device_pos_mm + w.offset_mm;
+  if (!((p.array() >= w.workspace_min_mm.array()).all() && (p.array() <= w.workspace_max_mm.array()).all())) {
+    return DecodeError::OutsideWorkspace;
+  }
+  Eigen::Quaterniond r = w.remap_rotation * Eigen::Quaterniond(q.coeffs() / n) * w.remap_rotation.conjugate();
+  if (r.w() < 0) r.coeffs() = -r.coeffs();  // one sign per rotation, so equal reports compare equal
+  out.set_position(p);
+  out.set_orientation(r);
+  return DecodeError::None;
+}
 
 DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLayout& l) {
   DecodedReport r;
@@ -116,7 +115,7 @@ DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLay
   for (int k = 0; k < l.sensor_count; ++k) {
     const SensorLayout& s = l.sensors[k];
     if (l.station_offset >= 0 && p[l.station_offset] != s.station) continue;
-    DecodedPose& pose = r.poses[r.count];
+    PoseSample& pose = r.poses[r.count];
     pose.role = s.role;
     const DecodeError e = decode_sensor(p + s.offset, l, pose);
     if (e != DecodeError::None) return fail(e);

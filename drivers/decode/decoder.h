@@ -26,20 +26,18 @@ enum class DecodeError : std::uint8_t {
 inline constexpr int kDecodeErrorCount = 8;
 const char* to_string(DecodeError e);
 
-/// One sensor's pose from a report, in the world frame.
-struct DecodedPose {
-  Role role = Role::Head;
-  std::array<double, 3> position_mm{};
-  std::array<double, 4> orientation_wxyz{1, 0, 0, 0};  ///< normalised
-};
-
 struct DecodedReport {
   DecodeError error = DecodeError::None;
   bool has_time = false;
   std::uint32_t device_ticks = 0;  ///< raw timestamp, time_bits wide
-  int count = 0;                   ///< poses filled
-  std::array<DecodedPose, kRoleCount> poses{};
+  int count = 0;                   ///< poses filled: role, position and (normalised) orientation in the world
+  std::array<PoseSample, kRoleCount> poses{};
 };
+
+/// Tracker-frame position and unit-norm-within-tolerance orientation -> `out`'s world pose, or why not
+/// (NotFinite, QuaternionNorm, OutsideWorkspace). The quaternion is normalised and given w >= 0.
+DecodeError to_world(const Eigen::Vector3d& device_pos_mm, const Eigen::Quaterniond& q, const WorldFrame& w,
+                     PoseSample& out);
 
 /// Decodes one report. Every sensor of the report must be valid, or the whole report is rejected.
 DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLayout& layout);

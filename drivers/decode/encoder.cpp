@@ -44,50 +44,49 @@ void write_field(std::uint8_t* p, double value, const FieldFormat& f, bool big) 
   write_uint(p, u, f.bytes(), big);
 }
 
-bool is_cyclic(const std::array<int, 3>& s) { return (s[1] - s[0] + 3) % 3 == 1; }
-
-/// Angles (radians, indexed by axis) with R = R_i(a_i) R_j(a_j) R_k(a_k), for the intrinsic sequence (i, j, k).
-quat::V euler_angles(const quat::Q& q, const std::array<int, 3>& seq) {
-  const quat::M m = quat::to_matrix(q);
-  const int i = seq[0], j = seq[1], k = seq[2];
-  const double e = is_cyclic(seq) ? 1.0 : -1.0;
-  quat::V a{};
-  a[j] = std::asin(std::clamp(e * m[i][k], -1.0, 1.0));
-  a[i] = std::atan2(-e * m[j][k], m[k][k]);
-  a[k] = std::atan2(-e * m[i][j], m[i][i]);
-  return a;
+/// Tait-Bryan angles (radians, indexed by axis) with R = R_i(a_i) R_j(a_j) R_k(a_k) for the intrinsic sequence
+/// (i, j, k), the middle one in [-pi/2, pi/2] as devices send them (Eigen's first angle is in [0, pi] instead).
+Eigen::Vector3d euler_angles(const Eigen::Quaterniond& q, const std::array<int, 3>& seq) {
+  Eigen::Vector3d e = q.toRotationMatrix().eulerAngles(seq[0], seq[1], seq[2]);
+  if (std::abs(e[1]) > M_PI / 2) {  // the other solution of the same rotation: (a + pi, pi - b, c + pi)
+    e[0] -= M_PI;
+    e[1] = (e[1] > 0 ? M_PI : -M_PI) - e[1];
+    e[2] += e[2] > 0 ? -M_PI : M_PI;
+  }
+  Eigen::Vector3d by_axis;
+  for (int k = 0; k < 3; ++k) by_axis[seq[k]] = e[k];
+  return by_axis;
 }
 
-void encode_sensor(std::uint8_t* block, const ReportLayout& l, const DecodedPose& pose) {
+void encode_sensor(std::uint8_t* block, const ReportLayout& l, const PoseSample& pose) {
   // World -> tracker: p = M^T (p' - offset), q = r* q' r.
-  quat::V device_pos{};
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) device_pos[j] += l.remap[i][j] * (pose.position_mm[i] - l.world_offset_mm[i]);
-  }
+  const WorldFrame& w = l.world;
+  const Eigen::Vector3d device_pos = w.remap.transpose() * (pose.position() - w.offset_mm);
   for (int k = 0; k < 3; ++k) {
     const Component c = l.position_components[k];
     write_field(block + l.position_offset + k * l.position.bytes(), c.sign * device_pos[c.index], l.position,
                 l.big_endian);
   }
-  const quat::Q q = quat::mul(quat::mul(quat::conj(l.remap_rotation), pose.orientation_wxyz), l.remap_rotation);
+  const Eigen::Quaterniond q = w.remap_rotation.conjugate() * pose.orientation() * w.remap_rotation;
   std::uint8_t* op = block + l.orientation_offset;
   if (l.euler) {
-    const quat::V a = euler_angles(q, l.euler_sequence);
+    const Eigen::Vector3d a = euler_angles(q, l.euler_sequence);
     for (int k = 0; k < 3; ++k) {
       const Component c = l.orientation_components[k];
       write_field(op + k * l.orientation.bytes(), c.sign * a[c.index] * (180.0 / M_PI), l.orientation, l.big_endian);
     }
   } else {
+    const Eigen::Vector4d wxyz(q.w(), q.x(), q.y(), q.z());
     for (int k = 0; k < 4; ++k) {
       const Component c = l.orientation_components[k];
-      write_field(op + k * l.orientation.bytes(), c.sign * q[c.index], l.orientation, l.big_endian);
+      write_field(op + k * l.orientation.bytes(), c.sign * wxyz[c.index], l.orientation, l.big_endian);
     }
   }
 }
 
 }  // namespace
 
-bool encode_report(const ReportLayout& l, std::span<const DecodedPose> poses, std::uint32_t ticks,
+bool encode_report(const ReportLayout& l, std::span<const PoseSample> poses, std::uint32_t ticks,
                    std::span<std::uint8_t> out) {
   if (out.size() < static_cast<std::size_t>(l.length) || poses.empty()) return false;
   if (l.station_offset >= 0 && poses.size() != 1) return false;
@@ -95,7 +94,7 @@ bool encode_report(const ReportLayout& l, std::span<const DecodedPose> poses, st
   std::memset(p, 0, static_cast<std::size_t>(l.length));
   if (l.report_id >= 0) p[0] = static_cast<std::uint8_t>(l.report_id);
   if (l.time_offset >= 0) write_uint(p + l.time_offset, ticks, l.time_bits / 8, l.big_endian);
-  for (const DecodedPose& pose : poses) {
+  for (const PoseSample& pose : poses) {
     const SensorLayout* sensor = nullptr;
     for (int k = 0; k < l.sensor_count; ++k) {
       if (l.sensors[k].role == pose.role) sensor = &l.sensors[k];

@@ -16,7 +16,7 @@ namespace lungar::drivers {
 /// Fills `out` (at least layout.length bytes; the rest is untouched) with one report carrying `poses`, stamped
 /// with `ticks`. With a station byte, exactly one pose per report. Unused bytes are zero. Values beyond a
 /// field's range saturate. Returns false when a pose's role has no sensor, or `out` is too short.
-bool encode_report(const ReportLayout& layout, std::span<const DecodedPose> poses, std::uint32_t ticks,
+bool encode_report(const ReportLayout& layout, std::span<const PoseSample> poses, std::uint32_t ticks,
                    std::span<std::uint8_t> out);
 
 }  // namespace lungar::drivers

@@ -12,11 +12,6 @@ int FieldFormat::bytes() const {
 
 namespace {
 
-double determinant(const quat::M& m) {
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
 template <std::size_t N>
 bool components(const std::string& text, std::string_view letters, std::array<Component, N>& out) {
   auto axes = config::parse_signed_axes(text, letters);
@@ -25,7 +20,25 @@ bool components(const std::string& text, std::string_view letters, std::array<Co
   return true;
 }
 
+Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+
 }  // namespace
+
+Result<WorldFrame> make_world_frame(const config::TrackerSettings& t) {
+  WorldFrame w;
+  std::array<Component, 3> remap{};
+  if (!components(t.axis_remap, "xyz", remap)) return fail("trackers.axis_remap: expected a signed permutation of x,y,z");
+  w.remap.setZero();
+  for (int row = 0; row < 3; ++row) w.remap(row, remap[row].index) = remap[row].sign;
+  // A mirror (det -1) changes handedness; M R M^T equals (-M) R (-M)^T, and -M is a proper rotation.
+  const Eigen::Matrix3d proper = w.remap.determinant() < 0 ? Eigen::Matrix3d(-w.remap) : w.remap;
+  w.remap_rotation = Eigen::Quaterniond(proper).normalized();
+  w.offset_mm = vec(t.world_offset_mm);
+  w.quat_norm_tolerance = t.quat_norm_tolerance;
+  w.workspace_min_mm = vec(t.workspace_min_mm);
+  w.workspace_max_mm = vec(t.workspace_max_mm);
+  return w;
+}
 
 LayoutResult make_layout(const config::TrackerSettings& t) {
   const config::ReportSettings& r = t.report;
@@ -47,10 +60,6 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
   l.euler = r.orientation == config::OrientationKind::Euler;
   l.orientation_offset = r.orientation_offset;
   l.orientation = {r.orientation_type, r.orientation_frac_bits, r.orientation_scale};
-  l.quat_norm_tolerance = t.quat_norm_tolerance;
-  l.world_offset_mm = t.world_offset_mm;
-  l.workspace_min_mm = t.workspace_min_mm;
-  l.workspace_max_mm = t.workspace_max_mm;
 
   if (r.length < 1 || r.length > 1024) return fail("report.length", "expected 1 to 1024 bytes");
   if (r.report_id < -1 || r.report_id > 255) return fail("report.report_id", "expected -1 to 255");
@@ -73,19 +82,12 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
     return fail("report.euler_sequence", "expected three distinct axes");
   }
   for (int k = 0; k < 3; ++k) l.euler_sequence[k] = seq[k].index;
-  std::array<Component, 3> remap{};
-  if (!components(t.axis_remap, "xyz", remap)) return fail("axis_remap", "expected a signed permutation of x,y,z");
-  for (int row = 0; row < 3; ++row) {
-    l.remap[row] = {0, 0, 0};
-    l.remap[row][remap[row].index] = remap[row].sign;
+  auto world = make_world_frame(t);
+  if (!world) {
+    res.error = world.error();
+    return res;
   }
-  // A mirror (det -1) changes handedness; M R M^T equals (-M) R (-M)^T, and -M is a proper rotation.
-  quat::M proper = l.remap;
-  if (determinant(proper) < 0) {
-    for (auto& row : proper)
-      for (double& v : row) v = -v;
-  }
-  l.remap_rotation = quat::from_matrix(proper);
+  l.world = *world;
 
   const int first = r.report_id >= 0 ? 1 : 0;
   auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };

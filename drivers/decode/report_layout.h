@@ -8,9 +8,11 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Geometry>
+
+#include "config/base/result.h"
 #include "config/settings.h"
 #include "drivers/pose/pose_sample.h"
-#include "drivers/pose/quat.h"
 
 namespace lungar::drivers {
 
@@ -34,6 +36,16 @@ struct SensorLayout {
   int offset = 0;
 };
 
+/// Tracker frame -> world frame, and what a world pose must satisfy: shared by every decoder (HID reports,
+/// OpenIGTLink messages). p' = remap p + offset; q' = r q r* with r the proper part of remap.
+struct WorldFrame {
+  Eigen::Matrix3d remap = Eigen::Matrix3d::Identity();                ///< signed permutation, world <- tracker
+  Eigen::Quaterniond remap_rotation = Eigen::Quaterniond::Identity();  ///< the proper rotation +-remap
+  Eigen::Vector3d offset_mm = Eigen::Vector3d::Zero();
+  double quat_norm_tolerance = 0.05;
+  Eigen::Vector3d workspace_min_mm = Eigen::Vector3d::Zero(), workspace_max_mm = Eigen::Vector3d::Zero();
+};
+
 /// Everything decode_report() needs, resolved and checked: plain data, no allocation.
 struct ReportLayout {
   int report_id = -1;
@@ -51,11 +63,7 @@ struct ReportLayout {
   FieldFormat orientation;
   std::array<Component, 4> orientation_components{};  ///< 3 used for Euler angles
   std::array<int, 3> euler_sequence = {2, 1, 0};
-  quat::M remap{};           ///< signed permutation, world <- tracker
-  quat::Q remap_rotation{};  ///< the proper rotation ±remap, applied to orientations as q' = r q r*
-  quat::V world_offset_mm{};
-  double quat_norm_tolerance = 0.05;
-  quat::V workspace_min_mm{}, workspace_max_mm{};
+  WorldFrame world;
   std::array<SensorLayout, kRoleCount> sensors{};
   int sensor_count = 0;
 };
@@ -64,6 +72,10 @@ struct LayoutResult {
   std::optional<ReportLayout> layout;
   std::string error;  ///< "trackers.<key>: expected ..., got ..." when the settings do not describe a layout
 };
+
+/// The world frame of the [trackers] keys (axis_remap, world_offset_mm, workspace, quat_norm_tolerance); an
+/// error names the key. make_layout() uses it; other decoders (OpenIGTLink) too.
+Result<WorldFrame> make_world_frame(const config::TrackerSettings& t);
 
 /// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings).
 LayoutResult make_layout(const config::TrackerSettings& t);

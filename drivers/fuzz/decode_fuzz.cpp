@@ -83,13 +83,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int k = 0; k < d.count; ++k) {
     const auto& p = d.poses[k];
     for (int i = 0; i < 3; ++i) {
-      if (!(p.position_mm[i] >= l.workspace_min_mm[i] && p.position_mm[i] <= l.workspace_max_mm[i])) std::abort();
+      if (!(p.position_mm[i] >= l.world.workspace_min_mm[i] && p.position_mm[i] <= l.world.workspace_max_mm[i])) {
+        std::abort();
+      }
     }
-    if (std::abs(drivers::quat::norm(p.orientation_wxyz) - 1.0) > 1e-9) std::abort();
+    if (std::abs(p.orientation().norm() - 1.0) > 1e-9) std::abort();
   }
   if (d.count > 0) {  // re-encode what was decoded (no crash, no undefined conversion)
     std::vector<std::uint8_t> again(static_cast<std::size_t>(l.length));
-    if (!drivers::encode_report(l, std::span<const drivers::DecodedPose>(d.poses.data(), d.count), d.device_ticks,
+    if (!drivers::encode_report(l, std::span<const drivers::PoseSample>(d.poses.data(), d.count), d.device_ticks,
                                 again)) {
       std::abort();
     }

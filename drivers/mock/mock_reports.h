@@ -34,7 +34,7 @@ class MockReports {
     const auto ticks = static_cast<std::uint32_t>(static_cast<std::uint64_t>(t_s * 1e9 / layout_.time_tick_ns));
     int n = 0;
     for (int s = 0; s < layout_.sensor_count; ++s) {
-      DecodedPose p = *mock_pose(trajectory_, layout_.sensors[s].role, t_s);
+      PoseSample p = *mock_pose(trajectory_, layout_.sensors[s].role, t_s);
       if (noise_mm_ > 0) {
         for (double& v : p.position_mm) v += noise_(rng_);
       }
@@ -44,11 +44,11 @@ class MockReports {
     if (layout_.station_offset >= 0) {
       for (int s = 0; s < n; ++s) {
         if (dropped()) continue;
-        encode_report(layout_, std::span<const DecodedPose>(&poses_[s], 1), ticks, buf_);
+        encode_report(layout_, std::span<const PoseSample>(&poses_[s], 1), ticks, buf_);
         emit(out);
       }
     } else if (!dropped()) {
-      encode_report(layout_, std::span<const DecodedPose>(poses_.data(), n), ticks, buf_);
+      encode_report(layout_, std::span<const PoseSample>(poses_.data(), n), ticks, buf_);
       emit(out);
     }
   }
@@ -62,7 +62,7 @@ class MockReports {
   std::mt19937 rng_{12345};  // fixed seed: runs are reproducible
   std::normal_distribution<double> noise_;
   std::uniform_real_distribution<double> uniform_{0.0, 1.0};
-  std::array<DecodedPose, kRoleCount> poses_{};
+  std::array<PoseSample, kRoleCount> poses_{};
   std::array<std::uint8_t, kTrkMaxReport> buf_{};
 };
 

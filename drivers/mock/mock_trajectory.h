@@ -24,7 +24,7 @@ inline constexpr double kMockTurnS = 4.0;
 
 /// The pose of `role` at `t_s` seconds into `trajectory` (static | upright_to_supine | head_orbit); nullopt
 /// for an unknown trajectory name.
-std::optional<DecodedPose> mock_pose(const std::string& trajectory, Role role, double t_s);
+std::optional<PoseSample> mock_pose(const std::string& trajectory, Role role, double t_s);
 
 /// The patient's turn angle about world x at `t_s` for upright_to_supine, radians (0 upright, -pi/2 supine).
 double upright_to_supine_angle(double t_s);

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "drivers/pose/quat.h"
 
 namespace lungar::drivers {
 
@@ -31,17 +30,12 @@ PoseSample predict(const PoseHistory& h, std::int64_t t_ns, std::int64_t max_ahe
   const double ahead_s = static_cast<double>(std::clamp<std::int64_t>(t_ns - a.t_arrival_ns, 0, max_ahead_ns)) * 1e-9;
   if (dt_s <= 0 || ahead_s <= 0) return a;
   PoseSample out = a;
-  for (int i = 0; i < 3; ++i) {
-    out.position_mm[i] += (a.position_mm[i] - b.position_mm[i]) / dt_s * ahead_s;
-  }
-  // Angular velocity from the relative rotation b -> a, applied for the lead time in the world frame.
-  quat::Q d = quat::mul(a.orientation_wxyz, quat::conj(b.orientation_wxyz));
-  if (d[0] < 0) d = {-d[0], -d[1], -d[2], -d[3]};
-  const double s = std::sqrt(d[1] * d[1] + d[2] * d[2] + d[3] * d[3]);
-  if (s > 1e-12) {
-    const double angle = 2 * std::atan2(s, d[0]) * (ahead_s / dt_s);
-    const quat::Q step = quat::from_axis_angle({d[1] / s, d[2] / s, d[3] / s}, angle);
-    out.orientation_wxyz = quat::normalized(quat::mul(step, a.orientation_wxyz));
+  out.set_position(a.position() + (a.position() - b.position()) / dt_s * ahead_s);
+  // Angular velocity from the relative rotation b -> a (the short way), applied for the lead time in the world frame.
+  const Eigen::AngleAxisd turn(a.orientation() * b.orientation().conjugate());
+  if (turn.angle() > 1e-12) {
+    const Eigen::AngleAxisd step(turn.angle() * (ahead_s / dt_s), turn.axis());
+    out.set_orientation((Eigen::Quaterniond(step) * a.orientation()).normalized());
   }
   out.t_arrival_ns = a.t_arrival_ns + static_cast<std::int64_t>(ahead_s * 1e9);
   out.t_device_ns = a.t_device_ns + static_cast<std::int64_t>(ahead_s * 1e9);

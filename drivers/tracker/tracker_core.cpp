@@ -101,15 +101,11 @@ DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t
   last_device_ns_ = t_device;
   last_arrival_ns_ = t_arrival_ns;
   for (int k = 0; k < d.count; ++k) {
-    const DecodedPose& p = d.poses[k];
-    PoseSample s;
-    s.role = p.role;
+    PoseSample s = d.poses[k];
     s.flags = kPoseValid | (d.has_time ? 0u : static_cast<std::uint32_t>(kPoseNoDeviceTime));
     s.t_device_ns = t_device;
     s.t_arrival_ns = t_arrival_ns;
-    s.position_mm = p.position_mm;
-    s.orientation_wxyz = p.orientation_wxyz;
-    const auto r = static_cast<std::size_t>(p.role);
+    const auto r = static_cast<std::size_t>(s.role);
     ++role_window_count_[r];
     latest_[r].publish(s);
     history_[r].push(s);

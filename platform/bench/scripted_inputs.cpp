@@ -31,14 +31,14 @@ drivers::PoseSample ScriptedPoses::latest(drivers::Role role, std::int64_t now_n
   if (role == drivers::Role::Head) {
     // The head sensor looks along its +y with +z up: from the front (LPS anterior is -y) toward the lungs.
     const Eigen::Vector3d eye = centre_ - Eigen::Vector3d(0.0, kHeadDistanceMm, 0.0);
-    s.position_mm = {eye.x(), eye.y(), eye.z()};
+    s.set_position(eye);
     return s;
   }
   // The patient turns about the lungs' centre, so the lungs stay where the head looks.
   const Eigen::Quaterniond q = scripted_turn(static_cast<double>(now_ns) * 1e-9);
   const Eigen::Vector3d p = centre_ - q * centre_;
-  s.position_mm = {p.x(), p.y(), p.z()};
-  s.orientation_wxyz = {q.w(), q.x(), q.y(), q.z()};
+  s.set_position(p);
+  s.set_orientation(q);
   return s;
 }
 

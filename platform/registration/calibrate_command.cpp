@@ -48,10 +48,9 @@ Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& l
     if (r.error != drivers::DecodeError::None) continue;  // malformed reports are never applied
     for (int k = 0; k < r.count; ++k) {
       const auto& pose = r.poses[static_cast<std::size_t>(k)];
-      const Eigen::Vector3d p(pose.position_mm[0], pose.position_mm[1], pose.position_mm[2]);
+      const Eigen::Vector3d p = pose.position();
       if (pose.role == drivers::Role::Patient) {
-        const auto& q = pose.orientation_wxyz;
-        patient_q = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+        patient_q = pose.orientation().normalized();
         patient_p = p;
       } else if (pose.role == drivers::Role::Stylus) {
         samples.push_back({static_cast<double>(rec.t_arrival_ns - t0) * 1e-9, patient_q.conjugate() * (p - patient_p)});

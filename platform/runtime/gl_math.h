@@ -15,13 +15,7 @@
 namespace lungar::platform {
 
 /// A tracked pose as the rigid transform sensor -> world (mm).
-inline Eigen::Isometry3d pose_isometry(const drivers::PoseSample& s) {
-  const auto& q = s.orientation_wxyz;
-  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
-  m.linear() = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
-  m.translation() = Eigen::Vector3d(s.position_mm[0], s.position_mm[1], s.position_mm[2]);
-  return m;
-}
+inline Eigen::Isometry3d pose_isometry(const drivers::PoseSample& s) { return s.transform(); }
 
 inline glm::mat4 to_glm(const Eigen::Isometry3d& m) {
   const Eigen::Matrix4f f = m.matrix().cast<float>();

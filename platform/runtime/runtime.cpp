@@ -23,15 +23,7 @@ using drivers::Role;
 constexpr std::int64_t kStatusLinePeriodNs = 250'000'000;  // the status line changes four times a second
 
 /// A pose to use before a source has delivered one: the mock's static scene (patient ahead, head in front).
-PoseSample fallback_pose(Role role) {
-  PoseSample s;
-  s.role = role;
-  if (auto p = drivers::mock_pose("static", role, 0.0)) {
-    s.position_mm = p->position_mm;
-    s.orientation_wxyz = p->orientation_wxyz;
-  }
-  return s;
-}
+PoseSample fallback_pose(Role role) { return drivers::mock_pose("static", role, 0.0).value_or(PoseSample{}); }
 
 /// The head sensor looks along its +y with +z up (drivers/mock, the HID layouts); the renderer's head frame is
 /// OpenGL's camera (+y up, looking down -z): a +90 degree turn about x takes one to the other.

@@ -9,7 +9,7 @@ namespace lungar::platform {
 drivers::PoseSample ScenarioPatient::turned(drivers::PoseSample s, std::int64_t t_ns) const {
   if (s.role != drivers::Role::Patient) return s;
   const Eigen::Quaterniond q = script_->orientation.at(seconds_between(t0_ns_, t_ns));
-  s.orientation_wxyz = {q.w(), q.x(), q.y(), q.z()};
+  s.set_orientation(q);
   return s;
 }
 

@@ -41,19 +41,24 @@ ReportLayout layout_of(const config::TrackerSettings& t) {
   return r.layout.value_or(ReportLayout{});
 }
 
-DecodedPose pose(Role role, std::array<double, 3> p, quat::Q q) {
-  DecodedPose d;
+/// Rotation by `angle_rad` about coordinate axis 0, 1 or 2.
+Eigen::Quaterniond about(int axis, double angle_rad) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::Unit(axis)));
+}
+
+PoseSample pose(Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
+  PoseSample d;
   d.role = role;
-  d.position_mm = p;
-  d.orientation_wxyz = quat::normalized(q);
+  d.set_position(p);
+  d.set_orientation(q.normalized());
   return d;
 }
 
-void expect_same_pose(const DecodedPose& got, const DecodedPose& want, double pos_tol = kPosTolMm,
+void expect_same_pose(const PoseSample& got, const PoseSample& want, double pos_tol = kPosTolMm,
                       double rot_tol = kRotTolRad) {
   EXPECT_EQ(got.role, want.role);
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(got.position_mm[i], want.position_mm[i], pos_tol) << "axis " << i;
-  EXPECT_LT(quat::angle_between(got.orientation_wxyz, want.orientation_wxyz), rot_tol);
+  EXPECT_LT(got.orientation().angularDistance(want.orientation()), rot_tol);
 }
 
 }  // namespace
@@ -75,7 +80,7 @@ TEST(Decode, DefaultLayoutByHand) {
   ASSERT_EQ(d.count, 1);
   EXPECT_TRUE(d.has_time);
   EXPECT_EQ(d.device_ticks, 123456u);
-  expect_same_pose(d.poses[0], pose(Role::Patient, {123.45, -20, 1000}, quat::about(0, M_PI / 2)));
+  expect_same_pose(d.poses[0], pose(Role::Patient, {123.45, -20, 1000}, about(0, M_PI / 2)));
 }
 
 TEST(Decode, EveryFieldTypeInBothEndiannesses) {
@@ -102,7 +107,8 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
         const ReportLayout l = layout_of(t);
         // Hand-encode the raw values of position (100.5, -42.25, 1234.0) mm and a 30-degree turn about z.
         const std::array<double, 3> pos = {100.5, -42.25, 1234.0};
-        const quat::Q q = quat::about(2, M_PI / 6);
+        const Eigen::Quaterniond q = about(2, M_PI / 6);
+        const std::array<double, 4> wxyz = {q.w(), q.x(), q.y(), q.z()};
         Bytes r(48);
         r.u8(0, 1);
         r.u8(1, 1);
@@ -124,14 +130,14 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
         std::size_t at = 6;
         for (double v : pos) at += put(at, pt, t.report.position_frac_bits, t.report.position_scale, v);
         at = 18;
-        for (double v : q) at += put(at, ot, t.report.orientation_frac_bits, t.report.orientation_scale, v);
+        for (double v : wxyz) at += put(at, ot, t.report.orientation_frac_bits, t.report.orientation_scale, v);
         const DecodedReport d = decode_report(r.b, l);
         ASSERT_EQ(d.error, DecodeError::None) << to_string(d.error);
         ASSERT_EQ(d.count, 1);
         // Half a unit of the type's resolution, plus rounding: 0.05 mm (i16), 1/32 mm (Q11.4), 0.005 mm (i32).
         const double pos_tol = pt == config::FieldType::I16 ? 0.0501 : pt == config::FieldType::Fixed16 ? 0.0313 : 0.005;
         const double rot_tol = ot == config::FieldType::I16 || ot == config::FieldType::Fixed16 ? kRotTolRad : 1e-6;
-        expect_same_pose(d.poses[0], pose(Role::Head, pos, q), pos_tol, rot_tol);
+        expect_same_pose(d.poses[0], pose(Role::Head, Eigen::Vector3d(pos.data()), q), pos_tol, rot_tol);
       }
     }
   }
@@ -148,11 +154,11 @@ TEST(Decode, QuaternionOrderAndSignsFollowTheComponentList) {
   r.u32(6, static_cast<std::uint32_t>(-500), false);  // -y = -5 mm -> y = 5
   r.u32(10, 700, false);                              // x = 7
   r.u32(14, 900, false);                              // z = 9
-  const quat::Q q = quat::about(1, 0.3);              // w, x, y, z
-  r.u16(18, static_cast<std::uint16_t>(std::lround(q[1] * 16384)), false);  // x first
-  r.u16(20, static_cast<std::uint16_t>(std::lround(q[2] * 16384)), false);
-  r.u16(22, static_cast<std::uint16_t>(std::lround(q[3] * 16384)), false);
-  r.u16(24, static_cast<std::uint16_t>(std::lround(q[0] * 16384)), false);  // w last
+  const Eigen::Quaterniond q = about(1, 0.3);
+  r.u16(18, static_cast<std::uint16_t>(std::lround(q.x() * 16384)), false);  // x first
+  r.u16(20, static_cast<std::uint16_t>(std::lround(q.y() * 16384)), false);
+  r.u16(22, static_cast<std::uint16_t>(std::lround(q.z() * 16384)), false);
+  r.u16(24, static_cast<std::uint16_t>(std::lround(q.w() * 16384)), false);  // w last
   const DecodedReport d = decode_report(r.b, l);
   ASSERT_EQ(d.error, DecodeError::None);
   expect_same_pose(d.poses[0], pose(Role::Head, {7, 5, 9}, q));
@@ -180,7 +186,7 @@ TEST(Decode, EulerSequencesMatchTheirRotationProducts) {
     ASSERT_EQ(d.error, DecodeError::None);
     const double rad[3] = {ax * M_PI / 180, ay * M_PI / 180, az * M_PI / 180};
     const int a = seq[0] - 'x', b = seq[1] - 'x', c = seq[2] - 'x';
-    const quat::Q want = quat::mul(quat::mul(quat::about(a, rad[a]), quat::about(b, rad[b])), quat::about(c, rad[c]));
+    const Eigen::Quaterniond want = about(a, rad[a]) * about(b, rad[b]) * about(c, rad[c]);
     expect_same_pose(d.poses[0], pose(Role::Head, {0, 0, 0}, want), kPosTolMm, 1e-6);
   }
 }
@@ -194,26 +200,20 @@ TEST(Decode, AxisRemapIsAChangeOfBasisEvenForAMirror) {
     t.world_offset_mm = {10, 20, 30};
     const ReportLayout li = layout_of(ident), lr = layout_of(t);
     std::array<std::uint8_t, 32> buf{};
-    const DecodedPose device = pose(Role::Head, {100, 200, 300}, quat::about(2, 0.5));
-    encode_report(li, std::span<const DecodedPose>(&device, 1), 0, buf);  // tracker-frame bytes
+    const PoseSample device = pose(Role::Head, {100, 200, 300}, about(2, 0.5));
+    encode_report(li, std::span<const PoseSample>(&device, 1), 0, buf);  // tracker-frame bytes
     const DecodedReport d = decode_report(buf, lr);
     ASSERT_EQ(d.error, DecodeError::None);
     // Expected: p' = M p + offset; R' = M R M^T.
     const auto axes = *config::parse_signed_axes(remap, "xyz");
-    quat::M m{};
-    for (int i = 0; i < 3; ++i) m[i][axes[i].index] = axes[i].sign;
-    const quat::M rd = quat::to_matrix(device.orientation_wxyz);
-    quat::M want{};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k)
-          for (int n = 0; n < 3; ++n) want[i][j] += m[i][k] * rd[k][n] * m[j][n];
-    const quat::M got = quat::to_matrix(d.poses[0].orientation_wxyz);
+    Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 3; ++i) m(i, axes[i].index) = axes[i].sign;
+    const Eigen::Matrix3d want = m * device.orientation().toRotationMatrix() * m.transpose();
+    const Eigen::Matrix3d got = d.poses[0].orientation().toRotationMatrix();
+    const Eigen::Vector3d p = m * device.position() + Eigen::Vector3d(t.world_offset_mm.data());
     for (int i = 0; i < 3; ++i) {
-      double p = t.world_offset_mm[i];
-      for (int j = 0; j < 3; ++j) p += m[i][j] * device.position_mm[j];
-      EXPECT_NEAR(d.poses[0].position_mm[i], p, kPosTolMm);
-      for (int j = 0; j < 3; ++j) EXPECT_NEAR(got[i][j], want[i][j], 1e-3) << i << "," << j;
+      EXPECT_NEAR(d.poses[0].position_mm[i], p[i], kPosTolMm);
+      for (int j = 0; j < 3; ++j) EXPECT_NEAR(got(i, j), want(i, j), 1e-3) << i << "," << j;
     }
   }
 }
@@ -228,8 +228,8 @@ TEST(Decode, FixedOffsetSensorsShareOneUnnumberedReport) {
   t.head = {true, 0, 0};
   t.patient = {true, 0, 24};
   const ReportLayout l = layout_of(t);
-  const std::array<DecodedPose, 2> poses = {pose(Role::Head, {1, 2, 3}, quat::about(0, 0.1)),
-                                            pose(Role::Patient, {-4, -5, 6}, quat::about(1, -0.2))};
+  const std::array<PoseSample, 2> poses = {pose(Role::Head, {1, 2, 3}, about(0, 0.1)),
+                                            pose(Role::Patient, {-4, -5, 6}, about(1, -0.2))};
   std::array<std::uint8_t, 50> buf{};
   ASSERT_TRUE(encode_report(l, poses, 0xBEEF, buf));
   const DecodedReport d = decode_report(buf, l);
@@ -251,10 +251,10 @@ TEST(Decode, EncoderRoundTripsThroughEveryConvention) {
   t.axis_remap = "-y,x,z";
   const ReportLayout l = layout_of(t);
   for (double a = -3.0; a <= 3.0; a += 0.37) {
-    const DecodedPose p = pose(Role::Patient, {a * 100, -a * 50, 1000 + a},
-                               quat::mul(quat::about(2, a), quat::mul(quat::about(0, 0.4 * a), quat::about(1, 0.3))));
+    const PoseSample p = pose(Role::Patient, {a * 100, -a * 50, 1000 + a},
+                               about(2, a) * about(0, 0.4 * a) * about(1, 0.3));
     std::array<std::uint8_t, 32> buf{};
-    ASSERT_TRUE(encode_report(l, std::span<const DecodedPose>(&p, 1), 7, buf));
+    ASSERT_TRUE(encode_report(l, std::span<const PoseSample>(&p, 1), 7, buf));
     const DecodedReport d = decode_report(buf, l);
     ASSERT_EQ(d.error, DecodeError::None);
     expect_same_pose(d.poses[0], p, kPosTolMm, 1e-4);
@@ -265,8 +265,8 @@ TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
   const config::TrackerSettings t;
   const ReportLayout l = layout_of(t);
   std::array<std::uint8_t, 32> good{};
-  const DecodedPose p = pose(Role::Head, {1, 2, 3}, {1, 0, 0, 0});
-  ASSERT_TRUE(encode_report(l, std::span<const DecodedPose>(&p, 1), 0, good));
+  const PoseSample p = pose(Role::Head, {1, 2, 3}, Eigen::Quaterniond::Identity());
+  ASSERT_TRUE(encode_report(l, std::span<const PoseSample>(&p, 1), 0, good));
   ASSERT_EQ(decode_report(good, l).error, DecodeError::None);
 
   EXPECT_EQ(decode_report(std::span<const std::uint8_t>(good.data(), 31), l).error, DecodeError::WrongLength);
@@ -293,7 +293,7 @@ TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
   f.report.position_scale = 1.0;
   const ReportLayout lf = layout_of(f);
   std::array<std::uint8_t, 32> fb{};
-  ASSERT_TRUE(encode_report(lf, std::span<const DecodedPose>(&p, 1), 0, fb));
+  ASSERT_TRUE(encode_report(lf, std::span<const PoseSample>(&p, 1), 0, fb));
   ASSERT_EQ(decode_report(fb, lf).error, DecodeError::None);
   for (float v : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
     const auto u = std::bit_cast<std::uint32_t>(v);

@@ -15,7 +15,6 @@
 
 #include "drivers/decode/encoder.h"
 #include "drivers/hid/hid_interface.h"
-#include "drivers/pose/quat.h"
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_reader.h"
 #include "test_data.h"
@@ -156,10 +155,10 @@ TEST_F(HidUmockdev, UnplugGoesStaleAndReplugStreamsAgainWithoutARestart) {
   ASSERT_TRUE(layout.layout);
   std::array<std::uint8_t, 32> buf{};
   auto send = [&](double x_mm, std::uint32_t ticks) {
-    DecodedPose p;
+    PoseSample p;
     p.role = Role::Patient;
     p.position_mm = {x_mm, 0, 1000};
-    encode_report(*layout.layout, std::span<const DecodedPose>(&p, 1), ticks, buf);
+    encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), ticks, buf);
     return device.write(buf);
   };
   ASSERT_TRUE(send(10.0, 1000));
@@ -197,10 +196,10 @@ TEST_F(HidUmockdev, MalformedReportsAreCountedAndNeverApplied) {
   ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
   auto layout = make_layout(hid_settings());
   std::array<std::uint8_t, 32> good{};
-  DecodedPose p;
+  PoseSample p;
   p.role = Role::Patient;
   p.position_mm = {1, 2, 3};
-  encode_report(*layout.layout, std::span<const DecodedPose>(&p, 1), 100, good);
+  encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), 100, good);
   ASSERT_TRUE(device.write(good));
   ASSERT_TRUE(eventually([&] { return t.stats().accepted == 1; }));
 
@@ -214,11 +213,11 @@ TEST_F(HidUmockdev, MalformedReportsAreCountedAndNeverApplied) {
   bad[18] = 0;  // w = 0 with x = y = z = 0: norm 0
   bad[19] = 0;
   ASSERT_TRUE(device.write(bad));
-  DecodedPose far = p;
+  PoseSample far = p;
   far.position_mm = {1, 2, 9000};  // outside the default workspace (3 m)
-  encode_report(*layout.layout, std::span<const DecodedPose>(&far, 1), 101, bad);
+  encode_report(*layout.layout, std::span<const PoseSample>(&far, 1), 101, bad);
   ASSERT_TRUE(device.write(bad));
-  encode_report(*layout.layout, std::span<const DecodedPose>(&p, 1), 50, bad);  // device time backwards
+  encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), 50, bad);  // device time backwards
   ASSERT_TRUE(device.write(bad));
   ASSERT_TRUE(eventually([&] { return t.stats().reports == 6; }));
   const TrackerStats s = t.stats();
@@ -247,10 +246,10 @@ TEST_F(HidUmockdev, DeliveredRateAndJitterAt16ms) {
   std::vector<std::int64_t> written_ns(n);
   auto next = std::chrono::steady_clock::now();
   for (int k = 0; k < n; ++k) {
-    DecodedPose p;
+    PoseSample p;
     p.role = Role::Head;
     p.position_mm = {static_cast<double>(k), 0, 1500};
-    encode_report(*layout.layout, std::span<const DecodedPose>(&p, 1), static_cast<std::uint32_t>(k * 16000), buf);
+    encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), static_cast<std::uint32_t>(k * 16000), buf);
     written_ns[k] = monotonic_ns();
     ASSERT_TRUE(device.write(buf));
     next += std::chrono::microseconds(16000);

@@ -15,15 +15,15 @@ TEST(MockTrajectory, PatientTurnsFromUprightToSupine) {
   const auto up = *mock_pose("upright_to_supine", Role::Patient, 0.0);
   const auto down = *mock_pose("upright_to_supine", Role::Patient, kMockTurnStartS + kMockTurnS + 1.0);
   // Upright: the lung frame is the world's (+z superior = world up).
-  EXPECT_LT(quat::angle_between(up.orientation_wxyz, {1, 0, 0, 0}), 1e-12);
+  EXPECT_LT(up.orientation().angularDistance(Eigen::Quaterniond::Identity()), 1e-12);
   // Supine: posterior (+y of the lung frame) points world down, superior points along world +y.
-  const auto posterior = quat::rotate(down.orientation_wxyz, {0, 1, 0});
-  const auto superior = quat::rotate(down.orientation_wxyz, {0, 0, 1});
-  EXPECT_NEAR(posterior[2], -1.0, 1e-12);
-  EXPECT_NEAR(superior[1], 1.0, 1e-12);
+  const Eigen::Vector3d posterior = down.orientation() * Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d superior = down.orientation() * Eigen::Vector3d::UnitZ();
+  EXPECT_NEAR(posterior.z(), -1.0, 1e-12);
+  EXPECT_NEAR(superior.y(), 1.0, 1e-12);
   // Halfway through the turn: 45 degrees.
   const auto mid = *mock_pose("upright_to_supine", Role::Patient, kMockTurnStartS + kMockTurnS / 2);
-  EXPECT_NEAR(quat::angle_between(mid.orientation_wxyz, up.orientation_wxyz), M_PI / 4, 1e-9);
+  EXPECT_NEAR(mid.orientation().angularDistance(up.orientation()), M_PI / 4, 1e-9);
   EXPECT_FALSE(mock_pose("somersault", Role::Patient, 0.0));
 }
 
@@ -31,13 +31,10 @@ TEST(MockTrajectory, HeadLooksAtThePatient) {
   for (const char* name : {"static", "upright_to_supine", "head_orbit"}) {
     for (double t : {0.0, 1.3, 4.0, 7.7}) {
       const auto head = *mock_pose(name, Role::Head, t);
-      const auto forward = quat::rotate(head.orientation_wxyz, {0, 1, 0});  // the head looks along its +y
-      quat::V to = {kMockPatientCentreMm[0] - head.position_mm[0], kMockPatientCentreMm[1] - head.position_mm[1],
-                    kMockPatientCentreMm[2] - head.position_mm[2]};
-      const double n = std::sqrt(to[0] * to[0] + to[1] * to[1] + to[2] * to[2]);
-      EXPECT_NEAR(forward[0] * to[0] / n + forward[1] * to[1] / n + forward[2] * to[2] / n, 1.0, 1e-9)
-          << name << " t=" << t;
-      EXPECT_NEAR(quat::rotate(head.orientation_wxyz, {1, 0, 0})[2], 0.0, 1e-9);  // no roll
+      const Eigen::Vector3d forward = head.orientation() * Eigen::Vector3d::UnitY();  // the head looks along its +y
+      const Eigen::Vector3d to = (Eigen::Vector3d(kMockPatientCentreMm.data()) - head.position()).normalized();
+      EXPECT_NEAR(forward.dot(to), 1.0, 1e-9) << name << " t=" << t;
+      EXPECT_NEAR((head.orientation() * Eigen::Vector3d::UnitX()).z(), 0.0, 1e-9);  // no roll
     }
   }
 }
@@ -55,7 +52,7 @@ TEST(MockReports, DecodeBackToTheTrajectory) {
       ASSERT_EQ(d.count, 1);
       const auto want = *mock_pose(t.mock_trajectory, d.poses[0].role, static_cast<double>(k) / t.mock_rate_hz);
       for (int i = 0; i < 3; ++i) EXPECT_NEAR(d.poses[0].position_mm[i], want.position_mm[i], 0.005);
-      EXPECT_LT(quat::angle_between(d.poses[0].orientation_wxyz, want.orientation_wxyz), 2e-4);
+      EXPECT_LT(d.poses[0].orientation().angularDistance(want.orientation()), 2e-4);
       EXPECT_EQ(d.device_ticks, static_cast<std::uint32_t>(std::llround(k * 16000.0)));
       ++n;
     });

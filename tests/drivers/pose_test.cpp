@@ -7,7 +7,6 @@
 
 #include "drivers/pose/mailbox.h"
 #include "drivers/pose/pose_history.h"
-#include "drivers/pose/quat.h"
 
 using namespace lungar::drivers;
 
@@ -65,7 +64,7 @@ TEST(History, PredictionExtrapolatesConstantLinearAndAngularVelocity) {
     s.t_device_ns = s.t_arrival_ns = k * 16'000'000LL;
     const double t = k * 0.016;
     s.position_mm = {v_mm_s * t, 5, 0};
-    s.orientation_wxyz = quat::about(2, w_rad_s * t);
+    s.set_orientation(Eigen::Quaterniond(Eigen::AngleAxisd(w_rad_s * t, Eigen::Vector3d::UnitZ())));
     h.push(s);
   }
   const std::int64_t now = 9 * 16'000'000LL;
@@ -74,7 +73,8 @@ TEST(History, PredictionExtrapolatesConstantLinearAndAngularVelocity) {
   EXPECT_TRUE(p.flags & kPosePredicted);
   EXPECT_NEAR(p.position_mm[0], v_mm_s * t, 1e-6);
   EXPECT_NEAR(p.position_mm[1], 5, 1e-9);
-  EXPECT_LT(quat::angle_between(p.orientation_wxyz, quat::about(2, w_rad_s * t)), 1e-9);
+  EXPECT_LT(p.orientation().angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(w_rad_s * t, Eigen::Vector3d::UnitZ()))),
+            1e-9);
   // The lead is capped.
   const PoseSample capped = predict(h, now + 1'000'000'000, 50'000'000);
   EXPECT_NEAR(capped.position_mm[0], v_mm_s * (9 * 0.016 + 0.050), 1e-6);

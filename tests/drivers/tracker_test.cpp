@@ -10,7 +10,6 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/pose/quat.h"
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_reader.h"
 #include "test_data.h"
@@ -95,7 +94,7 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
   EXPECT_EQ(s.malformed, 0u);
   // The last patient pose is supine.
   const PoseSample last = made.tracker->latest(Role::Patient, monotonic_ns());
-  EXPECT_NEAR(quat::rotate(last.orientation_wxyz, {0, 1, 0})[2], -1.0, 1e-3);
+  EXPECT_NEAR((last.orientation() * Eigen::Vector3d::UnitY()).z(), -1.0, 1e-3);
 }
 
 TEST(Tracker, NoisyRecordingWithDropoutsReplaysWithoutMalformedReports) {
@@ -130,7 +129,7 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   EXPECT_EQ(tr.state(), TrackerState::Streaming);
   const PoseSample head = tr.latest(Role::Head, monotonic_ns());
   EXPECT_TRUE(head.valid());
-  EXPECT_NEAR(quat::norm(head.orientation_wxyz), 1.0, 1e-12);
+  EXPECT_NEAR(head.orientation().norm(), 1.0, 1e-12);
   EXPECT_GE(tr.history(Role::Head).count, 2u);
   EXPECT_TRUE(tr.predicted(Role::Head, monotonic_ns() + 10'000'000, 50'000'000).valid());
   EXPECT_FALSE(tr.latest(Role::Stylus, monotonic_ns()).valid());  // disabled by default

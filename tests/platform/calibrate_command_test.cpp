@@ -44,10 +44,10 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   std::int64_t t_ns = 1'000'000'000;
   std::uint32_t ticks = 0;
   auto emit = [&](drivers::Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
-    drivers::DecodedPose pose;
+    drivers::PoseSample pose;
     pose.role = role;
-    pose.position_mm = {p.x(), p.y(), p.z()};
-    pose.orientation_wxyz = {q.w(), q.x(), q.y(), q.z()};
+    pose.set_position(p);
+    pose.set_orientation(q);
     std::fill(report.begin(), report.end(), 0);
     ASSERT_TRUE(drivers::encode_report(*layout.layout, std::span(&pose, 1), ticks, report));
     ASSERT_TRUE(writer.append(drivers::TrkSource::Hid, t_ns, report));

@@ -29,7 +29,7 @@ enum class RenderMode { Points, Mesh };
 enum class Deform { Gpu, Cpu7, Cpu1, None };
 /// Stereo strategy: deform in each eye's draw (the paper), or once into a buffer by transform feedback.
 enum class StereoStrategy { PerEye, DeformOnce };
-enum class TrackerSource { Mock, Hid, Replay };
+enum class TrackerSource { Mock, Hid, Replay, Igtl };
 /// Orientation -> force SH: exact linear combination of baked vectors, or the paper's eq. (8)-(9).
 enum class OrientationMode { Exact, PaperInterp };
 
@@ -102,10 +102,27 @@ struct HidSettings {
   std::string serial;
   std::string path;              ///< hidraw path; wins over ids when set
   double read_timeout_ms = 10.0; ///< hid_read_timeout's wait, so the thread notices stop and staleness
+  /// Feature reports sent in order (hid_send_feature_report) each time the device is opened, report id first:
+  /// for trackers that stream nothing until told to. Parsed from hex text ("0x02 0x01") by the loader.
+  std::vector<std::vector<std::uint8_t>> init_feature_reports;
 };
 
-/// How one number is stored in a report.
-enum class FieldType { I16, I32, F32, Fixed16, Fixed32 };
+/// An OpenIGTLink server (PlusServer, 3D Slicer's OpenIGTLinkIF) streaming TRANSFORM, TDATA or QTDATA messages.
+struct IgtlSettings {
+  std::string host = "127.0.0.1";
+  int port = 18944;                ///< OpenIGTLink's registered port, PlusServer's and Slicer's default
+  /// The device (or tool) name that carries each role, PLUS's naming; "" = the role is not fed.
+  std::string head = "HeadToTracker";
+  std::string patient = "PatientToTracker";
+  std::string stylus = "StylusTipToTracker";
+  double scale = 1.0;              ///< mm per unit of the received positions (PLUS and Slicer send mm)
+  double rigid_tolerance = 1e-3;   ///< a rotation part whose |R^T R - I| entries exceed this is not rigid: dropped
+  double connect_timeout_ms = 1000.0;
+};
+
+/// How one number is stored in a report. None (position only): the report carries no position (an
+/// orientation-only sensor such as an HMD's IMU); each role then uses its fixed_position_mm.
+enum class FieldType { I16, I32, F32, Fixed16, Fixed32, None };
 enum class Endian { Little, Big };
 /// How a sensor's orientation is sent: a quaternion, or three Euler (Tait-Bryan) angles.
 enum class OrientationKind { Quaternion, Euler };
@@ -115,6 +132,8 @@ struct SensorSettings {
   bool enabled = false;
   int station = 0;  ///< value of the station byte that selects this sensor (station mode only)
   int offset = 0;   ///< byte offset of this sensor's block (position, orientation) in the report
+  /// With position_type = "none": the position this role reports, in the tracker's axes (before axis_remap), mm.
+  std::array<double, 3> fixed_position_mm = {0.0, 0.0, 0.0};
 };
 
 /// The byte layout of one HID input report. Offsets are bytes from the start of what hid_read returns
@@ -158,10 +177,11 @@ struct TrackerSettings {
   std::string axis_remap = "x,y,z";  ///< world axes in terms of the tracker's: "x,-z,y" is world y = -tracker z
   std::array<double, 3> world_offset_mm = {0.0, 0.0, 0.0};  ///< tracker origin in the world, mm
   HidSettings hid;
+  IgtlSettings igtl;
   ReportSettings report;
-  SensorSettings head{true, 1, 6};
-  SensorSettings patient{true, 2, 6};
-  SensorSettings stylus{false, 3, 6};
+  SensorSettings head{true, 1, 6, {}};
+  SensorSettings patient{true, 2, 6, {}};
+  SensorSettings stylus{false, 3, 6, {}};
 };
 
 struct RegistrationSettings {
@@ -231,15 +251,24 @@ inline constexpr EnumNames<Deform, 4> kDeformNames{
     {{{Deform::Gpu, "gpu"}, {Deform::Cpu7, "cpu7"}, {Deform::Cpu1, "cpu1"}, {Deform::None, "none"}}}};
 inline constexpr EnumNames<StereoStrategy, 2> kStereoStrategyNames{
     {{{StereoStrategy::PerEye, "per_eye"}, {StereoStrategy::DeformOnce, "deform_once"}}}};
-inline constexpr EnumNames<TrackerSource, 3> kTrackerSourceNames{
-    {{{TrackerSource::Mock, "mock"}, {TrackerSource::Hid, "hid"}, {TrackerSource::Replay, "replay"}}}};
+inline constexpr EnumNames<TrackerSource, 4> kTrackerSourceNames{{{{TrackerSource::Mock, "mock"},
+                                                                   {TrackerSource::Hid, "hid"},
+                                                                   {TrackerSource::Replay, "replay"},
+                                                                   {TrackerSource::Igtl, "igtl"}}}};
 inline constexpr EnumNames<OrientationMode, 2> kOrientationModeNames{
     {{{OrientationMode::Exact, "exact"}, {OrientationMode::PaperInterp, "paper_interp"}}}};
-inline constexpr EnumNames<FieldType, 5> kFieldTypeNames{{{{FieldType::I16, "i16"},
+inline constexpr EnumNames<FieldType, 6> kFieldTypeNames{{{{FieldType::I16, "i16"},
                                                            {FieldType::I32, "i32"},
                                                            {FieldType::F32, "f32"},
                                                            {FieldType::Fixed16, "fixed16"},
-                                                           {FieldType::Fixed32, "fixed32"}}}};
+                                                           {FieldType::Fixed32, "fixed32"},
+                                                           {FieldType::None, "none"}}}};
+/// The types an orientation may have: every field type but "none".
+inline constexpr EnumNames<FieldType, 5> kOrientationFieldTypeNames{{{{FieldType::I16, "i16"},
+                                                                      {FieldType::I32, "i32"},
+                                                                      {FieldType::F32, "f32"},
+                                                                      {FieldType::Fixed16, "fixed16"},
+                                                                      {FieldType::Fixed32, "fixed32"}}}};
 inline constexpr EnumNames<Endian, 2> kEndianNames{{{{Endian::Little, "little"}, {Endian::Big, "big"}}}};
 inline constexpr EnumNames<OrientationKind, 2> kOrientationKindNames{
     {{{OrientationKind::Quaternion, "quaternion"}, {OrientationKind::Euler, "euler"}}}};

@@ -3,6 +3,7 @@
 #include "config/settings_load.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -79,10 +80,18 @@ void read_breathing(TomlSection s, BreathingSettings& b) {
   s.finish();
 }
 
-std::size_t field_bytes(FieldType t) { return (t == FieldType::I16 || t == FieldType::Fixed16) ? 2 : 4; }
+std::size_t field_bytes(FieldType t) {
+  if (t == FieldType::None) return 0;
+  return (t == FieldType::I16 || t == FieldType::Fixed16) ? 2 : 4;
+}
 
-void read_field_type(TomlSection& s, const std::string& key, FieldType& out) {
-  s.choice(key, out, kFieldTypeNames);
+/// A field type; only a position may be "none" (an orientation-only report).
+void read_field_type(TomlSection& s, const std::string& key, FieldType& out, bool may_be_none) {
+  if (may_be_none) {
+    s.choice(key, out, kFieldTypeNames);
+  } else {
+    s.choice(key, out, kOrientationFieldTypeNames);
+  }
 }
 
 void read_frac_bits(TomlSection& s, const std::string& key, int& out, FieldType type) {
@@ -115,14 +124,14 @@ void read_report(TomlSection s, ReportSettings& r) {
   }
   s.number("time_tick_us", r.time_tick_us, 1e-3, 1e6, "us");
   s.integer("position_offset", r.position_offset, 0, 1023, "bytes");
-  read_field_type(s, "position_type", r.position_type);
+  read_field_type(s, "position_type", r.position_type, true);
   read_frac_bits(s, "position_frac_bits", r.position_frac_bits, r.position_type);
   s.number("position_scale", r.position_scale, -1e6, 1e6, "mm per unit");
   if (r.position_scale == 0.0) s.fail("position_scale", "expected a non-zero scale, got 0");
   read_axes(s, "position_components", r.position_components, "xyz", "x,-z,y");
   s.choice("orientation", r.orientation, kOrientationKindNames);
   s.integer("orientation_offset", r.orientation_offset, 0, 1023, "bytes");
-  read_field_type(s, "orientation_type", r.orientation_type);
+  read_field_type(s, "orientation_type", r.orientation_type, false);
   read_frac_bits(s, "orientation_frac_bits", r.orientation_frac_bits, r.orientation_type);
   s.number("orientation_scale", r.orientation_scale, -1e6, 1e6, "per unit");
   if (r.orientation_scale == 0.0) s.fail("orientation_scale", "expected a non-zero scale, got 0");
@@ -156,6 +165,69 @@ void read_sensor(TomlSection s, SensorSettings& d) {
   s.boolean("enabled", d.enabled);
   s.integer("station", d.station, 0, 255, "(station byte value)");
   s.integer("offset", d.offset, 0, 1023, "bytes");
+  s.numbers("fixed_position_mm", d.fixed_position_mm, -1e5, 1e5, "mm");
+  s.finish();
+}
+
+/// "0x02 0x01", "02 01" or "0x02,0x01": one to 4096 bytes, each one or two hex digits with an optional 0x.
+std::optional<std::vector<std::uint8_t>> parse_hex_bytes(std::string_view text) {
+  std::vector<std::uint8_t> out;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    if (text[pos] == ' ' || text[pos] == ',' || text[pos] == '\t') {
+      ++pos;
+      continue;
+    }
+    if (text.substr(pos, 2) == "0x" || text.substr(pos, 2) == "0X") pos += 2;
+    int digits = 0, value = 0;
+    for (; pos < text.size() && std::isxdigit(static_cast<unsigned char>(text[pos])); ++pos, ++digits) {
+      value = value * 16 + (std::isdigit(static_cast<unsigned char>(text[pos])) ? text[pos] - '0'
+                                                                                : (text[pos] | 0x20) - 'a' + 10);
+    }
+    if (digits < 1 || digits > 2 || (pos < text.size() && text[pos] != ' ' && text[pos] != ',')) return std::nullopt;
+    out.push_back(static_cast<std::uint8_t>(value));
+  }
+  if (out.empty() || out.size() > 4096) return std::nullopt;
+  return out;
+}
+
+void read_hid(TomlSection hid, HidSettings& h) {
+  hid.integer("vendor_id", h.vendor_id);
+  hid.integer("product_id", h.product_id);
+  hid.text("serial", h.serial);
+  hid.text("path", h.path);
+  hid.number("read_timeout_ms", h.read_timeout_ms, 1.0, 1000.0, "ms");
+  std::vector<std::string> reports;
+  hid.texts("init_feature_reports", reports);
+  if (!reports.empty()) h.init_feature_reports.clear();
+  for (std::size_t k = 0; k < reports.size(); ++k) {
+    auto bytes = parse_hex_bytes(reports[k]);
+    if (!bytes) {
+      hid.fail("init_feature_reports", "expected hex bytes, report id first (e.g. \"0x02 0x01\"), got \"" + reports[k] +
+                                           "\" at index " + std::to_string(k));
+    }
+    h.init_feature_reports.push_back(std::move(*bytes));
+  }
+  hid.finish();
+}
+
+void read_igtl(TomlSection s, IgtlSettings& g) {
+  s.text("host", g.host);
+  if (g.host.empty()) s.fail("host", "expected a host name or address (e.g. \"127.0.0.1\"), got \"\"");
+  s.integer("port", g.port, 1, 65535, "(TCP port)");
+  const std::pair<const char*, std::string*> names[] = {{"head", &g.head}, {"patient", &g.patient}, {"stylus", &g.stylus}};
+  for (const auto& [key, name] : names) {
+    s.text(key, *name);
+    if (name->size() > 20) {  // OpenIGTLink's device and tool names are at most 20 bytes
+      s.fail(key, "expected a device name of at most 20 characters (OpenIGTLink's limit), got \"" + *name + "\"");
+    }
+  }
+  if (g.head.empty() && g.patient.empty() && g.stylus.empty()) {
+    s.fail("patient", "expected a device name for at least one of head, patient, stylus, got none");
+  }
+  s.number("scale", g.scale, 1e-6, 1e6, "mm per unit");
+  s.number("rigid_tolerance", g.rigid_tolerance, 1e-7, 0.5, "");
+  s.number("connect_timeout_ms", g.connect_timeout_ms, 10.0, 60000.0, "ms");
   s.finish();
 }
 
@@ -182,13 +254,8 @@ void read_trackers(TomlSection s, TrackerSettings& t) {
   }
   read_axes(s, "axis_remap", t.axis_remap, "xyz", "x,-z,y");
   s.numbers("world_offset_mm", t.world_offset_mm, -1e5, 1e5, "mm");
-  TomlSection hid = s.section("hid");
-  hid.integer("vendor_id", t.hid.vendor_id);
-  hid.integer("product_id", t.hid.product_id);
-  hid.text("serial", t.hid.serial);
-  hid.text("path", t.hid.path);
-  hid.number("read_timeout_ms", t.hid.read_timeout_ms, 1.0, 1000.0, "ms");
-  hid.finish();
+  read_hid(s.section("hid"), t.hid);
+  read_igtl(s.section("igtl"), t.igtl);
   read_report(s.section("report"), t.report);
   const std::pair<const char*, SensorSettings*> sensors[] = {
       {"head", &t.head}, {"patient", &t.patient}, {"stylus", &t.stylus}};
@@ -199,7 +266,10 @@ void read_trackers(TomlSection s, TrackerSettings& t) {
     const ReportSettings& r = t.report;
     const int first = r.report_id >= 0 ? 1 : 0;
     const int quat_n = r.orientation == OrientationKind::Quaternion ? 4 : 3;
-    const int end_pos = sensor->offset + r.position_offset + 3 * static_cast<int>(field_bytes(r.position_type));
+    // An orientation-only report (position_type "none") has no position field to place.
+    const int end_pos = r.position_type == FieldType::None
+                            ? sensor->offset
+                            : sensor->offset + r.position_offset + 3 * static_cast<int>(field_bytes(r.position_type));
     const int end_rot =
         sensor->offset + r.orientation_offset + quat_n * static_cast<int>(field_bytes(r.orientation_type));
     if (sensor->offset < first || std::max(end_pos, end_rot) > r.length) {

@@ -143,6 +143,20 @@ void TomlSection::text(std::string_view key, std::string& out) {
   out = s->get();
 }
 
+void TomlSection::texts(std::string_view key, std::vector<std::string>& out) {
+  const toml::node* node = find(key);
+  if (!node) return;
+  const auto* a = node->as_array();
+  if (!a) fail(key, "expected an array of strings, got " + describe(*node));
+  std::vector<std::string> v;
+  for (std::size_t k = 0; k < a->size(); ++k) {
+    const auto* s = (*a)[k].as_string();
+    if (!s) fail(key, "expected an array of strings, got " + describe((*a)[k]) + " at index " + std::to_string(k));
+    v.push_back(s->get());
+  }
+  out = std::move(v);
+}
+
 void TomlSection::choice(std::string_view key, std::string& out, std::initializer_list<std::string_view> choices) {
   const toml::node* node = find(key);
   if (!node) return;

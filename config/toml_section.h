@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -35,6 +36,8 @@ class TomlSection {
   void integer(std::string_view key, std::uint16_t& out);
   void boolean(std::string_view key, bool& out);
   void text(std::string_view key, std::string& out);
+  /// An array of strings (any length).
+  void texts(std::string_view key, std::vector<std::string>& out);
   /// A string that must be one of `choices`.
   void choice(std::string_view key, std::string& out, std::initializer_list<std::string_view> choices);
   /// A string that must be one of the names in `names` (config/settings.h's tables).

@@ -18,6 +18,11 @@ const char* to_string(DecodeError e) {
     case DecodeError::QuaternionNorm: return "quaternion norm off";
     case DecodeError::OutsideWorkspace: return "position outside the workspace";
     case DecodeError::TimeBackwards: return "device time ran backwards";
+    case DecodeError::UnknownType: return "unknown message type";
+    case DecodeError::BadCrc: return "CRC mismatch";
+    case DecodeError::Truncated: return "truncated message";
+    case DecodeError::NotRigid: return "transform not rigid";
+    case DecodeError::UnsupportedVersion: return "unsupported header version";
   }
   return "?";
 }
@@ -42,16 +47,21 @@ double read_field(const std::uint8_t* p, const FieldFormat& f, bool big) {
     case config::FieldType::I32:
     case config::FieldType::Fixed32: raw = static_cast<std::int32_t>(u); break;
     case config::FieldType::F32: raw = std::bit_cast<float>(u); break;
+    case config::FieldType::None: break;  // never read (FieldFormat::present())
   }
   return std::ldexp(raw, -f.frac_bits) * f.scale;
 }
 
-DecodeError decode_sensor(const std::uint8_t* block, const ReportLayout& l, PoseSample& out) {
-  const std::uint8_t* pp = block + l.position_offset;
-  Eigen::Vector3d device_pos;
-  for (int k = 0; k < 3; ++k) {
-    const Component c = l.position_components[k];
-    device_pos[c.index] = c.sign * read_field(pp + k * l.position.bytes(), l.position, l.big_endian);
+DecodeError decode_sensor(const std::uint8_t* report, const SensorLayout& sensor, const ReportLayout& l,
+                          PoseSample& out) {
+  const std::uint8_t* block = report + sensor.offset;
+  Eigen::Vector3d device_pos = sensor.fixed_position_mm;  // an orientation-only sensor stays where it is mounted
+  if (l.position.present()) {
+    const std::uint8_t* pp = block + l.position_offset;
+    for (int k = 0; k < 3; ++k) {
+      const Component c = l.position_components[k];
+      device_pos[c.index] = c.sign * read_field(pp + k * l.position.bytes(), l.position, l.big_endian);
+    }
   }
   const std::uint8_t* op = block + l.orientation_offset;
   Eigen::Quaterniond q;
@@ -112,12 +122,14 @@ DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLay
     r.has_time = true;
     r.device_ticks = read_uint(p + l.time_offset, l.time_bits / 8, l.big_endian);
   }
+  r.time_bits = l.time_bits;
+  r.time_tick_ns = l.time_tick_ns;
   for (int k = 0; k < l.sensor_count; ++k) {
     const SensorLayout& s = l.sensors[k];
     if (l.station_offset >= 0 && p[l.station_offset] != s.station) continue;
     PoseSample& pose = r.poses[r.count];
     pose.role = s.role;
-    const DecodeError e = decode_sensor(p + s.offset, l, pose);
+    const DecodeError e = decode_sensor(p, s, l, pose);
     if (e != DecodeError::None) return fail(e);
     ++r.count;
   }
@@ -125,20 +137,23 @@ DecodedReport decode_report(std::span<const std::uint8_t> bytes, const ReportLay
   return r;
 }
 
-std::int64_t DeviceClock::advance(std::uint32_t ticks, int bits, double tick_ns) {
-  const std::uint64_t range = bits >= 32 ? (1ull << 32) : (1ull << bits);
+std::int64_t DeviceClock::advance(std::uint64_t ticks, int bits, double tick_ns) {
+  const std::uint64_t mask = bits >= 64 ? ~0ull : (1ull << bits) - 1;
+  ticks &= mask;
   if (!started_) {
     started_ = true;
     last_ = ticks;
     total_ticks_ = 0;
     return 0;
   }
-  const std::uint64_t delta = (static_cast<std::uint64_t>(ticks) + range - last_) % range;
-  if (delta > range / 2) return -1;
+  const std::uint64_t delta = (ticks - last_) & mask;  // modulo the counter's range
+  if (delta > (mask >> 1) + 1) return -1;               // more than half the range: backwards, not a wrap
   last_ = ticks;
+  constexpr std::int64_t kSaturated = 9'000'000'000'000'000'000;  // centuries of device time
+  if (delta > static_cast<std::uint64_t>(kSaturated - total_ticks_)) return kSaturated;
   total_ticks_ += static_cast<std::int64_t>(delta);
   const double ns = static_cast<double>(total_ticks_) * tick_ns;
-  return ns < 9e18 ? static_cast<std::int64_t>(ns) : static_cast<std::int64_t>(9e18);  // centuries: saturate
+  return ns < 9e18 ? static_cast<std::int64_t>(ns) : kSaturated;
 }
 
 }  // namespace lungar::drivers

@@ -40,6 +40,7 @@ void write_field(std::uint8_t* p, double value, const FieldFormat& f, bool big) 
       break;
     }
     case config::FieldType::F32: u = std::bit_cast<std::uint32_t>(static_cast<float>(raw)); break;
+    case config::FieldType::None: return;  // no field to write
   }
   write_uint(p, u, f.bytes(), big);
 }
@@ -62,7 +63,7 @@ void encode_sensor(std::uint8_t* block, const ReportLayout& l, const PoseSample&
   // World -> tracker: p = M^T (p' - offset), q = r* q' r.
   const WorldFrame& w = l.world;
   const Eigen::Vector3d device_pos = w.remap.transpose() * (pose.position() - w.offset_mm);
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; l.position.present() && k < 3; ++k) {
     const Component c = l.position_components[k];
     write_field(block + l.position_offset + k * l.position.bytes(), c.sign * device_pos[c.index], l.position,
                 l.big_endian);

@@ -1,5 +1,5 @@
 /// @file layout_toml.cpp
-/// @brief Serialises the layout keys with full precision so that a round trip gives the same layout.
+/// @brief Serialises the layout keys (HID reports and OpenIGTLink device names) with full precision so that a round trip gives the same layout.
 #include "drivers/decode/layout_toml.h"
 
 #include <cstdio>
@@ -19,6 +19,24 @@ std::string num(double v) {
   return s;
 }
 
+/// A TOML basic string: quotes and backslashes escaped, control characters as \uXXXX.
+std::string quoted(const std::string& v) {
+  std::string out = "\"";
+  for (char c : v) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string vec(const std::array<double, 3>& v) { return "[" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + "]"; }
 
 }  // namespace
@@ -30,7 +48,7 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
     << "quat_norm_tolerance = " << num(t.quat_norm_tolerance) << "\n"
     << "workspace_min_mm = " << vec(t.workspace_min_mm) << "\n"
     << "workspace_max_mm = " << vec(t.workspace_max_mm) << "\n"
-    << "axis_remap = \"" << t.axis_remap << "\"\n"
+    << "axis_remap = " << quoted(t.axis_remap) << "\n"
     << "world_offset_mm = " << vec(t.world_offset_mm) << "\n\n"
     << "[trackers.report]\n"
     << "report_id = " << r.report_id << "\n"
@@ -56,8 +74,13 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
       {"head", &t.head}, {"patient", &t.patient}, {"stylus", &t.stylus}};
   for (const auto& [name, s] : sensors) {
     o << "\n[trackers." << name << "]\nenabled = " << (s->enabled ? "true" : "false") << "\nstation = " << s->station
-      << "\noffset = " << s->offset << "\n";
+      << "\noffset = " << s->offset << "\nfixed_position_mm = " << vec(s->fixed_position_mm) << "\n";
   }
+  // What an OpenIGTLink message decodes with: which device feeds which role, units, the rigidity tolerance.
+  const config::IgtlSettings& g = t.igtl;
+  o << "\n[trackers.igtl]\nhost = " << quoted(g.host) << "\nport = " << g.port << "\nhead = " << quoted(g.head)
+    << "\npatient = " << quoted(g.patient) << "\nstylus = " << quoted(g.stylus) << "\nscale = " << num(g.scale)
+    << "\nrigid_tolerance = " << num(g.rigid_tolerance) << "\n";
   return o.str();
 }
 

@@ -10,7 +10,8 @@
 
 namespace lungar::drivers {
 
-/// [trackers] (axis_remap, world_offset_mm, workspace, tolerance), [trackers.report] and the sensor tables.
+/// [trackers] (axis_remap, world_offset_mm, workspace, tolerance), [trackers.report], the sensor tables and
+/// [trackers.igtl] (device names, scale, rigidity tolerance).
 std::string layout_to_toml(const config::TrackerSettings& t);
 
 /// The tracker settings described by a .trk header's layout text; nullopt with `error` when it does not load.

@@ -7,6 +7,7 @@
 namespace lungar::drivers {
 
 int FieldFormat::bytes() const {
+  if (type == config::FieldType::None) return 0;
   return (type == config::FieldType::I16 || type == config::FieldType::Fixed16) ? 2 : 4;
 }
 
@@ -66,6 +67,9 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
   if (r.time_bits != 16 && r.time_bits != 32) return fail("report.time_bits", "expected 16 or 32");
   if (!(r.time_tick_us > 0)) return fail("report.time_tick_us", "expected a positive tick");
   if (r.position_scale == 0 || r.orientation_scale == 0) return fail("report", "expected non-zero scales");
+  if (r.orientation_type == config::FieldType::None) {
+    return fail("report.orientation_type", "expected a field type: only the position may be \"none\"");
+  }
   if (r.position_frac_bits < 0 || r.position_frac_bits > 31 || r.orientation_frac_bits < 0 ||
       r.orientation_frac_bits > 31) {
     return fail("report", "expected 0 to 31 fractional bits");
@@ -102,7 +106,7 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
   for (const auto& [role, s] : sensors) {
     if (!s->enabled) continue;
     const int rot_n = l.euler ? 3 : 4;
-    if (!inside(s->offset + r.position_offset, 3 * l.position.bytes()) ||
+    if ((l.position.present() && !inside(s->offset + r.position_offset, 3 * l.position.bytes())) ||
         !inside(s->offset + r.orientation_offset, rot_n * l.orientation.bytes())) {
       return fail(std::string(to_string(role)) + ".offset", "expected the sensor's fields inside the report");
     }
@@ -113,7 +117,7 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
                                                                   std::string(to_string(l.sensors[k].role)) + "'s");
       }
     }
-    l.sensors[l.sensor_count++] = {role, s->station, s->offset};
+    l.sensors[l.sensor_count++] = {role, s->station, s->offset, vec(s->fixed_position_mm)};
   }
   if (l.sensor_count == 0) return fail("head", "expected at least one enabled sensor");
   res.layout = l;

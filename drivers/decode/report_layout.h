@@ -21,7 +21,8 @@ struct FieldFormat {
   config::FieldType type = config::FieldType::I16;
   int frac_bits = 0;
   double scale = 1.0;
-  int bytes() const;
+  int bytes() const;  ///< 2 or 4; 0 for FieldType::None (no field in the report)
+  bool present() const { return type != config::FieldType::None; }
 };
 
 /// One component the device sends: which axis (x,y,z = 0..2; quaternion w,x,y,z = 0..3) and its sign.
@@ -34,6 +35,7 @@ struct SensorLayout {
   Role role = Role::Head;
   int station = 0;
   int offset = 0;
+  Eigen::Vector3d fixed_position_mm = Eigen::Vector3d::Zero();  ///< tracker axes; used when the report has none
 };
 
 /// Tracker frame -> world frame, and what a world pose must satisfy: shared by every decoder (HID reports,

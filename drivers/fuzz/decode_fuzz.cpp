@@ -68,9 +68,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   r.position_scale = (c[11] & 0x80) ? 0.01 : 1.0;
   r.orientation_scale = (r.orientation_type == config::FieldType::I16) ? 1.0 / 16384 : 1.0;
   t.axis_remap = signed_perm(kPerms3[(c[11] >> 3) % 6], c[7] >> 5);
-  t.head = {true, c[1] & 3, c[2] % 48};
-  t.patient = {(c[3] & 0x40) != 0, (c[1] >> 2) & 3, c[8] % 48};
-  t.stylus = {(c[3] & 0x80) != 0, (c[1] >> 4) & 3, c[5] % 48};
+  t.head = {true, c[1] & 3, c[2] % 48, {}};
+  t.patient = {(c[3] & 0x40) != 0, (c[1] >> 2) & 3, c[8] % 48, {}};
+  t.stylus = {(c[3] & 0x80) != 0, (c[1] >> 4) & 3, c[5] % 48, {}};
   const auto made = drivers::make_layout(t);
   if (!made.layout) {
     if (made.error.empty()) std::abort();

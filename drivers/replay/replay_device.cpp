@@ -39,7 +39,11 @@ class ReplayDevice final : public TrackerSource {
             core.tick(monotonic_ns());
           }
         }
-        core.feed(r.report, monotonic_ns());
+        if (r.source == TrkSource::Igtl) {  // an OpenIGTLink message: the same decoder as the live source
+          core.feed_igtl(r.report, monotonic_ns());
+        } else {
+          core.feed(r.report, monotonic_ns());
+        }
       }
     }
     core.set_finished();

@@ -1,9 +1,11 @@
 /// @file lungar_trk_main.cpp
 /// @brief lungar-trk: inspect (info), decode (dump as CSV or JSON lines), trim (cut) and synthesise (synth)
-/// .trk tracker logs. Errors: one line on stderr naming the file and what was expected; exit 1.
+/// .trk tracker logs, and stand in for an OpenIGTLink tracker server (serve-igtl). Errors: one line on stderr naming the file and what was expected; exit 1.
 #include <CLI/CLI.hpp>
 
+#include <atomic>
 #include <cinttypes>
+#include <csignal>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -11,9 +13,12 @@
 #include "config/settings_load.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/layout_toml.h"
+#include "drivers/igtl/igtl_decoder.h"
+#include "drivers/igtl/igtl_serve.h"
 #include "drivers/mock/mock_reports.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
+#include "config/base/log_line.h"
 #include "lungar/version.h"
 
 using namespace lungar;
@@ -83,23 +88,28 @@ int dump(const std::string& file, const std::string& format, const std::string& 
   if (!settings) return die(error);
   auto layout = make_layout(*settings);
   if (!layout.layout) return die(file + ": " + layout.error);
+  auto igtl_layout = make_igtl_layout(*settings);
+  if (!igtl_layout) return die(file + ": " + igtl_layout.error());
   const bool csv = format == "csv";
   if (csv) std::printf("record,t_arrival_ns,t_device_ns,role,status,x_mm,y_mm,z_mm,qw,qx,qy,qz\n");
   DeviceClock clock;
   std::size_t index = 0;
   for (const auto& rec : r.log->records) {
-    DecodedReport d = decode_report(rec.report, *layout.layout);
+    // An OpenIGTLink record decodes as a message, the others as HID reports (trk_format.h).
+    DecodedReport d = rec.source == TrkSource::Igtl ? decode_igtl_message(rec.report, *igtl_layout)
+                                                    : decode_report(rec.report, *layout.layout);
     std::int64_t t_dev = -1;
     if (d.error == DecodeError::None && d.has_time) {
-      t_dev = clock.advance(d.device_ticks, layout.layout->time_bits, layout.layout->time_tick_ns);
+      t_dev = clock.advance(d.device_ticks, d.time_bits, d.time_tick_ns);
       if (t_dev < 0) d.error = DecodeError::TimeBackwards;
     }
-    if (d.error != DecodeError::None) {
+    if (d.error != DecodeError::None || d.count == 0) {  // malformed, or only devices that feed no role
+      const char* status = d.error != DecodeError::None ? to_string(d.error) : "ignored";
       if (csv) {
-        std::printf("%zu,%" PRId64 ",,,%s,,,,,,,\n", index, rec.t_arrival_ns, to_string(d.error));
+        std::printf("%zu,%" PRId64 ",,,%s,,,,,,,\n", index, rec.t_arrival_ns, status);
       } else {
         std::printf("{\"record\":%zu,\"t_arrival_ns\":%" PRId64 ",\"status\":\"%s\"}\n", index, rec.t_arrival_ns,
-                    to_string(d.error));
+                    status);
       }
     }
     for (int k = 0; d.error == DecodeError::None && k < d.count; ++k) {
@@ -182,10 +192,24 @@ int synth(const std::string& out, const std::string& config_path, const std::str
   return 0;
 }
 
+std::atomic<bool> g_stop{false};
+
+int serve(const ServeIgtlOptions& o) {
+  std::signal(SIGINT, [](int) { g_stop = true; });
+  std::signal(SIGTERM, [](int) { g_stop = true; });
+  const auto log = [](const std::string& line) { log_line("lungar-trk", line); };
+  auto served = serve_igtl(o, g_stop, log, [&](int port) {
+    log("serving OpenIGTLink on " + o.address + ":" + std::to_string(port) + " (TRANSFORM " + o.head + ", " +
+        o.patient + (o.stylus.empty() ? "" : ", " + o.stylus) + "; " + o.trajectory + "); Ctrl-C stops");
+  });
+  if (!served) return die(served.error());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"lungar-trk: inspect, dump, cut and synthesise .trk tracker logs"};
+  CLI::App app{"lungar-trk: inspect, dump, cut and synthesise .trk tracker logs; serve OpenIGTLink poses"};
   app.set_version_flag("--version", std::string("lungar-trk ") + LUNGAR_VERSION);
   app.require_subcommand(1);
   std::string file, out, format = "csv", config_path, trajectory = "upright_to_supine";
@@ -211,10 +235,24 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 2000.0));
   synth_cmd->add_option("--noise-mm", noise_mm, "Gaussian position noise, mm")->check(CLI::Range(0.0, 100.0));
   synth_cmd->add_option("--dropout", dropout, "probability of dropping a report")->check(CLI::Range(0.0, 1.0));
+  ServeIgtlOptions serve_opts;
+  auto* serve_cmd = app.add_subcommand(
+      "serve-igtl", "stream a mock trajectory as OpenIGTLink TRANSFORM messages, as a PlusServer would (a stand-in "
+                    "to try `lungar --tracker igtl:HOST:PORT` without a tracker)");
+  serve_cmd->add_option("--address", serve_opts.address, "IPv4 address to listen on (0.0.0.0: every interface)");
+  serve_cmd->add_option("--port", serve_opts.port, "TCP port (0: any free one, printed)")->check(CLI::Range(0, 65535));
+  serve_cmd->add_option("--rate-hz", serve_opts.rate_hz, "messages per device per second")->check(CLI::Range(1.0, 1000.0));
+  serve_cmd->add_option("--trajectory", serve_opts.trajectory, "static | upright_to_supine | head_orbit");
+  serve_cmd->add_option("--seconds", serve_opts.seconds, "stop after this long (0: until Ctrl-C)")
+      ->check(CLI::Range(0.0, 1e6));
+  serve_cmd->add_option("--head", serve_opts.head, "device name of the head pose (\"\": not sent)");
+  serve_cmd->add_option("--patient", serve_opts.patient, "device name of the patient pose (\"\": not sent)");
+  serve_cmd->add_option("--stylus", serve_opts.stylus, "device name of the stylus pose (default: not sent)");
   CLI11_PARSE(app, argc, argv);
 
   if (info_cmd->parsed()) return info(file);
   if (dump_cmd->parsed()) return dump(file, format, config_path);
   if (cut_cmd->parsed()) return cut(file, out, from_s, to_s);
+  if (serve_cmd->parsed()) return serve(serve_opts);
   return synth(out, config_path, trajectory, seconds, rate_hz, noise_mm, dropout);
 }

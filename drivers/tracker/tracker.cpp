@@ -10,6 +10,7 @@
 
 #include "drivers/decode/layout_toml.h"
 #include "drivers/hid/hid_interface.h"
+#include "drivers/igtl/igtl_interface.h"
 #include "drivers/mock/mock_interface.h"
 #include "drivers/mock/mock_trajectory.h"
 #include "drivers/replay/replay_interface.h"
@@ -70,6 +71,11 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
     r.error = "tracker report layout: " + layout.error;
     return r;
   }
+  auto igtl_layout = make_igtl_layout(settings);
+  if (!igtl_layout) {
+    r.error = "tracker: " + igtl_layout.error();
+    return r;
+  }
   std::unique_ptr<TrackerSource> source;
   bool layout_differs = false;
   switch (settings.source) {
@@ -99,10 +105,11 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
       source = hid_create(settings);
       break;
     }
+    case config::TrackerSource::Igtl: source = igtl_create(settings); break;
   }
   TrackerOptions opts = options;
   opts.record_layout_toml = layout_to_toml(settings);
-  auto core = std::make_unique<TrackerCore>(*layout.layout, settings, opts);
+  auto core = std::make_unique<TrackerCore>(*layout.layout, *igtl_layout, settings, opts);
   if (!options.record_path.empty()) {
     std::string error;
     if (!core->start_recording(options.record_path, source->trk_description(), source->trk_source(), &error)) {

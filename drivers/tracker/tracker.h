@@ -3,7 +3,7 @@
 /// without locks, a short history for prediction, counters and the connection state.
 /// @ingroup drivers
 ///
-/// make_tracker() starts one thread that reads reports (HID, mock or replay), decodes and validates them with
+/// make_tracker() starts one thread that reads reports (HID, mock, replay or OpenIGTLink messages), decodes and validates them with
 /// the configured layout, and publishes accepted poses; malformed reports are counted and never published.
 #pragma once
 
@@ -34,6 +34,7 @@ struct TrackerStats {
   std::uint64_t opens = 0;       ///< times the device was opened (a HID device: opening until its first report)
   std::uint64_t reconnects = 0;  ///< times the device came back after being lost
   std::uint64_t recorded = 0;    ///< records written to the --record log
+  std::uint64_t ignored = 0;     ///< valid data for devices that feed no role (OpenIGTLink names not configured)
   double rate_hz = 0;            ///< accepted reports per second over the last second (all sensors together)
   std::array<double, kRoleCount> role_rate_hz{};  ///< samples per second of each role, indexed by Role
   TrackerState state = TrackerState::Disconnected;
@@ -89,8 +90,9 @@ struct TrackerResult {
   std::string error;  ///< one line naming what is wrong (layout, replay file, record file)
 };
 
-/// Builds the source named by settings.source (mock | hid | replay) and starts its thread. A HID tracker that
-/// is not plugged in is not an error: it starts disconnected and opens the device when it appears.
+/// Builds the source named by settings.source (mock | hid | replay | igtl) and starts its thread. A HID tracker
+/// that is not plugged in, or an OpenIGTLink server that is not up, is not an error: it starts disconnected and
+/// connects when the device or server appears.
 TrackerResult make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options = {});
 
 }  // namespace lungar::drivers

@@ -24,8 +24,9 @@ void default_log(const std::string& line) {
 
 }  // namespace
 
-TrackerCore::TrackerCore(const ReportLayout& layout, const config::TrackerSettings& settings, TrackerOptions options)
-    : layout_(layout), stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)), options_(std::move(options)) {
+TrackerCore::TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout,
+                         const config::TrackerSettings& settings, TrackerOptions options)
+    : layout_(layout), igtl_layout_(igtl_layout), stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)), options_(std::move(options)) {
   if (!options_.log) options_.log = default_log;
 }
 
@@ -69,20 +70,31 @@ void TrackerCore::log(int key, const char* fmt, ...) {
 }
 
 DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t t_arrival_ns) {
+  record(record_source, report, t_arrival_ns);
+  return accept(decode_report(report, layout_), report.size(), t_arrival_ns);
+}
+
+DecodeError TrackerCore::feed_igtl(std::span<const std::uint8_t> message, std::int64_t t_arrival_ns) {
+  record(TrkSource::Igtl, message, t_arrival_ns);  // the record's source says how to decode it again
+  return accept(decode_igtl_message(message, igtl_layout_), message.size(), t_arrival_ns);
+}
+
+void TrackerCore::record(TrkSource source, std::span<const std::uint8_t> bytes, std::int64_t t_arrival_ns) {
   reports_.fetch_add(1, std::memory_order_relaxed);
-  if (recording_) {
-    if (recorder_.append(record_source, t_arrival_ns, report)) {
-      recorded_.fetch_add(1, std::memory_order_relaxed);
-    } else {
-      log(-1, "recording stopped: %s", recorder_.error().c_str());
-      recording_ = false;
-    }
+  if (!recording_) return;
+  if (recorder_.append(source, t_arrival_ns, bytes)) {
+    recorded_.fetch_add(1, std::memory_order_relaxed);
+  } else {
+    log(-1, "recording stopped: %s", recorder_.error().c_str());
+    recording_ = false;
   }
-  const DecodedReport d = decode_report(report, layout_);
+}
+
+DecodeError TrackerCore::accept(const DecodedReport& d, std::size_t bytes, std::int64_t t_arrival_ns) {
   DecodeError error = d.error;
   std::int64_t t_device = t_arrival_ns;
   if (error == DecodeError::None && d.has_time) {
-    const std::int64_t t = clock_.advance(d.device_ticks, layout_.time_bits, layout_.time_tick_ns);
+    const std::int64_t t = clock_.advance(d.device_ticks, d.time_bits, d.time_tick_ns);
     if (t < 0) {
       error = DecodeError::TimeBackwards;
     } else {
@@ -95,8 +107,18 @@ DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t
   }
   if (error != DecodeError::None) {
     malformed_[static_cast<std::size_t>(error)].fetch_add(1, std::memory_order_relaxed);
-    log(static_cast<int>(error), "malformed report dropped (%zu bytes): %s", report.size(), to_string(error));
+    log(static_cast<int>(error), "malformed report dropped (%zu bytes): %s", bytes, to_string(error));
     return error;
+  }
+  if (d.ignored > 0 && ignored_.fetch_add(static_cast<std::uint64_t>(d.ignored), std::memory_order_relaxed) == 0) {
+    // Once: a server that also streams other tools (a probe, a needle) is normal, not worth a line a second.
+    log(-1, "igtl: device '%s' feeds no role (trackers.igtl.head | patient | stylus name the devices); data of "
+            "unconfigured devices is ignored",
+        d.ignored_name.data());
+  }
+  if (d.count == 0) {  // nothing for any role (only ignored devices): no pose, no change of state
+    tick(t_arrival_ns);
+    return DecodeError::None;
   }
   last_device_ns_ = t_device;
   last_arrival_ns_ = t_arrival_ns;
@@ -171,6 +193,7 @@ TrackerStats TrackerCore::stats() const {
   t.opens = opens_.load(std::memory_order_relaxed);
   t.reconnects = reconnects_.load(std::memory_order_relaxed);
   t.recorded = recorded_.load(std::memory_order_relaxed);
+  t.ignored = ignored_.load(std::memory_order_relaxed);
   t.rate_hz = rate_hz_.load(std::memory_order_relaxed);
   for (std::size_t r = 0; r < kRoleCount; ++r) t.role_rate_hz[r] = role_rate_hz_[r].load(std::memory_order_relaxed);
   t.state = state();

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "drivers/decode/decoder.h"
+#include "drivers/igtl/igtl_decoder.h"
 #include "drivers/pose/mailbox.h"
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_writer.h"
@@ -18,7 +19,8 @@ namespace lungar::drivers {
 
 class TrackerCore {
  public:
-  TrackerCore(const ReportLayout& layout, const config::TrackerSettings& settings, TrackerOptions options);
+  TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout, const config::TrackerSettings& settings,
+              TrackerOptions options);
 
   /// Opens the --record log with the device's description in its header. False with `error` on failure.
   bool start_recording(const std::string& path, const std::string& description, TrkSource source,
@@ -27,6 +29,8 @@ class TrackerCore {
   /// One raw report read at `t_arrival_ns` (monotonic). Records it, decodes it, and publishes its poses or
   /// counts why not. Allocates nothing (unless a callback or the rate-limited log does).
   DecodeError feed(std::span<const std::uint8_t> report, std::int64_t t_arrival_ns);
+  /// The same for one OpenIGTLink message (header + body, or what arrived of it), recorded as TrkSource::Igtl.
+  DecodeError feed_igtl(std::span<const std::uint8_t> message, std::int64_t t_arrival_ns);
 
   /// Between reads: streaming -> stale after stale_ms without an accepted report; the rate decays to 0.
   void tick(std::int64_t now_ns);
@@ -48,11 +52,16 @@ class TrackerCore {
   TrackerState state() const { return state_.load(std::memory_order_acquire); }
   bool finished() const { return finished_.load(std::memory_order_acquire); }
   const ReportLayout& layout() const { return layout_; }
+  const IgtlLayout& igtl_layout() const { return igtl_layout_; }
   std::int64_t stale_ns() const { return stale_ns_; }
   TrkSource record_source = TrkSource::Hid;
 
  private:
+  void record(TrkSource source, std::span<const std::uint8_t> bytes, std::int64_t t_arrival_ns);
+  DecodeError accept(const DecodedReport& d, std::size_t bytes, std::int64_t t_arrival_ns);
+
   const ReportLayout layout_;
+  const IgtlLayout igtl_layout_;
   const std::int64_t stale_ns_;
   TrackerOptions options_;
   TrkWriter recorder_;
@@ -74,7 +83,7 @@ class TrackerCore {
   // Read by any thread.
   std::array<LatestMailbox<PoseSample>, kRoleCount> latest_;
   std::array<LatestMailbox<PoseHistory>, kRoleCount> history_mail_;
-  std::atomic<std::uint64_t> reports_{0}, accepted_{0}, opens_{0}, reconnects_{0}, recorded_{0};
+  std::atomic<std::uint64_t> reports_{0}, accepted_{0}, opens_{0}, reconnects_{0}, recorded_{0}, ignored_{0};
   std::array<std::atomic<std::uint64_t>, kDecodeErrorCount> malformed_{};
   std::atomic<std::int64_t> last_accepted_ns_{0};
   std::atomic<double> rate_hz_{0};

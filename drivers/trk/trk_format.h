@@ -6,7 +6,7 @@
 ///   header : magic "LUNGATRK" (8) | version u32 (= 1) | description length u32 | description (UTF-8
 ///            "key=value" lines: vendor_id, product_id, serial, product, path, source) | layout length u32 |
 ///            layout (the TOML [trackers...] tables that describe the reports) | CRC-32 u32 of all before it
-///   record : sync u16 (0x4B52) | source u8 | reserved u8 | length u16 | t_arrival_ns u64 (CLOCK_MONOTONIC) |
+///   record : sync u16 (0x4B52) | source u8 (TrkSource) | reserved u8 | length u16 | t_arrival_ns u64 (CLOCK_MONOTONIC) |
 ///            report bytes | CRC-32 u32 of source .. report bytes
 /// A record is written with one write() on an O_APPEND descriptor, so a crash loses at most the last record,
 /// and the reader treats a short tail as the end of the log.
@@ -26,8 +26,10 @@ inline constexpr std::size_t kTrkRecordOverhead = 2 + 1 + 1 + 2 + 8 + 4;
 inline constexpr std::size_t kTrkMaxReport = 4096;  ///< hidraw's largest report
 inline constexpr std::size_t kTrkMaxText = 1 << 20;  ///< bound on description and layout texts
 
-/// Where a record's bytes came from.
-enum class TrkSource : std::uint8_t { Hid = 0, Mock = 1, Synth = 2, Replay = 3 };
+/// Where a record's bytes came from, and so how they decode: Hid, Mock, Synth and Replay records hold one HID
+/// report (decoded with [trackers.report]); Igtl records hold one OpenIGTLink message as it arrived, header and
+/// body (decoded by decode_igtl_message() with [trackers.igtl]), whichever source fed them.
+enum class TrkSource : std::uint8_t { Hid = 0, Mock = 1, Synth = 2, Replay = 3, Igtl = 4 };
 const char* to_string(TrkSource s);
 
 struct TrkHeader {

@@ -26,6 +26,7 @@ const char* to_string(TrkSource s) {
     case TrkSource::Mock: return "mock";
     case TrkSource::Synth: return "synth";
     case TrkSource::Replay: return "replay";
+    case TrkSource::Igtl: return "igtl";
   }
   return "?";
 }
@@ -118,9 +119,9 @@ TrkNext read_trk_record(std::span<const std::uint8_t> d, std::size_t off) {
     n.error = "record CRC mismatch, at byte " + std::to_string(off);
     return n;
   }
-  if (p[2] > static_cast<std::uint8_t>(TrkSource::Replay)) {
+  if (p[2] > static_cast<std::uint8_t>(TrkSource::Igtl)) {
     n.status = TrkStatus::Corrupt;
-    n.error = "expected a record source 0 to 3, got " + std::to_string(p[2]) + ", at byte " + std::to_string(off + 2);
+    n.error = "expected a record source 0 to 4, got " + std::to_string(p[2]) + ", at byte " + std::to_string(off + 2);
     return n;
   }
   n.status = TrkStatus::Ok;

@@ -3,6 +3,7 @@
 #include "platform/runtime/runtime_options.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
@@ -31,6 +32,25 @@ Status override_choice(const char* option, const std::string& text, const EnumNa
   return ok();
 }
 
+/// "igtl:HOST" or "igtl:HOST:PORT" (the config's port stands in when it is left out).
+Status override_igtl(const std::string& tracker, config::TrackerSettings& t) {
+  t.source = config::TrackerSource::Igtl;
+  const std::string rest = tracker.substr(5);
+  const std::size_t colon = rest.rfind(':');
+  const std::string host = rest.substr(0, colon);
+  if (host.empty()) return fail("--tracker: expected igtl:HOST[:PORT] with a host, got '" + tracker + "'");
+  t.igtl.host = host;
+  if (colon == std::string::npos) return ok();
+  const std::string port = rest.substr(colon + 1);
+  char* end = nullptr;
+  const long p = std::strtol(port.c_str(), &end, 10);
+  if (port.empty() || *end != '\0' || p < 1 || p > 65535) {
+    return fail("--tracker: expected a port in [1, 65535] after igtl:HOST:, got '" + port + "'");
+  }
+  t.igtl.port = static_cast<int>(p);
+  return ok();
+}
+
 Status override_tracker(const std::string& tracker, config::TrackerSettings& t) {
   if (tracker.empty()) return ok();
   if (tracker.rfind("replay:", 0) == 0 && tracker.size() > 7) {
@@ -38,9 +58,10 @@ Status override_tracker(const std::string& tracker, config::TrackerSettings& t) 
     t.replay_file = tracker.substr(7);
     return ok();
   }
+  if (tracker.rfind("igtl:", 0) == 0) return override_igtl(tracker, t);
   const auto source = config::kTrackerSourceNames.parse(tracker);
   if (!source || *source == config::TrackerSource::Replay) {
-    return fail("--tracker: expected mock, hid or replay:FILE.trk, got '" + tracker + "'");
+    return fail("--tracker: expected mock, hid, igtl[:HOST[:PORT]] or replay:FILE.trk, got '" + tracker + "'");
   }
   t.source = *source;
   return ok();
@@ -55,7 +76,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached demo lungs)");
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
-  app.add_option("--tracker", o.tracker, "tracker source: mock | replay:FILE.trk | hid (default: from the config)");
+  app.add_option("--tracker", o.tracker,
+                 "tracker source: mock | replay:FILE.trk | hid | igtl[:HOST[:PORT]] (OpenIGTLink, PlusServer or 3D "
+                 "Slicer; default: from the config)");
   app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
   app.add_option("--output", o.output,
                  "auto | window | fullscreen | headless | openxr (a headset through its OpenXR runtime)")

@@ -17,7 +17,7 @@ struct RuntimeOptions {
   std::string config_path;
   std::string asset_path;
   std::string scenario_path;      ///< breathing/orientation scenario TOML
-  std::string tracker;            ///< "mock" | "hid" | "replay:FILE"; empty: from the config
+  std::string tracker;            ///< "mock" | "hid" | "igtl[:HOST[:PORT]]" | "replay:FILE"; empty: from the config
   bool headless = false;
   bool fullscreen = false;        ///< display.output = "fullscreen" (the user unit's way to cover the HMD output)
   std::string output;             ///< a name of config::kOutputNames; empty: from the config

@@ -1,7 +1,10 @@
 // Tests of the [trackers...] schema: the report layout, sensors and validation keys, and their exact errors.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "config/settings_load.h"
 
@@ -118,7 +121,10 @@ TEST(Trackers, FixedPointBitsAreBounded) {
             "fixed16 field, got 16");
   EXPECT_EQ(error_of("[trackers.report]\nposition_type = \"u8\"\n"),
             "bad.toml:2: key 'trackers.report.position_type': expected one of \"i16\" | \"i32\" | \"f32\" | "
-            "\"fixed16\" | \"fixed32\", got the string \"u8\"");
+            "\"fixed16\" | \"fixed32\" | \"none\", got the string \"u8\"");
+  EXPECT_EQ(error_of("[trackers.report]\norientation_type = \"none\"\n"),
+            "bad.toml:2: key 'trackers.report.orientation_type': expected one of \"i16\" | \"i32\" | \"f32\" | "
+            "\"fixed16\" | \"fixed32\", got the string \"none\"");
 }
 
 TEST(Trackers, DuplicateStationsAndNoSensorsAreErrors) {
@@ -142,5 +148,84 @@ TEST(Trackers, WorkspaceAndToleranceAreChecked) {
   EXPECT_EQ(error_of("[trackers.report]\ntime_bits = 24\n"),
             "bad.toml:2: key 'trackers.report.time_bits': expected 16 or 32, got 24");
   EXPECT_EQ(error_of("[trackers.stylus]\nchannel = 3\n"),
-            "bad.toml:2: unknown key 'trackers.stylus.channel'; expected one of: enabled, offset, station");
+            "bad.toml:2: unknown key 'trackers.stylus.channel'; expected one of: enabled, fixed_position_mm, offset, "
+            "station");
+}
+
+TEST(Trackers, AnOrientationOnlyReportTakesEachRolesFixedPosition) {
+  auto r = load_settings_from_string(R"(
+[trackers.report]
+length = 16
+station_offset = -1
+time_offset = -1
+position_type = "none"
+position_offset = 900
+orientation_offset = 0
+[trackers.head]
+offset = 1
+fixed_position_mm = [10.0, -700.0, 1300.0]
+[trackers.patient]
+enabled = false
+)",
+                                     "imu.toml");
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_EQ(r.settings->trackers.report.position_type, FieldType::None);
+  EXPECT_EQ(r.settings->trackers.head.fixed_position_mm, (std::array<double, 3>{10.0, -700.0, 1300.0}));
+  EXPECT_EQ(error_of("[trackers.head]\nfixed_position_mm = [1.0, 2.0]\n"),
+            "bad.toml:2: key 'trackers.head.fixed_position_mm': expected an array of 3 numbers in [-100000, 100000] "
+            "mm, got an array of 2");
+}
+
+TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
+  auto r = load_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n", "x.toml");
+  ASSERT_TRUE(r) << r.error;
+  const auto& reports = r.settings->trackers.hid.init_feature_reports;
+  ASSERT_EQ(reports.size(), 2u);
+  EXPECT_EQ(reports[0], (std::vector<std::uint8_t>{0x02, 0x01}));
+  EXPECT_EQ(reports[1], (std::vector<std::uint8_t>{0x05, 0xFF, 0x0A}));
+  EXPECT_EQ(error_of("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"0x02 0x1G\"]\n"),
+            "bad.toml:2: key 'trackers.hid.init_feature_reports': expected hex bytes, report id first (e.g. \"0x02 "
+            "0x01\"), got \"0x02 0x1G\" at index 1");
+  EXPECT_EQ(error_of("[trackers.hid]\ninit_feature_reports = [\"\"]\n"),
+            "bad.toml:2: key 'trackers.hid.init_feature_reports': expected hex bytes, report id first (e.g. \"0x02 "
+            "0x01\"), got \"\" at index 0");
+  EXPECT_EQ(error_of("[trackers.hid]\ninit_feature_reports = [\"0x123\"]\n"),
+            "bad.toml:2: key 'trackers.hid.init_feature_reports': expected hex bytes, report id first (e.g. \"0x02 "
+            "0x01\"), got \"0x123\" at index 0");
+  EXPECT_EQ(error_of("[trackers.hid]\ninit_feature_reports = [2]\n"),
+            "bad.toml:2: key 'trackers.hid.init_feature_reports': expected an array of strings, got the integer 2 at "
+            "index 0");
+}
+
+TEST(Trackers, IgtlTableNamesTheServerAndTheDeviceOfEachRole) {
+  auto r = load_settings_from_string(R"(
+[trackers]
+source = "igtl"
+[trackers.igtl]
+host = "plus.lab"
+port = 18945
+head = ""
+patient = "ReferenceToTracker"
+scale = 1000.0
+rigid_tolerance = 0.01
+)",
+                                     "x.toml");
+  ASSERT_TRUE(r) << r.error;
+  const auto& g = r.settings->trackers.igtl;
+  EXPECT_EQ(r.settings->trackers.source, lungar::config::TrackerSource::Igtl);
+  EXPECT_EQ(g.host, "plus.lab");
+  EXPECT_EQ(g.port, 18945);
+  EXPECT_EQ(g.head, "");
+  EXPECT_EQ(g.patient, "ReferenceToTracker");
+  EXPECT_EQ(g.stylus, "StylusTipToTracker");  // the default, PLUS's naming
+  EXPECT_DOUBLE_EQ(g.scale, 1000.0);
+  EXPECT_EQ(lungar::config::TrackerSettings{}.igtl.port, 18944);
+  EXPECT_EQ(error_of("[trackers.igtl]\nport = 0\n"),
+            "bad.toml:2: key 'trackers.igtl.port': expected an integer in [1, 65535] (TCP port), got the integer 0");
+  EXPECT_EQ(error_of("[trackers.igtl]\npatient = \"ThisNameIsLongerThan20\"\n"),
+            "bad.toml:2: key 'trackers.igtl.patient': expected a device name of at most 20 characters (OpenIGTLink's "
+            "limit), got \"ThisNameIsLongerThan20\"");
+  EXPECT_EQ(error_of("[trackers.igtl]\nhead = \"\"\npatient = \"\"\nstylus = \"\"\n"),
+            "bad.toml:3: key 'trackers.igtl.patient': expected a device name for at least one of head, patient, "
+            "stylus, got none");
 }

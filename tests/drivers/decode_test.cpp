@@ -124,6 +124,7 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
               r.u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(std::llround(raw))), big);
               return 4;
             case config::FieldType::F32: r.f32(at, static_cast<float>(raw), big); return 4;
+            case config::FieldType::None: return 0;
           }
           return 0;
         };
@@ -225,8 +226,8 @@ TEST(Decode, FixedOffsetSensorsShareOneUnnumberedReport) {
   t.report.time_offset = 48;
   t.report.time_bits = 16;
   t.report.length = 50;
-  t.head = {true, 0, 0};
-  t.patient = {true, 0, 24};
+  t.head = {true, 0, 0, {}};
+  t.patient = {true, 0, 24, {}};
   const ReportLayout l = layout_of(t);
   const std::array<PoseSample, 2> poses = {pose(Role::Head, {1, 2, 3}, about(0, 0.1)),
                                             pose(Role::Patient, {-4, -5, 6}, about(1, -0.2))};

@@ -1,0 +1,22 @@
+/// @file igtl_interface.h
+/// @brief The OpenIGTLink source: a client of PlusServer or 3D Slicer's OpenIGTLinkIF (or any OpenIGTLink
+/// server) that reads TRANSFORM, TDATA and QTDATA messages and feeds their poses to the tracker pipeline.
+/// @ingroup drivers
+///
+/// disconnected -> opening (connected, no pose yet) -> streaming -> stale (no pose within stale_ms) -> ...; a
+/// closed connection goes back to disconnected and is reopened with back-off (reopen_backoff_ms, doubling up to
+/// 4 s), without a restart. Each message is recorded whole (TrkSource::Igtl) and decoded by
+/// decode_igtl_message() (igtl_decoder.h).
+#pragma once
+
+#include <memory>
+
+#include "config/settings.h"
+#include "drivers/tracker/tracker_source.h"
+
+namespace lungar::drivers {
+
+/// A source for [trackers.igtl]'s server. It never fails to start: an absent server is "disconnected".
+std::unique_ptr<TrackerSource> igtl_create(const config::TrackerSettings& settings);
+
+}  // namespace lungar::drivers

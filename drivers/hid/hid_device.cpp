@@ -116,6 +116,23 @@ class HidDevice final : public TrackerSource {
     found_ = *found;
     core.log(-1, "hid: opened %s (%04x:%04x %s %s, serial %s)", found_.path.c_str(), found_.vendor_id,
              found_.product_id, found_.manufacturer.c_str(), found_.product.c_str(), found_.serial.c_str());
+    return send_init_reports(core);
+  }
+
+  /// [trackers.hid] init_feature_reports, in order, on every open: a tracker that streams nothing until told to
+  /// forgets it when it is unplugged. A refused report closes the device; the next attempt tries again.
+  bool send_init_reports(TrackerCore& core) {
+    const auto& reports = hid_.init_feature_reports;
+    for (std::size_t k = 0; k < reports.size(); ++k) {
+      if (hid_send_feature_report(dev_, reports[k].data(), reports[k].size()) < 0) {
+        const wchar_t* why = hid_error(dev_);
+        core.log(-1, "hid: trackers.hid.init_feature_reports[%zu] (%zu bytes, report id 0x%02x) was refused by %s: %ls",
+                 k, reports[k].size(), reports[k][0], found_.path.c_str(), why ? why : L"unknown error");
+        close();
+        return false;
+      }
+    }
+    if (!reports.empty()) core.log(-1, "hid: sent %zu init feature report(s) to %s", reports.size(), found_.path.c_str());
     return true;
   }
 

@@ -274,3 +274,54 @@ TEST_F(HidUmockdev, DeliveredRateAndJitterAt16ms) {
   RecordProperty("rate_hz", std::to_string(rate));
   EXPECT_EQ(t.stats().malformed, 0u);
 }
+
+// A tracker that streams nothing until told to: the configured feature reports reach the device, in order, on
+// the first open and again on every re-open (a replugged device has forgotten them).
+TEST_F(HidUmockdev, InitFeatureReportsAreSentInOrderOnEveryOpen) {
+  config::TrackerSettings s = hid_settings();
+  s.hid.init_feature_reports = {{0x02, 0x01}, {0x05, 0x00, 0x10, 0xFF}};
+  Collector c;
+  auto made = make_tracker(s, collecting(c));
+  ASSERT_TRUE(made.tracker) << made.error;
+  Tracker& t = *made.tracker;
+  ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
+  EXPECT_EQ(device.feature_reports(), s.hid.init_feature_reports);
+  EXPECT_EQ(t.state(), TrackerState::Opening);  // told to start; nothing streamed yet
+
+  device.unplug();
+  ASSERT_TRUE(eventually([&] { return t.state() == TrackerState::Disconnected; })) << to_string(t.state());
+  ASSERT_TRUE(device.plug({})) << device.error();
+  ASSERT_TRUE(eventually([&] { return t.stats().opens == 2; })) << "state " << to_string(t.state());
+  const auto sent = device.feature_reports();
+  ASSERT_EQ(sent.size(), 4u);
+  EXPECT_EQ(sent[2], s.hid.init_feature_reports[0]);
+  EXPECT_EQ(sent[3], s.hid.init_feature_reports[1]);
+}
+
+TEST(HidUmockdevRefusing, ARefusedInitReportIsOneErrorNamingItsIndexAndNoOpen) {
+  if (!UmockdevTracker::available()) GTEST_SKIP() << "not under umockdev-wrapper";
+  UmockdevTracker device;
+  lungar::testing::UmockdevTrackerSpec spec;
+  spec.refuse_feature_reports = true;
+  ASSERT_TRUE(device.plug(spec)) << device.error();
+  config::TrackerSettings s = hid_settings();
+  s.hid.init_feature_reports = {{0x02, 0x01}};
+  std::mutex m;
+  std::vector<std::string> lines;
+  TrackerOptions o;
+  o.log = [&](const std::string& line) {
+    std::lock_guard lock(m);
+    lines.push_back(line);
+  };
+  auto made = make_tracker(s, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] { return device.feature_reports().size() >= 2; }));  // refused, then tried again
+  made.tracker->stop();
+  EXPECT_EQ(made.tracker->stats().opens, 0u);
+  std::lock_guard lock(m);
+  const auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
+    return l.find("init_feature_reports[0]") != std::string::npos;
+  });
+  ASSERT_NE(it, lines.end());
+  EXPECT_NE(it->find("(2 bytes, report id 0x02) was refused by /dev/hidraw"), std::string::npos) << *it;
+}

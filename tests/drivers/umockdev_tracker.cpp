@@ -1,14 +1,16 @@
 /// @file umockdev_tracker.cpp
-/// @brief The umockdev testbed behind UmockdevTracker: sysfs description, ioctl answers, the dev fd.
+/// @brief The umockdev testbed behind UmockdevTracker: sysfs description, an ioctl handler, the dev fd.
 #include "umockdev_tracker.h"
 
+#include <linux/hidraw.h>
+#include <sys/ioctl.h>
 #include <umockdev.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
+#include <mutex>
 #include <set>
 #include <vector>
 
@@ -18,9 +20,10 @@ struct UmockdevTracker::Impl {
   UMockdevTestbed* testbed = nullptr;
   UmockdevTrackerSpec spec;
   bool plugged = false;
-  std::string ioctl_file;
-  std::set<int> used;
-  std::vector<std::string> ioctl_files;  // node indices this testbed has created (umockdev cannot create one twice)
+  std::set<int> used;  // node indices this testbed has created (umockdev cannot create one twice)
+  // Written by umockdev's worker thread (the ioctl handler), read by the test.
+  mutable std::mutex mutex;
+  std::vector<std::vector<std::uint8_t>> feature_reports;
 };
 
 namespace {
@@ -38,7 +41,64 @@ std::string sys_base(const UmockdevTrackerSpec& s) {
          std::to_string(s.hidraw_index + 1) + ":1.0/" + hid;
 }
 
+std::vector<std::uint8_t> from_hex(const std::string& hex) {
+  std::vector<std::uint8_t> out;
+  for (std::size_t k = 0; k + 1 < hex.size(); k += 2) out.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(k, 2), nullptr, 16)));
+  return out;
+}
+
+/// Answers hidraw's ioctls as the kernel would for this device (umockdev's worker thread calls it): the report
+/// descriptor's size and bytes, the raw info, and feature reports, which it records.
+gboolean handle_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
+  auto* impl = static_cast<UmockdevTracker::Impl*>(self);
+  const gulong request = umockdev_ioctl_client_get_request(client);
+  UMockdevIoctlData* arg = umockdev_ioctl_client_get_arg(client);
+  const std::vector<std::uint8_t> desc = from_hex(vendor_report_descriptor_hex(impl->spec.report_id, impl->spec.length));
+  auto reply = [&](const void* data, std::size_t n) -> gboolean {
+    UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, n, nullptr);
+    if (!d) return FALSE;
+    std::memcpy(d->data, data, n);
+    umockdev_ioctl_client_complete(client, 0, 0);
+    return TRUE;
+  };
+  if (request == HIDIOCGRDESCSIZE) {
+    const int size = static_cast<int>(desc.size());
+    return reply(&size, sizeof size);
+  }
+  if (request == HIDIOCGRDESC) {
+    hidraw_report_descriptor d{};
+    d.size = static_cast<std::uint32_t>(desc.size());
+    std::memcpy(d.value, desc.data(), desc.size());
+    return reply(&d, sizeof d);
+  }
+  if (request == HIDIOCGRAWINFO) {
+    hidraw_devinfo info{3, static_cast<std::int16_t>(impl->spec.vendor_id), static_cast<std::int16_t>(impl->spec.product_id)};
+    return reply(&info, sizeof info);
+  }
+  if (_IOC_TYPE(request) == 'H' && _IOC_NR(request) == _IOC_NR(HIDIOCSFEATURE(0))) {
+    const std::size_t n = _IOC_SIZE(request);
+    UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, n, nullptr);
+    if (!d) return FALSE;
+    {
+      std::lock_guard lock(impl->mutex);
+      impl->feature_reports.emplace_back(d->data, d->data + n);
+    }
+    if (impl->spec.refuse_feature_reports) {
+      umockdev_ioctl_client_complete(client, -1, EPIPE);
+    } else {
+      umockdev_ioctl_client_complete(client, static_cast<glong>(n), 0);
+    }
+    return TRUE;
+  }
+  return FALSE;  // anything else: ENOTTY, as for an ioctl the device does not know
+}
+
 }  // namespace
+
+std::vector<std::vector<std::uint8_t>> UmockdevTracker::feature_reports() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->feature_reports;
+}
 
 std::string vendor_report_descriptor_hex(int report_id, int length) {
   const int count = report_id >= 0 ? length - 1 : length;
@@ -55,7 +115,6 @@ UmockdevTracker::UmockdevTracker() : impl_(std::make_unique<Impl>()) {}
 
 UmockdevTracker::~UmockdevTracker() {
   if (impl_->testbed) g_object_unref(impl_->testbed);
-  for (const auto& f : impl_->ioctl_files) std::filesystem::remove(f);
 }
 
 bool UmockdevTracker::available() {
@@ -97,16 +156,14 @@ bool UmockdevTracker::plug(const UmockdevTrackerSpec& spec) {
     if (err) g_error_free(err);
     return false;
   }
-  // hid_open_path() asks the node for the descriptor size; the ioctl file answers it.
-  const int desc_bytes = static_cast<int>(vendor_report_descriptor_hex(s.report_id, s.length).size() / 2);
-  impl_->ioctl_file = (std::filesystem::temp_directory_path() /
-                       ("lungar_umockdev_" + std::to_string(::getpid()) + "_" + node + ".ioctl"))
-                          .string();
-  impl_->ioctl_files.push_back(impl_->ioctl_file);
-  std::ofstream(impl_->ioctl_file) << "@DEV /dev/" << node << "\nHIDIOCGRDESCSIZE 0 " << hex2(desc_bytes)
-                                   << hex2(desc_bytes >> 8) << "0000\n";
-  if (!umockdev_testbed_load_ioctl(impl_->testbed, ("/dev/" + node).c_str(), impl_->ioctl_file.c_str(), &err)) {
-    error_ = std::string("umockdev_testbed_load_ioctl: ") + (err ? err->message : "failed");
+  // hid_open_path() asks the node for the descriptor size, the tracker may be sent feature reports: a handler
+  // answers (and records) the ioctls.
+  UMockdevIoctlBase* handler = UMOCKDEV_IOCTL_BASE(g_object_new(UMOCKDEV_TYPE_IOCTL_BASE, nullptr));
+  g_signal_connect(handler, "handle-ioctl", G_CALLBACK(handle_ioctl), impl_.get());
+  const bool attached = umockdev_testbed_attach_ioctl(impl_->testbed, ("/dev/" + node).c_str(), handler, &err);
+  g_object_unref(handler);
+  if (!attached) {
+    error_ = std::string("umockdev_testbed_attach_ioctl: ") + (err ? err->message : "failed");
     if (err) g_error_free(err);
     return false;
   }

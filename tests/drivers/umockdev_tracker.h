@@ -1,6 +1,6 @@
 /// @file umockdev_tracker.h
 /// @brief Test helper: an emulated hidraw tracker (umockdev) that real hidapi opens, and that a test writes
-/// raw reports into, unplugs and plugs back. The test binary must run under umockdev-wrapper
+/// raw reports into, unplugs and plugs back; it answers the hidraw ioctls and records the feature reports sent. The test binary must run under umockdev-wrapper
 /// (lungar_test_suite(... WRAPPER umockdev-wrapper)). Recipe: ../shared/notes/umockdev-hidraw.md.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace lungar::testing {
 
@@ -19,6 +20,7 @@ struct UmockdevTrackerSpec {
   int report_id = 1;    ///< -1: unnumbered reports
   int length = 32;      ///< bytes per report, the id byte included (as in config [trackers.report])
   int hidraw_index = 0; ///< the node is /dev/hidraw<index>
+  bool refuse_feature_reports = false;  ///< HIDIOCSFEATURE fails (EPIPE, a stalled control transfer)
 };
 
 class UmockdevTracker {
@@ -44,9 +46,12 @@ class UmockdevTracker {
 
   std::string dev_path() const;  ///< /dev/hidrawN
   const std::string& error() const { return error_; }
+  /// Every feature report the host sent (HIDIOCSFEATURE), in order, over all plugs: what the device received.
+  std::vector<std::vector<std::uint8_t>> feature_reports() const;
+
+  struct Impl;  ///< the testbed; named here so that the .cpp's ioctl handler can reach it
 
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
   std::string error_;
 };

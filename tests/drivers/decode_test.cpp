@@ -35,6 +35,14 @@ struct Bytes {
   void f32(std::size_t at, float v, bool big) { u32(at, std::bit_cast<std::uint32_t>(v), big); }
 };
 
+/// A default-layout report (32 bytes) with its id and the head's station byte set, the rest zero.
+Bytes head_report() {
+  Bytes r(32);
+  r.u8(0, 1);
+  r.u8(1, 1);
+  return r;
+}
+
 ReportLayout layout_of(const config::TrackerSettings& t) {
   auto r = make_layout(t);
   EXPECT_TRUE(r.layout) << r.error;
@@ -271,6 +279,9 @@ TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
   ASSERT_EQ(decode_report(good, l).error, DecodeError::None);
 
   EXPECT_EQ(decode_report(std::span<const std::uint8_t>(good.data(), 31), l).error, DecodeError::WrongLength);
+  std::vector<std::uint8_t> longer(good.begin(), good.end());
+  longer.push_back(0);  // one byte too many (a log made with another layout)
+  EXPECT_EQ(decode_report(longer, l).error, DecodeError::WrongLength);
   EXPECT_EQ(decode_report(std::span<const std::uint8_t>(), l).error, DecodeError::WrongLength);
   auto bad = good;
   bad[0] = 2;
@@ -314,6 +325,11 @@ TEST(Decode, DeviceClockUnwrapsAndRejectsBackwardsTime) {
   DeviceClock w;
   EXPECT_EQ(w.advance(0xFFFFFFF0u, 32, 1.0), 0);
   EXPECT_EQ(w.advance(0x10u, 32, 1.0), 0x20);
+  DeviceClock n;  // OpenIGTLink: 64-bit nanoseconds since 1970
+  EXPECT_EQ(n.advance(1'700'000'000'000'000'000ull, 64, 1.0), 0);
+  EXPECT_EQ(n.advance(1'700'000'000'016'666'667ull, 64, 1.0), 16'666'667);
+  EXPECT_EQ(n.advance(1'699'999'999'000'000'000ull, 64, 1.0), -1);  // a second back
+  EXPECT_EQ(n.advance(1'700'000'000'033'333'334ull, 64, 1.0), 33'333'334);
 }
 
 TEST(Decode, LayoutErrorsNameTheKey) {
@@ -328,4 +344,194 @@ TEST(Decode, LayoutErrorsNameTheKey) {
   EXPECT_EQ(make_layout(t).error, "trackers.patient.station: expected a station different from trackers.head's");
   t.report.station_offset = -1;  // without a station byte the values do not matter
   EXPECT_TRUE(make_layout(t).layout);
+}
+
+// The hole the issue found: with "w,-x,-y,-z" the device sends the conjugate, and the decoder must undo each
+// sign. Each component is negated alone, and components come in other orders, in hand-built bytes; the
+// quaternion has no zero component, so a decoder that drops any one sign (or all), or reads in the wrong
+// order, decodes another rotation.
+TEST(Decode, EachQuaternionComponentSignAndOrderIsUndone) {
+  const Eigen::Quaterniond q = Eigen::Quaterniond(0.7, 0.3, -0.5, 0.4).normalized();
+  const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+  for (const char* list : {"-w,x,y,z", "w,-x,y,z", "w,x,-y,z", "w,x,y,-z", "w,-x,-y,-z", "x,y,z,w", "z,w,y,x",
+                           "y,-x,w,z"}) {
+    SCOPED_TRACE(list);
+    config::TrackerSettings t;
+    t.report.orientation_components = list;
+    const ReportLayout l = layout_of(t);
+    Bytes r = head_report();
+    const auto axes = *config::parse_signed_axes(list, "wxyz");
+    for (int k = 0; k < 4; ++k) {  // what such a device puts on the wire: each component times its sign
+      r.u16(18 + 2 * k, static_cast<std::uint16_t>(std::lround(axes[k].sign * wxyz[axes[k].index] * 16384)), false);
+    }
+    const DecodedReport d = decode_report(r.b, l);
+    ASSERT_EQ(d.error, DecodeError::None);
+    expect_same_pose(d.poses[0], pose(Role::Head, {0, 0, 0}, q));
+  }
+}
+
+TEST(Decode, EachPositionComponentSignAndOrderIsUndone) {
+  const double xyz[3] = {123.0, -456.0, 789.0};
+  for (const char* list : {"-x,y,z", "x,-y,z", "x,y,-z", "z,x,y", "y,-z,x"}) {
+    SCOPED_TRACE(list);
+    config::TrackerSettings t;
+    t.report.position_components = list;
+    const ReportLayout l = layout_of(t);
+    Bytes r = head_report();
+    r.u16(18, 16384, false);  // identity quaternion
+    const auto axes = *config::parse_signed_axes(list, "xyz");
+    for (int k = 0; k < 3; ++k) {
+      r.u32(6 + 4 * k, static_cast<std::uint32_t>(std::lround(axes[k].sign * xyz[axes[k].index] * 100)), false);
+    }
+    const DecodedReport d = decode_report(r.b, l);
+    ASSERT_EQ(d.error, DecodeError::None);
+    expect_same_pose(d.poses[0], pose(Role::Head, {xyz[0], xyz[1], xyz[2]}, Eigen::Quaterniond::Identity()));
+  }
+}
+
+// The device time is read by hand too: its width (16 or 32 bits, the neighbouring bytes set so that a wrong
+// width shows) and its byte order, and it is ticked in the layout's unit.
+TEST(Decode, DeviceTimeWidthByteOrderAndTickAreTheLayouts) {
+  for (bool big : {false, true}) {
+    for (int bits : {16, 32}) {
+      SCOPED_TRACE(std::to_string(bits) + (big ? " big" : " little"));
+      config::TrackerSettings t;
+      t.report.endian = big ? config::Endian::Big : config::Endian::Little;
+      t.report.time_bits = bits;
+      t.report.time_tick_us = 250.0;
+      const ReportLayout l = layout_of(t);
+      Bytes r = head_report();
+      r.u32(2, 0x12345678u, big);  // a 16-bit time is the first two bytes of this
+      r.u16(18, 16384, big);       // identity quaternion
+      const DecodedReport d = decode_report(r.b, l);
+      ASSERT_EQ(d.error, DecodeError::None);
+      const std::uint64_t want = bits == 32 ? 0x12345678u : (big ? 0x1234u : 0x5678u);
+      EXPECT_EQ(d.device_ticks, want);
+      EXPECT_EQ(d.time_bits, bits);
+      EXPECT_DOUBLE_EQ(d.time_tick_ns, 250'000.0);
+    }
+  }
+}
+
+TEST(Decode, EqualRotationsComeOutWithOneSign) {
+  // q and -q are the same rotation; a device may send either. Both decode to the same numbers (w >= 0), so
+  // that equal poses compare equal (replay against live, the HIL test).
+  const config::TrackerSettings t;
+  const ReportLayout l = layout_of(t);
+  const Eigen::Quaterniond q = about(0, 2.5);  // w = cos(1.25) > 0
+  Bytes plus(32), minus(32);
+  for (Bytes* r : {&plus, &minus}) {
+    r->u8(0, 1);
+    r->u8(1, 1);
+  }
+  const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+  for (int k = 0; k < 4; ++k) {
+    plus.u16(18 + 2 * k, static_cast<std::uint16_t>(std::lround(wxyz[k] * 16384)), false);
+    minus.u16(18 + 2 * k, static_cast<std::uint16_t>(std::lround(-wxyz[k] * 16384)), false);
+  }
+  const DecodedReport a = decode_report(plus.b, l), b = decode_report(minus.b, l);
+  ASSERT_EQ(a.error, DecodeError::None);
+  ASSERT_EQ(b.error, DecodeError::None);
+  EXPECT_GE(b.poses[0].orientation_wxyz[0], 0.0);
+  EXPECT_EQ(a.poses[0].orientation_wxyz, b.poses[0].orientation_wxyz);
+}
+
+TEST(Decode, WorkspaceBoundsBothWays) {
+  config::TrackerSettings t;
+  t.workspace_min_mm = {-100, -100, 500};
+  t.workspace_max_mm = {100, 100, 1500};
+  const ReportLayout l = layout_of(t);
+  for (const auto& [p, inside] : std::vector<std::pair<Eigen::Vector3d, bool>>{
+           {{0, 0, 1000}, true}, {{0, 0, 499}, false}, {{0, 0, 1501}, false}, {{-101, 0, 1000}, false},
+           {{0, 101, 1000}, false}}) {
+    SCOPED_TRACE(p.transpose());
+    Bytes r = head_report();
+    for (int k = 0; k < 3; ++k) r.u32(6 + 4 * k, static_cast<std::uint32_t>(std::lround(p[k] * 100)), false);
+    r.u16(18, 16384, false);
+    EXPECT_EQ(decode_report(r.b, l).error, inside ? DecodeError::None : DecodeError::OutsideWorkspace);
+  }
+}
+
+// An orientation-only sensor (an HMD's IMU): no position bytes at all; each role takes its fixed position, in
+// the tracker's axes, through the same axis remap and world offset as a measured one.
+TEST(Decode, PositionNoneTakesEachRolesFixedPositionThroughTheRemap) {
+  config::TrackerSettings t;
+  t.report.report_id = -1;
+  t.report.length = 16;
+  t.report.station_offset = -1;
+  t.report.time_offset = -1;
+  t.report.position_type = config::FieldType::None;
+  t.report.position_offset = 0;
+  t.report.orientation_offset = 0;
+  t.head = {true, 0, 0, {10.0, 20.0, 1300.0}};
+  t.patient = {true, 0, 8, {0.0, -5.0, 1000.0}};
+  t.axis_remap = "x,-z,y";
+  t.world_offset_mm = {1, 2, 3};
+  const ReportLayout l = layout_of(t);
+  const Eigen::Quaterniond qh = about(2, 0.7), qp = about(1, -0.4);
+  Bytes r(16);
+  const double h[4] = {qh.w(), qh.x(), qh.y(), qh.z()}, p[4] = {qp.w(), qp.x(), qp.y(), qp.z()};
+  for (int k = 0; k < 4; ++k) {
+    r.u16(2 * k, static_cast<std::uint16_t>(std::lround(h[k] * 16384)), false);
+    r.u16(8 + 2 * k, static_cast<std::uint16_t>(std::lround(p[k] * 16384)), false);
+  }
+  const DecodedReport d = decode_report(r.b, l);
+  ASSERT_EQ(d.error, DecodeError::None);
+  ASSERT_EQ(d.count, 2);
+  Eigen::Matrix3d m;
+  m << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+  const Eigen::Vector3d offset(1, 2, 3);
+  const Eigen::Quaterniond r_proper(m);
+  expect_same_pose(d.poses[0], pose(Role::Head, m * Eigen::Vector3d(10, 20, 1300) + offset, r_proper * qh * r_proper.conjugate()));
+  expect_same_pose(d.poses[1], pose(Role::Patient, m * Eigen::Vector3d(0, -5, 1000) + offset, r_proper * qp * r_proper.conjugate()));
+  // The encoder writes no position for such a layout, and what it writes decodes to the same poses.
+  std::array<std::uint8_t, 16> buf{};
+  ASSERT_TRUE(encode_report(l, std::span<const PoseSample>(d.poses.data(), 2), 0, buf));
+  const DecodedReport again = decode_report(buf, l);
+  ASSERT_EQ(again.error, DecodeError::None);
+  expect_same_pose(again.poses[0], d.poses[0]);
+  expect_same_pose(again.poses[1], d.poses[1]);
+}
+
+TEST(Decode, EncodedEulerAnglesAreTaitBryanAsDevicesSendThem) {
+  // Devices send yaw and roll in [-180, 180] and the middle angle in [-90, 90]; the encoder (mock, synth) too.
+  config::TrackerSettings t;
+  t.report.orientation = config::OrientationKind::Euler;
+  t.report.orientation_components = "z,y,x";
+  t.report.orientation_type = config::FieldType::F32;
+  t.report.orientation_frac_bits = 0;
+  const ReportLayout l = layout_of(t);
+  for (double a = -3.0; a <= 3.0; a += 0.5) {
+    const PoseSample p = pose(Role::Head, {0, 0, 0}, about(2, a) * about(1, 0.9 * std::sin(a) * 1.5) * about(0, -a));
+    std::array<std::uint8_t, 32> buf{};
+    ASSERT_TRUE(encode_report(l, std::span<const PoseSample>(&p, 1), 0, buf));
+    float deg[3];
+    std::memcpy(deg, buf.data() + 18, sizeof deg);
+    EXPECT_LE(std::abs(deg[0]), 180.0f + 1e-3f);
+    EXPECT_LE(std::abs(deg[1]), 90.0f + 1e-3f);
+    EXPECT_LE(std::abs(deg[2]), 180.0f + 1e-3f);
+    expect_same_pose(decode_report(buf, l).poses[0], p, kPosTolMm, 1e-5);
+  }
+}
+
+TEST(Decode, FieldOffsetsInsideTheSensorBlockAreTheLayouts) {
+  config::TrackerSettings t;
+  t.report.length = 48;
+  t.report.position_offset = 14;  // position after the orientation, inside the sensor's block
+  t.report.orientation_offset = 2;
+  t.head = {true, 1, 10, {}};
+  t.patient.enabled = false;
+  const ReportLayout l = layout_of(t);
+  const Eigen::Quaterniond q = about(2, -0.8);
+  const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+  Bytes r(48);
+  r.u8(0, 1);
+  r.u8(1, 1);
+  for (int k = 0; k < 4; ++k) r.u16(12 + 2 * k, static_cast<std::uint16_t>(std::lround(wxyz[k] * 16384)), false);
+  r.u32(24, static_cast<std::uint32_t>(-12345), false);
+  r.u32(28, 6789, false);
+  r.u32(32, 100000, false);
+  const DecodedReport d = decode_report(r.b, l);
+  ASSERT_EQ(d.error, DecodeError::None);
+  expect_same_pose(d.poses[0], pose(Role::Head, {-123.45, 67.89, 1000.0}, q));
 }

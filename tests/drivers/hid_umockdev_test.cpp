@@ -18,27 +18,14 @@
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_reader.h"
 #include "test_data.h"
+#include "tracker_test_support.h"
 #include "umockdev_tracker.h"
 
 using namespace lungar;
 using namespace lungar::drivers;
-using lungar::testing::UmockdevTracker;
+using namespace lungar::testing;
 
 namespace {
-
-/// Collects every accepted sample from the tracker thread.
-struct Collector {
-  std::mutex mutex;
-  std::vector<PoseSample> samples;
-  std::size_t size() {
-    std::lock_guard lock(mutex);
-    return samples.size();
-  }
-  std::vector<PoseSample> copy() {
-    std::lock_guard lock(mutex);
-    return samples;
-  }
-};
 
 config::TrackerSettings hid_settings() {
   config::TrackerSettings t;
@@ -48,30 +35,6 @@ config::TrackerSettings hid_settings() {
   t.reopen_backoff_ms = 20;  // tests wait for reconnects; keep the back-off short
   t.stale_ms = 100;
   return t;
-}
-
-TrackerOptions collecting(Collector& c) {
-  TrackerOptions o;
-  o.on_sample = [&c](const PoseSample& s) {
-    std::lock_guard lock(c.mutex);
-    c.samples.push_back(s);
-  };
-  // Quiet unless LUNGAR_TEST_LOG is set: the states are asserted instead.
-  o.log = [](const std::string& line) {
-    if (std::getenv("LUNGAR_TEST_LOG")) std::fprintf(stderr, "%s\n", line.c_str());
-  };
-  return o;
-}
-
-/// Polls `pred` every millisecond for up to `seconds`: the tracker thread works asynchronously.
-template <typename Pred>
-bool eventually(Pred pred, double seconds = 5.0) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return pred();
 }
 
 class HidUmockdev : public ::testing::Test {
@@ -119,24 +82,8 @@ TEST_F(HidUmockdev, ReportsComeOutAsTheSamePosesAsReplay) {
   ASSERT_TRUE(eventually([&] { return via_hid.size() >= log.log->records.size(); }))
       << via_hid.size() << " of " << log.log->records.size();
 
-  config::TrackerSettings rs;
-  rs.source = config::TrackerSource::Replay;
-  rs.replay_file = file;
-  rs.replay_realtime = false;
-  Collector via_replay;
-  auto replay = make_tracker(rs, collecting(via_replay));
-  ASSERT_TRUE(replay.tracker) << replay.error;
-  ASSERT_TRUE(eventually([&] { return replay.tracker->finished(); }));
-
-  const auto a = via_hid.copy(), b = via_replay.copy();
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    SCOPED_TRACE(k);
-    EXPECT_EQ(a[k].role, b[k].role);
-    EXPECT_EQ(a[k].t_device_ns, b[k].t_device_ns);
-    EXPECT_EQ(a[k].position_mm, b[k].position_mm);  // same bytes, same decoder: bit-identical
-    EXPECT_EQ(a[k].orientation_wxyz, b[k].orientation_wxyz);
-  }
+  const auto a = via_hid.copy();
+  expect_bit_identical(a, replay_all(file));
   EXPECT_EQ(hid.tracker->stats().malformed, 0u);
   EXPECT_EQ(hid.tracker->stats().accepted, log.log->records.size());
   const double burst_s = (a.back().t_arrival_ns - a.front().t_arrival_ns) * 1e-9;

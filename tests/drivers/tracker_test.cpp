@@ -10,30 +10,20 @@
 #include <thread>
 #include <vector>
 
+#include "config/settings_load.h"
+#include "drivers/decode/layout_toml.h"
+#include "drivers/mock/mock_reports.h"
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_reader.h"
+#include "drivers/trk/trk_writer.h"
 #include "test_data.h"
+#include "tracker_test_support.h"
 
 using namespace lungar;
 using namespace lungar::drivers;
+using namespace lungar::testing;
 
 namespace {
-
-template <typename Pred>
-bool eventually(Pred pred, double seconds = 10.0) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return pred();
-}
-
-TrackerOptions quiet() {
-  TrackerOptions o;
-  o.log = [](const std::string&) {};
-  return o;
-}
 
 struct ExpectedRow {
   std::string role;
@@ -66,13 +56,8 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
   constexpr double kQuatTol = 1e-5;      // and 6 for quaternion components
   const auto expected = read_expected(lungar::testing::tracker_data("upright_to_supine.expected.csv"));
   ASSERT_EQ(expected.size(), 750u);
-  std::mutex m;
-  std::vector<PoseSample> got;
-  TrackerOptions o = quiet();
-  o.on_sample = [&](const PoseSample& s) {
-    std::lock_guard lock(m);
-    got.push_back(s);
-  };
+  Collector collected;
+  TrackerOptions o = collecting(collected);
   config::TrackerSettings t;
   t.source = config::TrackerSource::Replay;
   t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
@@ -81,6 +66,7 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
   ASSERT_TRUE(made.tracker) << made.error;
   ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
   made.tracker->stop();
+  const auto got = collected.copy();
   ASSERT_EQ(got.size(), expected.size());
   for (std::size_t k = 0; k < got.size(); ++k) {
     SCOPED_TRACE(k);
@@ -214,4 +200,69 @@ TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
   EXPECT_EQ(made.tracker->stats().malformed, 0u);  // the restart is not "time backwards"
   EXPECT_EQ(made.tracker->stats().reconnects, 0u);
   for (std::size_t k = 1; k < times.size(); ++k) ASSERT_GE(times[k], times[k - 1]) << k;
+}
+
+// Device time is counted in the layout's tick (time_tick_us), not a fixed microsecond: the mock stamps its
+// reports k / rate seconds apart in ticks of 10 us, and the samples come out k / rate seconds apart.
+TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
+  config::TrackerSettings t;
+  t.mock_rate_hz = 250;
+  t.report.time_tick_us = 10.0;
+  std::mutex m;
+  std::vector<std::int64_t> times;
+  TrackerOptions o = quiet();
+  o.on_sample = [&](const PoseSample& s) {
+    std::lock_guard lock(m);
+    if (s.role == Role::Head) times.push_back(s.t_device_ns);
+  };
+  auto made = make_tracker(t, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] {
+    std::lock_guard lock(m);
+    return times.size() >= 20;
+  }));
+  made.tracker->stop();
+  for (std::size_t k = 1; k < 20; ++k) EXPECT_EQ(times[k] - times[0], static_cast<std::int64_t>(k) * 4'000'000) << k;
+}
+
+// Replay honours an orientation-only layout: every sample of a synthesized IMU log sits at the head's fixed
+// position and turns as the trajectory did.
+TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
+  auto loaded = config::load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
+  ASSERT_TRUE(loaded) << loaded.error;
+  config::TrackerSettings t = loaded.settings->trackers;
+  t.mock_trajectory = "head_orbit";
+  const auto layout = make_layout(t);
+  ASSERT_TRUE(layout.layout) << layout.error;
+  const auto path = std::filesystem::temp_directory_path() / ("lungar_imu_" + std::to_string(::getpid()) + ".trk");
+  TrkWriter w;
+  TrkHeader h;
+  h.layout_toml = layout_to_toml(t);
+  ASSERT_TRUE(w.open(path.string(), h, TrkWriter::Mode::Atomic)) << w.error();
+  MockReports reports(t, *layout.layout);
+  for (std::int64_t k = 0; k < 50; ++k) {
+    reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
+      ASSERT_TRUE(w.append(TrkSource::Synth, k * 16'000'000, bytes));
+    });
+  }
+  ASSERT_TRUE(w.commit()) << w.error();
+  config::TrackerSettings rs = t;
+  rs.source = config::TrackerSource::Replay;
+  rs.replay_file = path.string();
+  rs.replay_realtime = false;
+  Collector collected;
+  TrackerOptions o = collecting(collected);
+  auto made = make_tracker(rs, o);
+  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
+  made.tracker->stop();
+  std::filesystem::remove(path);
+  const auto got = collected.copy();
+  ASSERT_EQ(got.size(), 50u);
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(got[k].position_mm, t.head.fixed_position_mm);
+    const PoseSample want = *mock_pose("head_orbit", Role::Head, static_cast<double>(k) / t.mock_rate_hz);
+    EXPECT_LT(got[k].orientation().angularDistance(want.orientation()), 1e-6);
+  }
 }

@@ -6,7 +6,11 @@
 #include <filesystem>
 #include <string>
 
+#include "config/settings.h"
+#include "drivers/decode/layout_toml.h"
+#include "drivers/igtl/igtl_messages.h"
 #include "drivers/trk/trk_reader.h"
+#include "drivers/trk/trk_writer.h"
 
 namespace fs = std::filesystem;
 
@@ -79,4 +83,56 @@ TEST(TrkTool, BadInputIsOneLineAndExitOne) {
   r = run("--version");
   EXPECT_EQ(r.rc, 0);
   EXPECT_EQ(r.out.rfind("lungar-trk ", 0), 0u);
+}
+
+// An orientation-only profile: synth writes reports without position bytes, and dump shows each role's fixed
+// position in the position columns (read back through the log's own layout).
+TEST(TrkTool, DumpOfAnOrientationOnlyLogShowsTheFixedPosition) {
+  const std::string a = (dir() / "imu.trk").string();
+  const std::string profile = std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml";
+  ToolRun r = run("synth " + a + " --config " + profile + " --trajectory head_orbit --seconds 0.1 --rate-hz 100");
+  ASSERT_EQ(r.rc, 0) << r.out;
+  r = run("dump " + a + " --format csv");
+  ASSERT_EQ(r.rc, 0) << r.out;
+  EXPECT_NE(r.out.find(",head,ok,0.0000,-700.0000,1300.0000,"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("patient"), std::string::npos) << r.out;  // the profile feeds the head only
+}
+
+// OpenIGTLink records (source igtl) decode as messages, each row saying what became of its message.
+TEST(TrkTool, DumpDecodesOpenIgtlinkRecordsAsMessages) {
+  namespace d = lungar::drivers;
+  const std::string a = (dir() / "igtl.trk").string();
+  d::TrkWriter w;
+  d::TrkHeader h;
+  h.description = "source=igtl\n";
+  h.layout_toml = d::layout_to_toml(lungar::config::TrackerSettings{});
+  ASSERT_TRUE(w.open(a, h, d::TrkWriter::Mode::Atomic)) << w.error();
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topRightCorner<3, 1>() = Eigen::Vector3d(10, -20, 1000);
+  const auto time = d::IgtlTime::from_ns(1'700'000'000'000'000'000ull);
+  ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'000'000'000, d::igtl_transform_message("PatientToTracker", m, time)));
+  ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'016'000'000, d::igtl_status_message("Server", time)));
+  ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'032'000'000, d::igtl_transform_message("ProbeToTracker", m, time)));
+  ASSERT_TRUE(w.commit()) << w.error();
+  ToolRun r = run("dump " + a + " --format csv");
+  ASSERT_EQ(r.rc, 0) << r.out;
+  EXPECT_NE(r.out.find("\n0,1000000000,0,patient,ok,10.0000,-20.0000,1000.0000,1.000000,0.000000,0.000000,0.000000\n"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\n1,1016000000,,,unknown message type,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n2,1032000000,,,ignored,"), std::string::npos) << r.out;
+  r = run("info " + a);
+  EXPECT_NE(r.out.find("source igtl: 3"), std::string::npos) << r.out;
+}
+
+TEST(TrkTool, ServeIgtlStopsAfterItsSecondsAndBadOptionsAreOneLine) {
+  ToolRun r = run("serve-igtl --port 0 --seconds 0.2");
+  EXPECT_EQ(r.rc, 0) << r.out;
+  EXPECT_NE(r.out.find("serving OpenIGTLink on 127.0.0.1:"), std::string::npos) << r.out;
+  r = run("serve-igtl --port 0 --trajectory cartwheel");
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_EQ(r.out, "lungar-trk: --trajectory: expected static | upright_to_supine | head_orbit, got \"cartwheel\"\n");
+  r = run("serve-igtl --address 300.1.2.3 --port 0");
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_EQ(r.out, "lungar-trk: 300.1.2.3:0: expected an IPv4 address and a port in [0, 65535]\n");
 }

@@ -215,7 +215,8 @@ void read_igtl(TomlSection s, IgtlSettings& g) {
   s.text("host", g.host);
   if (g.host.empty()) s.fail("host", "expected a host name or address (e.g. \"127.0.0.1\"), got \"\"");
   s.integer("port", g.port, 1, 65535, "(TCP port)");
-  const std::pair<const char*, std::string*> names[] = {{"head", &g.head}, {"patient", &g.patient}, {"stylus", &g.stylus}};
+  const std::pair<const char*, std::string*> names[] = {
+      {"head", &g.head}, {"patient", &g.patient}, {"stylus", &g.stylus}};
   for (const auto& [key, name] : names) {
     s.text(key, *name);
     if (name->size() > 20) {  // OpenIGTLink's device and tool names are at most 20 bytes

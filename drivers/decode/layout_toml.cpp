@@ -1,5 +1,6 @@
 /// @file layout_toml.cpp
-/// @brief Serialises the layout keys (HID reports and OpenIGTLink device names) with full precision so that a round trip gives the same layout.
+/// @brief Serialises the layout keys (HID reports and OpenIGTLink device names) with full precision so that a
+/// round trip gives the same layout.
 #include "drivers/decode/layout_toml.h"
 
 #include <cstdio>

@@ -23,12 +23,48 @@ bool components(const std::string& text, std::string_view letters, std::array<Co
 
 Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
+/// Checks that the station byte, the time and each enabled sensor's fields lie inside the report, and adds the
+/// sensors to `l`: "" or "key: what is wrong".
+std::string place_fields(const config::TrackerSettings& t, ReportLayout& l) {
+  const config::ReportSettings& r = t.report;
+  const int first = r.report_id >= 0 ? 1 : 0;
+  auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
+  if (r.station_offset >= 0 && !inside(r.station_offset, 1)) {
+    return "report.station_offset: expected a byte inside the report";
+  }
+  if (r.time_offset >= 0 && !inside(r.time_offset, r.time_bits / 8)) {
+    return "report.time_offset: expected the timestamp inside the report";
+  }
+  const std::pair<Role, const config::SensorSettings*> sensors[] = {
+      {Role::Head, &t.head}, {Role::Patient, &t.patient}, {Role::Stylus, &t.stylus}};
+  for (const auto& [role, s] : sensors) {
+    if (!s->enabled) continue;
+    const std::string name = to_string(role);
+    const int rot_n = l.euler ? 3 : 4;
+    if ((l.position.present() && !inside(s->offset + r.position_offset, 3 * l.position.bytes())) ||
+        !inside(s->offset + r.orientation_offset, rot_n * l.orientation.bytes())) {
+      return name + ".offset: expected the sensor's fields inside the report";
+    }
+    if (s->station < 0 || s->station > 255) return name + ".station: expected 0 to 255";
+    for (int k = 0; r.station_offset >= 0 && k < l.sensor_count; ++k) {
+      if (l.sensors[k].station == s->station) {
+        return name + ".station: expected a station different from trackers." + to_string(l.sensors[k].role) + "'s";
+      }
+    }
+    l.sensors[l.sensor_count++] = {role, s->station, s->offset, vec(s->fixed_position_mm)};
+  }
+  if (l.sensor_count == 0) return "head: expected at least one enabled sensor";
+  return "";
+}
+
 }  // namespace
 
 Result<WorldFrame> make_world_frame(const config::TrackerSettings& t) {
   WorldFrame w;
   std::array<Component, 3> remap{};
-  if (!components(t.axis_remap, "xyz", remap)) return fail("trackers.axis_remap: expected a signed permutation of x,y,z");
+  if (!components(t.axis_remap, "xyz", remap)) {
+    return fail("trackers.axis_remap: expected a signed permutation of x,y,z");
+  }
   w.remap.setZero();
   for (int row = 0; row < 3; ++row) w.remap(row, remap[row].index) = remap[row].sign;
   // A mirror (det -1) changes handedness; M R M^T equals (-M) R (-M)^T, and -M is a proper rotation.
@@ -93,33 +129,10 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
   }
   l.world = *world;
 
-  const int first = r.report_id >= 0 ? 1 : 0;
-  auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
-  if (r.station_offset >= 0 && !inside(r.station_offset, 1)) {
-    return fail("report.station_offset", "expected a byte inside the report");
+  if (const std::string e = place_fields(t, l); !e.empty()) {
+    res.error = "trackers." + e;
+    return res;
   }
-  if (r.time_offset >= 0 && !inside(r.time_offset, r.time_bits / 8)) {
-    return fail("report.time_offset", "expected the timestamp inside the report");
-  }
-  const std::pair<Role, const config::SensorSettings*> sensors[] = {
-      {Role::Head, &t.head}, {Role::Patient, &t.patient}, {Role::Stylus, &t.stylus}};
-  for (const auto& [role, s] : sensors) {
-    if (!s->enabled) continue;
-    const int rot_n = l.euler ? 3 : 4;
-    if ((l.position.present() && !inside(s->offset + r.position_offset, 3 * l.position.bytes())) ||
-        !inside(s->offset + r.orientation_offset, rot_n * l.orientation.bytes())) {
-      return fail(std::string(to_string(role)) + ".offset", "expected the sensor's fields inside the report");
-    }
-    if (s->station < 0 || s->station > 255) return fail(std::string(to_string(role)) + ".station", "expected 0 to 255");
-    for (int k = 0; r.station_offset >= 0 && k < l.sensor_count; ++k) {
-      if (l.sensors[k].station == s->station) {
-        return fail(std::string(to_string(role)) + ".station", "expected a station different from trackers." +
-                                                                  std::string(to_string(l.sensors[k].role)) + "'s");
-      }
-    }
-    l.sensors[l.sensor_count++] = {role, s->station, s->offset, vec(s->fixed_position_mm)};
-  }
-  if (l.sensor_count == 0) return fail("head", "expected at least one enabled sensor");
   res.layout = l;
   return res;
 }

@@ -132,7 +132,9 @@ class HidDevice final : public TrackerSource {
         return false;
       }
     }
-    if (!reports.empty()) core.log(-1, "hid: sent %zu init feature report(s) to %s", reports.size(), found_.path.c_str());
+    if (!reports.empty()) {
+      core.log(-1, "hid: sent %zu init feature report(s) to %s", reports.size(), found_.path.c_str());
+    }
     return true;
   }
 

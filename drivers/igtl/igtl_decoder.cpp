@@ -40,10 +40,14 @@ igtl_header read_header(const std::uint8_t* bytes) {
 bool body_fits(Kind kind, std::uint64_t body_size) {
   if (body_size == 0 || body_size > kIgtlMaxBody) return false;
   switch (kind) {
-    case Kind::Transform: return body_size == IGTL_TRANSFORM_SIZE;
-    case Kind::Tdata: return body_size % IGTL_TDATA_ELEMENT_SIZE == 0;
-    case Kind::Qtdata: return body_size % IGTL_QTDATA_ELEMENT_SIZE == 0;
-    case Kind::Other: break;
+    case Kind::Transform:
+      return body_size == IGTL_TRANSFORM_SIZE;
+    case Kind::Tdata:
+      return body_size % IGTL_TDATA_ELEMENT_SIZE == 0;
+    case Kind::Qtdata:
+      return body_size % IGTL_QTDATA_ELEMENT_SIZE == 0;
+    case Kind::Other:
+      break;
   }
   return false;
 }
@@ -132,14 +136,14 @@ DecodeError decode_body(Kind kind, const igtl_header& h, std::uint8_t* body, std
       const int count = static_cast<int>(n / IGTL_QTDATA_ELEMENT_SIZE);
       igtl_qtdata_convert_byte_order(e, count);
       for (int k = 0; k < count; ++k) {
-        const DecodeError err = add_element(e[k].name, l, r, [&](PoseSample& p) {
-          return pose_from_quaternion(e[k].position, e[k].quaternion, l, p);
-        });
+        const DecodeError err = add_element(
+            e[k].name, l, r, [&](PoseSample& p) { return pose_from_quaternion(e[k].position, e[k].quaternion, l, p); });
         if (err != DecodeError::None) return err;
       }
       return DecodeError::None;
     }
-    case Kind::Other: break;
+    case Kind::Other:
+      break;
   }
   return DecodeError::UnknownType;
 }

@@ -81,8 +81,8 @@ class IgtlDevice final : public TrackerSource {
   /// the pipeline. False when the connection is gone (what arrived of a message is fed first: it is counted).
   bool read_step(TrackerCore& core) {
     if (skip_ > 0) {
-      const long n = sock_.read_some(buf_.data(), static_cast<std::size_t>(std::min<std::uint64_t>(skip_, buf_.size())),
-                                     kPollMs);
+      const long n =
+          sock_.read_some(buf_.data(), static_cast<std::size_t>(std::min<std::uint64_t>(skip_, buf_.size())), kPollMs);
       if (n > 0) skip_ -= static_cast<std::uint64_t>(n);
       return n >= 0;
     }
@@ -96,7 +96,8 @@ class IgtlDevice final : public TrackerSource {
     have_ += static_cast<std::size_t>(n);
     if (have_ < need_) return true;
     if (need_ == kIgtlHeaderBytes) {
-      const IgtlHeaderInfo info = igtl_header_info(std::span<const std::uint8_t, kIgtlHeaderBytes>(buf_.data(), kIgtlHeaderBytes));
+      const IgtlHeaderInfo info =
+          igtl_header_info(std::span<const std::uint8_t, kIgtlHeaderBytes>(buf_.data(), kIgtlHeaderBytes));
       if (info.readable && info.body_size > 0) {
         need_ = kIgtlHeaderBytes + static_cast<std::size_t>(info.body_size);
         return true;

@@ -28,8 +28,7 @@ struct IgtlTime {
 std::vector<std::uint8_t> igtl_transform_message(const std::string& device, const Eigen::Matrix4d& matrix,
                                                  IgtlTime time);
 /// A TDATA message (igtl::TrackingDataMessage), one 6D element per tool.
-std::vector<std::uint8_t> igtl_tdata_message(const std::string& device, std::span<const IgtlTool> tools,
-                                             IgtlTime time);
+std::vector<std::uint8_t> igtl_tdata_message(const std::string& device, std::span<const IgtlTool> tools, IgtlTime time);
 /// A QTDATA message (igtl::QuaternionTrackingDataMessage): position and quaternion of each tool's matrix.
 std::vector<std::uint8_t> igtl_qtdata_message(const std::string& device, std::span<const IgtlTool> tools,
                                               IgtlTime time);

@@ -46,21 +46,24 @@ bool stream(TcpSocket& client, const ServeIgtlOptions& o, const std::vector<std:
 }  // namespace
 
 Status serve_igtl(const ServeIgtlOptions& o, const std::atomic<bool>& stop,
-                  const std::function<void(const std::string&)>& log, const std::function<void(int port)>& on_listening) {
+                  const std::function<void(const std::string&)>& log,
+                  const std::function<void(int port)>& on_listening) {
   if (!mock_pose(o.trajectory, Role::Patient, 0.0)) {
     return fail("--trajectory: expected static | upright_to_supine | head_orbit, got \"" + o.trajectory + "\"");
   }
   if (!(o.rate_hz > 0)) return fail("--rate-hz: expected a positive rate, got " + std::to_string(o.rate_hz));
   std::vector<std::pair<Role, std::string>> devices;
-  for (const auto& [role, name] : {std::pair{Role::Head, o.head}, {Role::Patient, o.patient}, {Role::Stylus, o.stylus}}) {
+  for (const auto& [role, name] :
+       {std::pair{Role::Head, o.head}, {Role::Patient, o.patient}, {Role::Stylus, o.stylus}}) {
     if (!name.empty()) devices.emplace_back(role, name);
   }
   auto listener = TcpListener::listen(o.address, o.port);
   if (!listener) return Error{listener.error()};
   if (on_listening) on_listening(listener->port());
-  const auto end = o.seconds > 0 ? Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                      std::chrono::duration<double>(o.seconds))
-                                 : Clock::time_point::max();
+  const auto end =
+      o.seconds > 0
+          ? Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.seconds))
+          : Clock::time_point::max();
   while (!stop.load() && Clock::now() < end) {
     auto client = listener->accept(100);
     if (!client) continue;

@@ -13,12 +13,12 @@
 namespace lungar::drivers {
 
 struct ServeIgtlOptions {
-  std::string address = "127.0.0.1";  ///< "0.0.0.0": every interface
-  int port = 18944;                   ///< 0: one the OS picks (reported through on_listening)
-  double rate_hz = 60.0;              ///< messages per device per second
+  std::string address = "127.0.0.1";             ///< "0.0.0.0": every interface
+  int port = 18944;                              ///< 0: one the OS picks (reported through on_listening)
+  double rate_hz = 60.0;                         ///< messages per device per second
   std::string trajectory = "upright_to_supine";  ///< static | upright_to_supine | head_orbit (drivers/mock)
-  double seconds = 0.0;               ///< stop after this long; 0: until `stop`
-  std::string head = "HeadToTracker";  ///< device names, PLUS's; "" = not sent
+  double seconds = 0.0;                          ///< stop after this long; 0: until `stop`
+  std::string head = "HeadToTracker";            ///< device names, PLUS's; "" = not sent
   std::string patient = "PatientToTracker";
   std::string stylus;
 };
@@ -27,6 +27,7 @@ struct ServeIgtlOptions {
 /// stamped with the wall clock; the trajectory starts again for each client. Returns when `stop` is set or
 /// `seconds` have passed; an error when it cannot listen or the trajectory is unknown.
 Status serve_igtl(const ServeIgtlOptions& o, const std::atomic<bool>& stop,
-                  const std::function<void(const std::string&)>& log, const std::function<void(int port)>& on_listening);
+                  const std::function<void(const std::string&)>& log,
+                  const std::function<void(int port)>& on_listening);
 
 }  // namespace lungar::drivers

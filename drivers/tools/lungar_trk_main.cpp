@@ -1,6 +1,7 @@
 /// @file lungar_trk_main.cpp
 /// @brief lungar-trk: inspect (info), decode (dump as CSV or JSON lines), trim (cut) and synthesise (synth)
-/// .trk tracker logs, and stand in for an OpenIGTLink tracker server (serve-igtl). Errors: one line on stderr naming the file and what was expected; exit 1.
+/// .trk tracker logs, and stand in for an OpenIGTLink tracker server (serve-igtl). Errors: one line on stderr
+/// naming the file and what was expected; exit 1.
 #include <CLI/CLI.hpp>
 
 #include <atomic>
@@ -241,7 +242,8 @@ int main(int argc, char** argv) {
                     "to try `lungar --tracker igtl:HOST:PORT` without a tracker)");
   serve_cmd->add_option("--address", serve_opts.address, "IPv4 address to listen on (0.0.0.0: every interface)");
   serve_cmd->add_option("--port", serve_opts.port, "TCP port (0: any free one, printed)")->check(CLI::Range(0, 65535));
-  serve_cmd->add_option("--rate-hz", serve_opts.rate_hz, "messages per device per second")->check(CLI::Range(1.0, 1000.0));
+  serve_cmd->add_option("--rate-hz", serve_opts.rate_hz, "messages per device per second")
+      ->check(CLI::Range(1.0, 1000.0));
   serve_cmd->add_option("--trajectory", serve_opts.trajectory, "static | upright_to_supine | head_orbit");
   serve_cmd->add_option("--seconds", serve_opts.seconds, "stop after this long (0: until Ctrl-C)")
       ->check(CLI::Range(0.0, 1e6));

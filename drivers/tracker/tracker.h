@@ -3,7 +3,8 @@
 /// without locks, a short history for prediction, counters and the connection state.
 /// @ingroup drivers
 ///
-/// make_tracker() starts one thread that reads reports (HID, mock, replay or OpenIGTLink messages), decodes and validates them with
+/// make_tracker() starts one thread that reads reports (HID, mock, replay or OpenIGTLink messages), decodes and
+/// validates them with
 /// the configured layout, and publishes accepted poses; malformed reports are counted and never published.
 #pragma once
 

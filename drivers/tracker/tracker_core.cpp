@@ -26,7 +26,10 @@ void default_log(const std::string& line) {
 
 TrackerCore::TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout,
                          const config::TrackerSettings& settings, TrackerOptions options)
-    : layout_(layout), igtl_layout_(igtl_layout), stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)), options_(std::move(options)) {
+    : layout_(layout),
+      igtl_layout_(igtl_layout),
+      stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)),
+      options_(std::move(options)) {
   if (!options_.log) options_.log = default_log;
 }
 

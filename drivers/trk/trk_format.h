@@ -6,7 +6,8 @@
 ///   header : magic "LUNGATRK" (8) | version u32 (= 1) | description length u32 | description (UTF-8
 ///            "key=value" lines: vendor_id, product_id, serial, product, path, source) | layout length u32 |
 ///            layout (the TOML [trackers...] tables that describe the reports) | CRC-32 u32 of all before it
-///   record : sync u16 (0x4B52) | source u8 (TrkSource) | reserved u8 | length u16 | t_arrival_ns u64 (CLOCK_MONOTONIC) |
+///   record : sync u16 (0x4B52) | source u8 (TrkSource) | reserved u8 | length u16 | t_arrival_ns u64
+///            (CLOCK_MONOTONIC) |
 ///            report bytes | CRC-32 u32 of source .. report bytes
 /// A record is written with one write() on an O_APPEND descriptor, so a crash loses at most the last record,
 /// and the reader treats a short tail as the end of the log.

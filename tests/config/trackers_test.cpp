@@ -177,7 +177,8 @@ enabled = false
 }
 
 TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
-  auto r = load_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n", "x.toml");
+  auto r = load_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
+                                     "x.toml");
   ASSERT_TRUE(r) << r.error;
   const auto& reports = r.settings->trackers.hid.init_feature_reports;
   ASSERT_EQ(reports.size(), 2u);

@@ -482,8 +482,10 @@ TEST(Decode, PositionNoneTakesEachRolesFixedPositionThroughTheRemap) {
   m << 1, 0, 0, 0, 0, -1, 0, 1, 0;
   const Eigen::Vector3d offset(1, 2, 3);
   const Eigen::Quaterniond r_proper(m);
-  expect_same_pose(d.poses[0], pose(Role::Head, m * Eigen::Vector3d(10, 20, 1300) + offset, r_proper * qh * r_proper.conjugate()));
-  expect_same_pose(d.poses[1], pose(Role::Patient, m * Eigen::Vector3d(0, -5, 1000) + offset, r_proper * qp * r_proper.conjugate()));
+  expect_same_pose(d.poses[0],
+                   pose(Role::Head, m * Eigen::Vector3d(10, 20, 1300) + offset, r_proper * qh * r_proper.conjugate()));
+  const Eigen::Quaterniond qp_world = r_proper * qp * r_proper.conjugate();
+  expect_same_pose(d.poses[1], pose(Role::Patient, m * Eigen::Vector3d(0, -5, 1000) + offset, qp_world));
   // The encoder writes no position for such a layout, and what it writes decodes to the same poses.
   std::array<std::uint8_t, 16> buf{};
   ASSERT_TRUE(encode_report(l, std::span<const PoseSample>(d.poses.data(), 2), 0, buf));

@@ -47,10 +47,10 @@ IgtlLayout layout(const config::TrackerSettings& t = {}) {
   return l ? *l : IgtlLayout{};
 }
 
-const Eigen::Matrix4d kPatient =
-    pose_matrix({12.5, -340.25, 1012.125}, Eigen::Quaterniond(Eigen::AngleAxisd(-1.2, Eigen::Vector3d(1, 0.2, 0).normalized())));
-const Eigen::Matrix4d kHead =
-    pose_matrix({-30.0, -700.5, 1300.75}, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, -1, 0.5).normalized())));
+const Eigen::Matrix4d kPatient = pose_matrix(
+    {12.5, -340.25, 1012.125}, Eigen::Quaterniond(Eigen::AngleAxisd(-1.2, Eigen::Vector3d(1, 0.2, 0).normalized())));
+const Eigen::Matrix4d kHead = pose_matrix(
+    {-30.0, -700.5, 1300.75}, Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.3, -1, 0.5).normalized())));
 
 /// Rewrites the header's 12-byte type name (the header is not covered by the CRC).
 void set_type(std::vector<std::uint8_t>& msg, const char* type) {
@@ -61,7 +61,8 @@ void set_type(std::vector<std::uint8_t>& msg, const char* type) {
 }  // namespace
 
 TEST(IgtlDecode, TransformOfAMappedDeviceIsItsPoseWithItsTimestamp) {
-  const auto msg = igtl_transform_message("PatientToTracker", kPatient, IgtlTime::from_ns(1'700'000'000'250'000'000ull));
+  const auto msg =
+      igtl_transform_message("PatientToTracker", kPatient, IgtlTime::from_ns(1'700'000'000'250'000'000ull));
   ASSERT_EQ(msg.size(), kIgtlHeaderBytes + 48);
   const DecodedReport d = decode_igtl_message(msg, layout());
   ASSERT_EQ(d.error, DecodeError::None) << to_string(d.error);
@@ -78,7 +79,8 @@ TEST(IgtlDecode, TransformOfAMappedDeviceIsItsPoseWithItsTimestamp) {
 }
 
 TEST(IgtlDecode, TdataAndQtdataCarrySeveralToolsEachToItsRole) {
-  const std::vector<IgtlTool> tools = {{"HeadToTracker", kHead}, {"ProbeToTracker", kHead}, {"PatientToTracker", kPatient}};
+  const std::vector<IgtlTool> tools = {
+      {"HeadToTracker", kHead}, {"ProbeToTracker", kHead}, {"PatientToTracker", kPatient}};
   for (bool quaternion : {false, true}) {
     SCOPED_TRACE(quaternion ? "QTDATA" : "TDATA");
     const auto msg = quaternion ? igtl_qtdata_message("Tracker", tools, {}) : igtl_tdata_message("Tracker", tools, {});
@@ -98,7 +100,8 @@ TEST(IgtlDecode, ConfiguredNamesScaleAndAxisRemapApply) {
   t.igtl.scale = 1000.0;  // a sender in metres
   t.axis_remap = "x,-z,y";
   t.world_offset_mm = {0, 0, 500};
-  const Eigen::Matrix4d metres = pose_matrix({0.25, -0.5, 0.125}, Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())));
+  const Eigen::Matrix4d metres =
+      pose_matrix({0.25, -0.5, 0.125}, Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())));
   EXPECT_EQ(decode_igtl_message(igtl_transform_message("PatientToTracker", metres, {}), layout(t)).count, 0);
   const DecodedReport d = decode_igtl_message(igtl_transform_message("Reference", metres, {}), layout(t));
   ASSERT_EQ(d.count, 1);
@@ -175,7 +178,8 @@ TEST(IgtlDecode, HeaderInfoSaysWhichBodiesAreWorthReading) {
 TEST(IgtlDecode, LayoutErrorsNameTheKey) {
   config::TrackerSettings t;
   t.igtl.head = "ThisNameIsLongerThan20";
-  EXPECT_EQ(make_igtl_layout(t).error(), "trackers.igtl.head: expected at most 20 characters, got \"ThisNameIsLongerThan20\"");
+  EXPECT_EQ(make_igtl_layout(t).error(),
+            "trackers.igtl.head: expected at most 20 characters, got \"ThisNameIsLongerThan20\"");
   t = {};
   t.axis_remap = "x,y";
   EXPECT_EQ(make_igtl_layout(t).error(), "trackers.axis_remap: expected a signed permutation of x,y,z");

@@ -61,7 +61,8 @@ config::TrackerSettings igtl_settings(int port) {
 Eigen::Matrix4d pose_at(double t_s, double phase) {
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.topLeftCorner<3, 3>() =
-      Eigen::AngleAxisd(0.5 * std::sin(t_s + phase), Eigen::Vector3d(1, 0.5 * phase, 0.2).normalized()).toRotationMatrix();
+      Eigen::AngleAxisd(0.5 * std::sin(t_s + phase), Eigen::Vector3d(1, 0.5 * phase, 0.2).normalized())
+          .toRotationMatrix();
   m.topRightCorner<3, 1>() = Eigen::Vector3d(100 * std::cos(t_s) + 0.123456, -700 + phase, 1000 + 10 * t_s);
   return m;
 }
@@ -74,9 +75,9 @@ void expect_sent(const PoseSample& got, const Eigen::Matrix4d& sent) {
 }
 
 std::uint64_t unix_ns() {
-  return static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                        std::chrono::system_clock::now().time_since_epoch())
-                                        .count());
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
 }
 
 }  // namespace
@@ -116,9 +117,10 @@ TEST(IgtlSource, TwoDevicesAt60HzArriveAsSentAtTheSentRate) {
   const double span_s = (s.back().t_arrival_ns - s[1].t_arrival_ns) * 1e-9;
   const double rate_hz = (n - 1) / span_s;
   std::sort(age_ms.begin(), age_ms.end());
-  std::printf("[ MEASURED ] igtl on loopback: %d ticks of 2 TRANSFORMs, patient rate %.2f Hz, send -> pose p50 %.3f ms, "
-              "p99 %.3f ms, max %.3f ms\n",
-              n, rate_hz, age_ms[age_ms.size() / 2], age_ms[age_ms.size() * 99 / 100], age_ms.back());
+  std::printf(
+      "[ MEASURED ] igtl on loopback: %d ticks of 2 TRANSFORMs, patient rate %.2f Hz, send -> pose p50 %.3f ms, "
+      "p99 %.3f ms, max %.3f ms\n",
+      n, rate_hz, age_ms[age_ms.size() / 2], age_ms[age_ms.size() * 99 / 100], age_ms.back());
   // Generous on purpose (a loaded 2-core machine delays the sender's sleeps, never the count): 60 Hz +-25 %.
   EXPECT_NEAR(rate_hz, 60.0, 15.0);
   const TrackerStats st = made.tracker->stats();

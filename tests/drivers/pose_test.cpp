@@ -73,8 +73,8 @@ TEST(History, PredictionExtrapolatesConstantLinearAndAngularVelocity) {
   EXPECT_TRUE(p.flags & kPosePredicted);
   EXPECT_NEAR(p.position_mm[0], v_mm_s * t, 1e-6);
   EXPECT_NEAR(p.position_mm[1], 5, 1e-9);
-  EXPECT_LT(p.orientation().angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(w_rad_s * t, Eigen::Vector3d::UnitZ()))),
-            1e-9);
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(w_rad_s * t, Eigen::Vector3d::UnitZ()));
+  EXPECT_LT(p.orientation().angularDistance(turned), 1e-9);
   // The lead is capped.
   const PoseSample capped = predict(h, now + 1'000'000'000, 50'000'000);
   EXPECT_NEAR(capped.position_mm[0], v_mm_s * (9 * 0.016 + 0.050), 1e-6);

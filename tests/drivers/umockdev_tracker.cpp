@@ -43,7 +43,9 @@ std::string sys_base(const UmockdevTrackerSpec& s) {
 
 std::vector<std::uint8_t> from_hex(const std::string& hex) {
   std::vector<std::uint8_t> out;
-  for (std::size_t k = 0; k + 1 < hex.size(); k += 2) out.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(k, 2), nullptr, 16)));
+  for (std::size_t k = 0; k + 1 < hex.size(); k += 2) {
+    out.push_back(static_cast<std::uint8_t>(std::stoi(hex.substr(k, 2), nullptr, 16)));
+  }
   return out;
 }
 
@@ -53,7 +55,8 @@ gboolean handle_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer 
   auto* impl = static_cast<UmockdevTracker::Impl*>(self);
   const gulong request = umockdev_ioctl_client_get_request(client);
   UMockdevIoctlData* arg = umockdev_ioctl_client_get_arg(client);
-  const std::vector<std::uint8_t> desc = from_hex(vendor_report_descriptor_hex(impl->spec.report_id, impl->spec.length));
+  const std::vector<std::uint8_t> desc =
+      from_hex(vendor_report_descriptor_hex(impl->spec.report_id, impl->spec.length));
   auto reply = [&](const void* data, std::size_t n) -> gboolean {
     UMockdevIoctlData* d = umockdev_ioctl_data_resolve(arg, 0, n, nullptr);
     if (!d) return FALSE;
@@ -72,7 +75,8 @@ gboolean handle_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer 
     return reply(&d, sizeof d);
   }
   if (request == HIDIOCGRAWINFO) {
-    hidraw_devinfo info{3, static_cast<std::int16_t>(impl->spec.vendor_id), static_cast<std::int16_t>(impl->spec.product_id)};
+    hidraw_devinfo info{3, static_cast<std::int16_t>(impl->spec.vendor_id),
+                        static_cast<std::int16_t>(impl->spec.product_id)};
     return reply(&info, sizeof info);
   }
   if (_IOC_TYPE(request) == 'H' && _IOC_NR(request) == _IOC_NR(HIDIOCSFEATURE(0))) {

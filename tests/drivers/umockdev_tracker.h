@@ -1,7 +1,8 @@
 /// @file umockdev_tracker.h
 /// @brief Test helper: an emulated hidraw tracker (umockdev) that real hidapi opens, and that a test writes
-/// raw reports into, unplugs and plugs back; it answers the hidraw ioctls and records the feature reports sent. The test binary must run under umockdev-wrapper
-/// (lungar_test_suite(... WRAPPER umockdev-wrapper)). Recipe: ../shared/notes/umockdev-hidraw.md.
+/// raw reports into, unplugs and plugs back; it answers the hidraw ioctls and records the feature reports sent.
+/// The test binary must run under umockdev-wrapper (lungar_test_suite(... WRAPPER umockdev-wrapper)). Recipe:
+/// ../shared/notes/umockdev-hidraw.md.
 #pragma once
 
 #include <cstdint>

@@ -168,9 +168,9 @@ fixed_position_mm = [10.0, -700.0, 1300.0]
 enabled = false
 )",
                                      "imu.toml");
-  ASSERT_TRUE(r) << r.error;
-  EXPECT_EQ(r.settings->trackers.report.position_type, FieldType::None);
-  EXPECT_EQ(r.settings->trackers.head.fixed_position_mm, (std::array<double, 3>{10.0, -700.0, 1300.0}));
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->trackers.report.position_type, FieldType::None);
+  EXPECT_EQ(r->trackers.head.fixed_position_mm, (std::array<double, 3>{10.0, -700.0, 1300.0}));
   EXPECT_EQ(error_of("[trackers.head]\nfixed_position_mm = [1.0, 2.0]\n"),
             "bad.toml:2: key 'trackers.head.fixed_position_mm': expected an array of 3 numbers in [-100000, 100000] "
             "mm, got an array of 2");
@@ -179,8 +179,8 @@ enabled = false
 TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
   auto r = load_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
                                      "x.toml");
-  ASSERT_TRUE(r) << r.error;
-  const auto& reports = r.settings->trackers.hid.init_feature_reports;
+  ASSERT_TRUE(r) << r.error();
+  const auto& reports = r->trackers.hid.init_feature_reports;
   ASSERT_EQ(reports.size(), 2u);
   EXPECT_EQ(reports[0], (std::vector<std::uint8_t>{0x02, 0x01}));
   EXPECT_EQ(reports[1], (std::vector<std::uint8_t>{0x05, 0xFF, 0x0A}));
@@ -211,9 +211,9 @@ scale = 1000.0
 rigid_tolerance = 0.01
 )",
                                      "x.toml");
-  ASSERT_TRUE(r) << r.error;
-  const auto& g = r.settings->trackers.igtl;
-  EXPECT_EQ(r.settings->trackers.source, lungar::config::TrackerSource::Igtl);
+  ASSERT_TRUE(r) << r.error();
+  const auto& g = r->trackers.igtl;
+  EXPECT_EQ(r->trackers.source, lungar::config::TrackerSource::Igtl);
   EXPECT_EQ(g.host, "plus.lab");
   EXPECT_EQ(g.port, 18945);
   EXPECT_EQ(g.head, "");

@@ -229,8 +229,8 @@ TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
 // position and turns as the trajectory did.
 TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   auto loaded = config::load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
-  ASSERT_TRUE(loaded) << loaded.error;
-  config::TrackerSettings t = loaded.settings->trackers;
+  ASSERT_TRUE(loaded) << loaded.error();
+  config::TrackerSettings t = loaded->trackers;
   t.mock_trajectory = "head_orbit";
   const auto layout = make_layout(t);
   ASSERT_TRUE(layout.layout) << layout.error;

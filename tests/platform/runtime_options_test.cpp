@@ -62,6 +62,26 @@ TEST(RuntimeOptions, OutputOpenXr) {
   EXPECT_EQ(s.display.output, cfg::Output::OpenXr);
 }
 
+TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
+  cfg::Settings s;
+  RuntimeOptions o;
+  o.tracker = "igtl:192.168.1.20:18945";
+  ASSERT_TRUE(apply_overrides(o, s));
+  EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Igtl);
+  EXPECT_EQ(s.trackers.igtl.host, "192.168.1.20");
+  EXPECT_EQ(s.trackers.igtl.port, 18945);
+  cfg::Settings d;
+  o.tracker = "igtl:plus.lab";  // the config's port (18944 by default)
+  ASSERT_TRUE(apply_overrides(o, d));
+  EXPECT_EQ(d.trackers.igtl.host, "plus.lab");
+  EXPECT_EQ(d.trackers.igtl.port, 18944);
+  cfg::Settings e;
+  o.tracker = "igtl";  // host and port from the config
+  ASSERT_TRUE(apply_overrides(o, e));
+  EXPECT_EQ(e.trackers.source, cfg::TrackerSource::Igtl);
+  EXPECT_EQ(e.trackers.igtl.host, "127.0.0.1");
+}
+
 TEST(RuntimeOptions, BadValuesAreNamed) {
   cfg::Settings s;
   RuntimeOptions o;
@@ -69,10 +89,18 @@ TEST(RuntimeOptions, BadValuesAreNamed) {
   EXPECT_EQ(apply_overrides(o, s).error(), "--output: expected auto, window, fullscreen, headless or openxr, got 'hmd'");
   o = {};
   o.tracker = "replay:";
-  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay:'");
+  EXPECT_EQ(apply_overrides(o, s).error(),
+            "--tracker: expected mock, hid, igtl[:HOST[:PORT]] or replay:FILE.trk, got 'replay:'");
   o = {};
   o.tracker = "replay";
-  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected mock, hid or replay:FILE.trk, got 'replay'");
+  EXPECT_EQ(apply_overrides(o, s).error(),
+            "--tracker: expected mock, hid, igtl[:HOST[:PORT]] or replay:FILE.trk, got 'replay'");
+  o = {};
+  o.tracker = "igtl:";
+  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected igtl:HOST[:PORT] with a host, got 'igtl:'");
+  o = {};
+  o.tracker = "igtl:plus.lab:70000";
+  EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected a port in [1, 65535] after igtl:HOST:, got '70000'");
   o = {};
   o.view = "left";
   EXPECT_EQ(apply_overrides(o, s).error(), "--view: expected mono or stereo, got 'left'");

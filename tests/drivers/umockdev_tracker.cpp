@@ -148,7 +148,7 @@ bool UmockdevTracker::plug(const UmockdevTrackerSpec& spec) {
       "P: " + base + "/hidraw/" + node + "\nN: " + node + "\nE: DEVNAME=/dev/" + node +
       "\nE: SUBSYSTEM=hidraw\nA: dev=240:" + std::to_string(s.hidraw_index) + "\\n\nL: device=../../../" + hid_name +
       "\n\n"
-      "P: " + base + "\n" + ids + "E: HID_NAME=FakeVendor " + s.product + "\nE: HID_UNIQ=" + s.serial +
+      "P: " + base + "\n" + ids + "E: HID_NAME=FakeVendor " + s.product +
       "\nE: SUBSYSTEM=hid\nH: report_descriptor=" + vendor_report_descriptor_hex(s.report_id, s.length) + "\n\n"
       "P: " + usb + "\nE: DEVTYPE=usb_interface\nE: SUBSYSTEM=usb\nA: bInterfaceNumber=00\\n\n\n"
       "P: " + usbdev + "\nE: DEVTYPE=usb_device\nE: SUBSYSTEM=usb\n" + usbids +
@@ -171,6 +171,10 @@ bool UmockdevTracker::plug(const UmockdevTrackerSpec& spec) {
     if (err) g_error_free(err);
     return false;
   }
+  // Only now does the device show in hidapi's enumeration (it lists no hid device without HID_UNIQ): a tracker
+  // polling for it never opens the node before the handler answers, which hidapi 0.13.1 would take for "not a
+  // hidraw device" (and leak its error string).
+  umockdev_testbed_set_property(impl_->testbed, ("/sys" + base).c_str(), "HID_UNIQ", s.serial.c_str());
   impl_->plugged = true;
   return true;
 }

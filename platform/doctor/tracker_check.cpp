@@ -1,6 +1,7 @@
 /// @file tracker_check.cpp
 /// @brief The tracker check: for HID, the configured device's hidraw node is there and this user can open it as
 /// hidapi does (read and write); when it cannot, the fix is the udev rule (the exact command) or a new session.
+/// For OpenIGTLink, the server accepts a connection.
 #include <fcntl.h>
 #include <pwd.h>
 #include <unistd.h>
@@ -17,6 +18,7 @@
 #include <string>
 
 #include "drivers/hid/hid_interface.h"
+#include "drivers/igtl/tcp_socket.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/doctor/checks.h"
 
@@ -105,6 +107,18 @@ Check hid_node_check(const config::HidSettings& hid, const DoctorEnv& env) {
   return passed("tracker", what + " readable by user " + user_name() + (rule.empty() ? "" : " (" + rule + ")"));
 }
 
+/// The OpenIGTLink server answers on host:port (what lungar connects to; the messages come once it streams).
+Check igtl_server_check(const config::IgtlSettings& g) {
+  const std::string where = g.host + ":" + std::to_string(g.port);
+  if (auto s = drivers::TcpSocket::connect(g.host, g.port, static_cast<int>(g.connect_timeout_ms)); !s) {
+    return failed("tracker", "OpenIGTLink: " + s.error() + " (trackers.igtl)",
+                  "start PlusServer (its PlusOpenIGTLinkServer ListeningPort) or a Slicer OpenIGTLinkIF connector in "
+                  "server mode on " + where + ", or set trackers.igtl.host and port (or --tracker igtl:HOST:PORT)");
+  }
+  return passed("tracker", "OpenIGTLink server " + where + " accepts connections (head '" + g.head + "', patient '" +
+                               g.patient + "', stylus '" + g.stylus + "')");
+}
+
 }  // namespace
 
 Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env) {
@@ -122,8 +136,10 @@ Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env) {
     }
     case config::TrackerSource::Hid:
       return hid_node_check(t.hid, env);
+    case config::TrackerSource::Igtl:
+      return igtl_server_check(t.igtl);
   }
-  return failed("tracker", "trackers.source: unknown", "set trackers.source to mock, hid or replay");
+  return failed("tracker", "trackers.source: unknown", "set trackers.source to mock, hid, igtl or replay");
 }
 
 }  // namespace lungar::platform::doctor

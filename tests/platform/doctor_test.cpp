@@ -11,6 +11,7 @@
 #include <string>
 
 #include "config/config_paths.h"
+#include "drivers/igtl/tcp_socket.h"
 #include "platform/doctor/checks.h"
 #include "tests/scratch_dir.h"
 
@@ -192,6 +193,20 @@ TEST_F(Doctor, DiskFailsBelowTheMinimumNamingTheStateFolder) {
   EXPECT_EQ(c.verdict, Verdict::Fail);
   EXPECT_TRUE(contains(c.detail, (root / "state/lungar").string())) << c.detail;
   EXPECT_TRUE(contains(c.fix, "XDG_STATE_HOME")) << c.fix;
+}
+
+TEST_F(Doctor, IgtlTrackerCheckConnectsToTheServer) {
+  auto listener = lungar::drivers::TcpListener::listen("127.0.0.1", 0);  // a server on a port the OS picks
+  ASSERT_TRUE(listener) << listener.error();
+  lungar::config::TrackerSettings t;
+  t.source = lungar::config::TrackerSource::Igtl;
+  t.igtl.port = listener->port();
+  EXPECT_EQ(check_tracker(t, env).verdict, Verdict::Pass);
+  listener->close();  // PlusServer is not running
+  const Check c = check_tracker(t, env);
+  EXPECT_EQ(c.verdict, Verdict::Fail);
+  EXPECT_TRUE(contains(c.detail, "127.0.0.1:" + std::to_string(t.igtl.port))) << c.detail;
+  EXPECT_TRUE(contains(c.fix, "PlusServer")) << c.fix;
 }
 
 TEST_F(Doctor, ReplayTrackerCheckParsesTheLog) {

@@ -28,6 +28,28 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+/// Maps the lung onto the sphere and sets up the SH fit's basis Y and Gram matrix G = sum_J A_J Y Y^T (the
+/// area-weighted least squares of DESIGN.md), which must resolve the asset's bands.
+Status fit_basis(LungWork& w, const BakeOptions& opt, int bands_solved) {
+  const std::string who = "lung '" + w.name + "'";
+  lungar::Result<SphereMapResult> mapped = map_to_sphere(w.mesh, w.centre, opt.sphere);
+  if (!mapped) return {who + ": " + mapped.error()};
+  w.sphere = mapped.take();
+  const auto n = static_cast<Eigen::Index>(w.mesh.positions.size());
+  w.c_solved = bands_solved * bands_solved;
+  w.y = sh_rows(w.sphere.u, bands_solved);
+  w.offsets.resize(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) w.offsets.row(i) = (w.mesh.positions[i] - w.centre).transpose();
+  w.gram = w.y.transpose() * w.areas.asDiagonal() * w.y;
+  const int c = static_cast<int>(opt.bands * opt.bands);
+  Eigen::LDLT<Eigen::MatrixXd> g(w.gram.topLeftCorner(c, c));
+  const Eigen::VectorXd diag = g.vectorD();
+  if (g.info() != Eigen::Success || !(diag.minCoeff() > 1e-9 * diag.maxCoeff()))
+    return {who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
+            " SH bands; expected a finer, closed surface around its centre"};
+  return {};
+}
+
 /// Everything one lung's bake computes; the evaluation reuses the factor and the double-precision fields.
 Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t offset, const BakeProgress& progress,
                 BakeReport& timing, std::mutex& timing_mutex) {
@@ -39,32 +61,13 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
   if (!w.has_centre) w.centre = volume_centroid(w.mesh);
   const auto n = static_cast<Eigen::Index>(w.mesh.positions.size());
   w.areas = Eigen::Map<const Eigen::VectorXd>(w.geometry.areas.data(), n);
-  w.folded = folded_triangles(w.mesh, w.centre);
-
+  if (progress) progress("sphere map", 0.0);
   const int bands_solved = opt.evaluate && opt.bands_sweep ? kMaxBands : static_cast<int>(opt.bands);
   const int c_solved = bands_solved * bands_solved;
-  w.c_solved = c_solved;
-  w.y.resize(n, c_solved);
-  w.offsets.resize(n, 3);
-  Eigen::VectorXd sh(c_solved);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Vector3d d = w.mesh.positions[i] - w.centre;
-    const double len = d.norm();
-    real_sh(bands_solved, len > 0 ? Eigen::Vector3d(d / len) : Eigen::Vector3d::UnitZ(), sh.data());
-    w.y.row(i) = sh.transpose();
-    w.offsets.row(i) = d.transpose();
-  }
-  // Least squares weighted by area (DESIGN.md): G = sum_J A_J Y Y^T; needs enough well-spread vertices.
-  w.gram = w.y.transpose() * w.areas.asDiagonal() * w.y;
-  {
-    const int c = static_cast<int>(opt.bands * opt.bands);
-    Eigen::LDLT<Eigen::MatrixXd> g(w.gram.topLeftCorner(c, c));
-    const Eigen::VectorXd diag = g.vectorD();
-    if (g.info() != Eigen::Success || !(diag.minCoeff() > 1e-9 * diag.maxCoeff()))
-      return fail(who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
-                  " SH bands; expected a finer, closed surface around its centre");
-  }
+  if (Status s = fit_basis(w, opt, bands_solved); !s) return s;
+  const double map_s = seconds_since(t0);
 
+  t0 = Clock::now();
   const Eigen::VectorXd youngs = youngs_modulus(w.mesh);
   w.k = stiffness_matrix(w.mesh, youngs, w.geometry.areas, opt.decay_length_mm);
   if (progress) progress("factorise", 0.0);
@@ -97,11 +100,26 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
       if (progress) progress("transfer rows", static_cast<double>(done) / static_cast<double>(n));
     });
   std::lock_guard lock(timing_mutex);
+  timing.sphere_map_s = std::max(timing.sphere_map_s, map_s);
   timing.factorise_s = std::max(timing.factorise_s, factor_s);
   timing.solve_s = std::max(timing.solve_s, solve_s);
   timing.transfer_rows_s = std::max(timing.transfer_rows_s, seconds_since(t2));
   return {};
 }
+
+}  // namespace
+
+Eigen::MatrixXd sh_rows(const std::vector<Eigen::Vector3d>& u, int bands) {
+  Eigen::MatrixXd y(static_cast<Eigen::Index>(u.size()), bands * bands);
+  Eigen::VectorXd sh(bands * bands);
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    real_sh(bands, u[i], sh.data());
+    y.row(static_cast<Eigen::Index>(i)) = sh.transpose();
+  }
+  return y;
+}
+
+namespace {
 
 void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::size_t lung_index, double total_volume) {
   const std::uint32_t c = opt.bands * opt.bands;
@@ -175,18 +193,64 @@ double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share
   return (target / t) / linear;
 }
 
-}  // namespace
-
-std::uint64_t folded_triangles(const TriMesh& mesh, const Eigen::Vector3d& centre) {
-  std::uint64_t folded = 0;
-  for (const Triangle& t : mesh.triangles) {
-    const Eigen::Vector3d a = (mesh.positions[t[0]] - centre).normalized();
-    const Eigen::Vector3d b = (mesh.positions[t[1]] - centre).normalized();
-    const Eigen::Vector3d c = (mesh.positions[t[2]] - centre).normalized();
-    if (!(a.dot(b.cross(c)) > 0)) ++folded;
+/// The asset from the lungs' fields: per-lung blocks, the tidal calibration, the paper's arrays, the rows.
+/// Returns the lungs' total rest volume, mm^3.
+double assemble_asset(const std::vector<std::unique_ptr<LungWork>>& work, const BakeOptions& opt, BakedAsset& a) {
+  a.bands = opt.bands;
+  a.p0 = opt.p0;
+  a.gamma_per_mm = opt.gamma_per_mm;
+  a.decay_length_mm = opt.decay_length_mm;
+  double total_volume = 0;
+  for (const auto& w : work) total_volume += w->rest_volume_mm3;
+  for (std::size_t l = 0; l < work.size(); ++l) {
+    fill_lung(*work[l], opt, a, l, total_volume);
+    const double k = tidal_calibration(*work[l], opt, a.lungs[l].volume_share);
+    a.lungs[l].volume_const *= k;
+    for (double& v : a.lungs[l].volume_grad) v *= k;
   }
-  return folded;
+  fill_paper_forces(a);
+  if (opt.transfer_rows) {
+    a.transfer_epsilon = opt.transfer_epsilon;
+    a.transfer_row_ptr.push_back(0);
+    for (const auto& w : work) {
+      const std::uint32_t base = a.transfer_row_ptr.back();
+      for (std::size_t i = 1; i < w->rows.row_ptr.size(); ++i) a.transfer_row_ptr.push_back(base + w->rows.row_ptr[i]);
+      a.transfer_cols.insert(a.transfer_cols.end(), w->rows.cols.begin(), w->rows.cols.end());
+      a.transfer_vals.insert(a.transfer_vals.end(), w->rows.vals.begin(), w->rows.vals.end());
+    }
+  }
+  return total_volume;
 }
+
+/// The report's counts and, per lung, its size, place and sphere map (the accuracy figures come from evaluate).
+void fill_report(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+                 double total_volume, BakeReport& report) {
+  report.nodes = a.vertex_count();
+  report.triangles = static_cast<std::uint32_t>(a.triangles.size() / 3);
+  report.lungs = static_cast<std::uint32_t>(a.lungs.size());
+  report.bands = a.bands;
+  report.coefficients = a.coefficients();
+  report.transfer_epsilon = a.transfer_epsilon;
+  report.transfer_nnz_per_row_mean =
+      opt.transfer_rows ? static_cast<double>(a.transfer_vals.size()) / std::max<double>(1, a.vertex_count()) : 0;
+  report.rest_volume_ml = total_volume / 1000.0;
+  report.map = opt.sphere.map;
+  MapFigures all{opt.sphere.map, 0, 0, 0};
+  for (const auto& w : work) {
+    report.folded_triangles += w->sphere.folded;
+    report.lung_names.push_back(w->name);
+    const MapFigures mine{opt.sphere.map, w->sphere.folded, w->sphere.area_distortion, 0};
+    report.per_lung.push_back({w->name, static_cast<std::uint32_t>(w->mesh.positions.size()),
+                               static_cast<std::uint32_t>(w->mesh.triangles.size()), w->rest_volume_mm3 / 1000.0,
+                               volume_centroid(w->mesh), opt.sphere.map, w->sphere.folded, w->sphere.area_distortion,
+                               0, {mine}, {}, w->source});
+    all.folded_triangles += mine.folded_triangles;
+    all.area_distortion = std::max(all.area_distortion, mine.area_distortion);  // the worst lung's
+  }
+  report.maps = {all};
+}
+
+}  // namespace
 
 std::vector<Eigen::Vector3d> report_directions() {
   std::vector<Eigen::Vector3d> dirs;
@@ -217,6 +281,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   for (LungMesh& l : lungs) {
     auto w = std::make_unique<LungWork>();
     w->name = l.name;
+    w->source = l.source;
     w->mesh = std::move(l.mesh);
     w->has_centre = l.has_centre;
     w->centre = l.centre;
@@ -244,44 +309,10 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
 
   BakeOutput out;
   BakedAsset& a = out.asset;
-  a.bands = opt.bands;
-  a.p0 = opt.p0;
-  a.gamma_per_mm = opt.gamma_per_mm;
-  a.decay_length_mm = opt.decay_length_mm;
-  double total_volume = 0;
-  for (const auto& w : work) total_volume += w->rest_volume_mm3;
-  for (std::size_t l = 0; l < work.size(); ++l) {
-    fill_lung(*work[l], opt, a, l, total_volume);
-    const double k = tidal_calibration(*work[l], opt, a.lungs[l].volume_share);
-    a.lungs[l].volume_const *= k;
-    for (double& v : a.lungs[l].volume_grad) v *= k;
-  }
-  fill_paper_forces(a);
-  if (opt.transfer_rows) {
-    a.transfer_epsilon = opt.transfer_epsilon;
-    a.transfer_row_ptr.push_back(0);
-    for (const auto& w : work) {
-      const std::uint32_t base = a.transfer_row_ptr.back();
-      for (std::size_t i = 1; i < w->rows.row_ptr.size(); ++i) a.transfer_row_ptr.push_back(base + w->rows.row_ptr[i]);
-      a.transfer_cols.insert(a.transfer_cols.end(), w->rows.cols.begin(), w->rows.cols.end());
-      a.transfer_vals.insert(a.transfer_vals.end(), w->rows.vals.begin(), w->rows.vals.end());
-    }
-  }
+  const double total_volume = assemble_asset(work, opt, a);
   if (std::string bad = validate_asset(a); !bad.empty()) return fail("bake: internal error: " + bad);
 
-  report.nodes = a.vertex_count();
-  report.triangles = static_cast<std::uint32_t>(a.triangles.size() / 3);
-  report.lungs = static_cast<std::uint32_t>(a.lungs.size());
-  report.bands = a.bands;
-  report.coefficients = a.coefficients();
-  report.transfer_epsilon = a.transfer_epsilon;
-  report.transfer_nnz_per_row_mean =
-      opt.transfer_rows ? static_cast<double>(a.transfer_vals.size()) / std::max<double>(1, a.vertex_count()) : 0;
-  report.rest_volume_ml = total_volume / 1000.0;
-  for (const auto& w : work) {
-    report.folded_triangles += w->folded;
-    report.lung_names.push_back(w->name);
-  }
+  fill_report(work, a, opt, total_volume, report);
   report.bake_s = seconds_since(start);
   if (opt.evaluate) {
     const auto t = Clock::now();

@@ -57,22 +57,20 @@ double end_ratio(const BakedAsset& a, const std::vector<float>& d, int axis, dou
   return (high_sum / high_n) / (low_sum / low_n);  // high end over low end
 }
 
-}  // namespace
+/// The exact eq. (1) for every report direction, D = K^-1 (A o p_g) / V(g) * 1000 (mm per mL). p is linear in g,
+/// so in exact arithmetic this is p0 tau0 + gamma tau g from the double-precision solves (no rounding to float,
+/// unlike the asset's linear basis); tests check it against fresh solves.
+struct ExactEq1 {
+  Eigen::MatrixXd d;                        ///< N x directions
+  std::vector<Eigen::MatrixXd> pressures;   ///< per lung, N_l x directions
+  std::vector<Eigen::RowVectorXd> scales;   ///< per lung, 1000 / V(g)
+};
 
-void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
-                   int threads, const BakeProgress& progress, BakeReport& report) {
-  const std::vector<Eigen::Vector3d> dirs = report_directions();
-  const auto nd = static_cast<Eigen::Index>(dirs.size());
-  const std::size_t n = a.vertex_count();
-  Eigen::MatrixXd g_mat(3, nd);
-  for (Eigen::Index k = 0; k < nd; ++k) g_mat.col(k) = dirs[k];
-
-  // The exact eq. (1), D = K^-1 (A o p_g) / V(g) * 1000. p is linear in g, so in exact arithmetic this is
-  // p0 tau0 + gamma tau g from the double-precision solves (no rounding to float, unlike the asset's linear
-  // basis); tests check it against fresh solves.
-  Eigen::MatrixXd exact(n, nd);
-  std::vector<Eigen::MatrixXd> pressures;  // per lung, N x nd
-  std::vector<Eigen::RowVectorXd> scales;  // per lung, 1000 / V(g)
+ExactEq1 exact_eq1(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+                   const Eigen::MatrixXd& g_mat) {
+  const Eigen::Index nd = g_mat.cols();
+  ExactEq1 e;
+  e.d.resize(a.vertex_count(), nd);
   for (std::size_t l = 0; l < work.size(); ++l) {
     const LungWork& w = *work[l];
     const BakedLung& lung = a.lungs[l];
@@ -80,19 +78,25 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
     const Eigen::MatrixXd d = (w.x.col(w.c_solved) * opt.p0).replicate(1, nd) +
                               opt.gamma_per_mm * w.x.middleCols(w.c_solved + 1, 3) * g_mat;
     Eigen::RowVectorXd s(nd);
-    for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, lung, dirs[k]);
-    exact.middleRows(lung.first_vertex, lung.vertex_count) = d * s.asDiagonal();
-    pressures.push_back(std::move(p));
-    scales.push_back(std::move(s));
-    if (progress) progress("evaluate", 0.3 * (l + 1) / work.size());
+    for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, lung, g_mat.col(k));
+    e.d.middleRows(lung.first_vertex, lung.vertex_count) = d * s.asDiagonal();
+    e.pressures.push_back(std::move(p));
+    e.scales.push_back(std::move(s));
   }
+  return e;
+}
 
-  // Through the float asset, as the runtime computes it.
+/// eq. (7), the paper's interpolation, the linear basis and the truncated rows through the float asset, as the
+/// runtime computes them, against the exact eq. (1); eq. (7) also per lung.
+void float_errors(const BakedAsset& a, const std::vector<Eigen::Vector3d>& dirs, const ExactEq1& exact,
+                  BakeReport& report) {
   ErrorSum eq7, paper, linear, eq1;
+  std::vector<ErrorSum> eq7_lung(a.lungs.size());
   const std::uint32_t c = a.coefficients();
+  const std::size_t n = a.vertex_count();
   std::vector<float> force(a.lungs.size() * c), paper_force(a.lungs.size() * c);
   std::vector<float> d7(n), dp(n), dl(n), d1(n), f1(n);
-  for (Eigen::Index k = 0; k < nd; ++k) {
+  for (std::size_t k = 0; k < dirs.size(); ++k) {
     const Eigen::Vector3d& g = dirs[k];
     for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
     force_sh(a, ForceMode::paper, orientation_for(g), paper_force.data());
@@ -103,59 +107,137 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
       applied_force(a, g, f1);
       displacement_eq1(a, f1, d1);
     }
+    const auto col = static_cast<Eigen::Index>(k);
     for (std::size_t i = 0; i < n; ++i) {
-      eq7.add(d7[i], exact(i, k));
+      const double e = exact.d(static_cast<Eigen::Index>(i), col);
+      eq7.add(d7[i], e);
+      eq7_lung[a.lung_of_vertex[i]].add(d7[i], e);
       paper.add(dp[i], d7[i]);
-      linear.add(dl[i], exact(i, k));
-      if (a.has_transfer_rows()) eq1.add(d1[i], exact(i, k));
+      linear.add(dl[i], e);
+      if (a.has_transfer_rows()) eq1.add(d1[i], e);
     }
   }
-  report.gravity_directions = static_cast<std::uint32_t>(nd);
+  report.gravity_directions = static_cast<std::uint32_t>(dirs.size());
   report.eq7_rms_rel_error = eq7.rms_rel();
   report.alpha = eq7.alpha();
   report.paper_interp_rms_rel_error = paper.rms_rel();
   report.linear_basis_rms_rel_error = linear.rms_rel();
   report.eq1_truncated_rms_rel_error = a.has_transfer_rows() ? eq1.rms_rel() : 0.0;
-  if (progress) progress("evaluate", 0.6);
+  report.maps.front().eq7_rms_rel_error = eq7.rms_rel();
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    report.per_lung[l].eq7_rms_rel_error = eq7_lung[l].rms_rel();
+    report.per_lung[l].maps.front().eq7_rms_rel_error = eq7_lung[l].rms_rel();
+  }
+}
 
-  // Bands sweep in double precision: the projection with the leading L^2 x L^2 block of G; one thread a lung.
-  const int max_bands = opt.bands_sweep ? kMaxBands : 1;
-  std::vector<std::vector<ErrorSum>> sweep(work.size(), std::vector<ErrorSum>(max_bands + 1));
-  auto sweep_lung = [&](std::size_t l) {
-    const LungWork& w = *work[l];
-    const BakedLung& lung = a.lungs[l];
-    const Eigen::MatrixXd weighted = w.areas.asDiagonal() * pressures[l];
-    for (int bands = 2; bands <= max_bands && bands * bands <= w.c_solved; ++bands) {
-      const int cb = bands * bands;
-      const Eigen::LDLT<Eigen::MatrixXd> gram(w.gram.topLeftCorner(cb, cb));
-      const Eigen::MatrixXd f = gram.solve(w.y.leftCols(cb).transpose() * weighted);
-      const Eigen::MatrixXd d = (w.x.leftCols(cb) * f) * scales[l].asDiagonal();
-      for (Eigen::Index k = 0; k < nd; ++k)
-        for (Eigen::Index i = 0; i < d.rows(); ++i) sweep[l][bands].add(d(i, k), exact(lung.first_vertex + i, k));
-    }
-  };
+/// One map's eq. (7) errors on one lung, in double precision, indexed by the band count (2 to 8).
+struct MapSweep {
+  MapFigures figures;
+  std::vector<ErrorSum> by_bands = std::vector<ErrorSum>(kMaxBands + 1);
+};
+
+/// The projection with the leading L^2 x L^2 block of G, for every L the fields x (N x >= L^2) allow.
+void sweep_fit(const Eigen::MatrixXd& y, const Eigen::MatrixXd& gram, const Eigen::MatrixXd& x,
+               const Eigen::MatrixXd& weighted_p, const Eigen::RowVectorXd& scale,
+               const Eigen::Ref<const Eigen::MatrixXd>& exact, MapSweep& out) {
+  for (int bands = 2; bands <= kMaxBands && bands * bands <= y.cols(); ++bands) {
+    const int cb = bands * bands;
+    const Eigen::LDLT<Eigen::MatrixXd> g(gram.topLeftCorner(cb, cb));
+    const Eigen::MatrixXd f = g.solve(y.leftCols(cb).transpose() * weighted_p);
+    const Eigen::MatrixXd d = (x.leftCols(cb) * f) * scale.asDiagonal();
+    for (Eigen::Index k = 0; k < d.cols(); ++k)
+      for (Eigen::Index i = 0; i < d.rows(); ++i) out.by_bands[bands].add(d(i, k), exact(i, k));
+  }
+}
+
+/// The bands sweep of one lung with its asset's map, then with each compared map (its own map, basis and L^2
+/// solves with the lung's factor, dropped once measured).
+std::vector<MapSweep> sweep_lung(const LungWork& w, const BakedLung& lung, const BakeOptions& opt, int threads,
+                                 const ExactEq1& exact, std::size_t l) {
+  const Eigen::MatrixXd weighted = w.areas.asDiagonal() * exact.pressures[l];
+  const auto block = exact.d.middleRows(lung.first_vertex, lung.vertex_count);
+  std::vector<MapSweep> out(1);
+  out[0].figures = {opt.sphere.map, w.sphere.folded, w.sphere.area_distortion, 0.0};
+  sweep_fit(w.y, w.gram, w.x, weighted, exact.scales[l], block, out[0]);
+  for (SphereMap map : opt.compare_maps) {
+    if (map == opt.sphere.map) continue;
+    SphereMapOptions o = opt.sphere;
+    o.map = map;
+    lungar::Result<SphereMapResult> other = map_to_sphere(w.mesh, w.centre, o);
+    if (!other) continue;  // a surface with handles has only the radial map; the asset's map is measured anyway
+    MapSweep s;
+    s.figures = {map, other->folded, other->area_distortion, 0.0};
+    const Eigen::MatrixXd y = sh_rows(other->u, kMaxBands);
+    const Eigen::MatrixXd gram = y.transpose() * w.areas.asDiagonal() * y;
+    const Eigen::MatrixXd x = w.solver->solve(w.areas.asDiagonal() * y, threads);
+    sweep_fit(y, gram, x, weighted, exact.scales[l], block, s);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+/// Runs sweep_lung on every lung (one thread each) and writes the sweeps and the per-map figures.
+void sweep_errors(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+                  int threads, const ExactEq1& exact, BakeReport& report) {
+  std::vector<std::vector<MapSweep>> sweeps(work.size());
+  const int per_lung = std::max(1, threads / static_cast<int>(work.size()));
   {
     std::vector<std::thread> pool;
     for (std::size_t l = 1; l < work.size(); ++l) {
-      if (threads > 1) pool.emplace_back(sweep_lung, l);
-      else sweep_lung(l);
+      auto job = [&, l] { sweeps[l] = sweep_lung(*work[l], a.lungs[l], opt, per_lung, exact, l); };
+      if (threads > 1) pool.emplace_back(job);
+      else job();
     }
-    sweep_lung(0);
+    sweeps[0] = sweep_lung(*work[0], a.lungs[0], opt, per_lung, exact, 0);
     for (auto& t : pool) t.join();
   }
-  for (int bands = 2; bands <= max_bands && bands * bands <= work.front()->c_solved; ++bands) {
-    ErrorSum e;
-    for (const auto& per_lung : sweep) {
-      e.diff2 += per_lung[bands].diff2;
-      e.exact2 += per_lung[bands].exact2;
-    }
-    report.bands_sweep.push_back(
-        {static_cast<std::uint32_t>(bands), static_cast<std::uint32_t>(bands * bands), e.rms_rel()});
+  const auto maps = sweeps.front().size();
+  for (const auto& s : sweeps)
+    if (s.size() != maps) return;  // a compared map failed on one lung only: no side-by-side figure for all
+  // The asset's map keeps its figures from the float path (float_errors); the compared ones get the sweep's.
+  report.maps.resize(1);
+  for (LungReport& lung : report.per_lung) {
+    lung.maps.resize(1);
+    lung.bands_sweep.clear();
   }
-  if (progress) progress("evaluate", 0.9);
+  for (std::size_t m = 1; m < maps; ++m) {
+    MapFigures total{sweeps[0][m].figures.map, 0, 0, 0};
+    for (std::size_t l = 0; l < work.size(); ++l) {
+      MapFigures f = sweeps[l][m].figures;
+      f.eq7_rms_rel_error = sweeps[l][m].by_bands[static_cast<int>(opt.bands)].rms_rel();
+      report.per_lung[l].maps.push_back(f);
+      total.folded_triangles += f.folded_triangles;
+      total.area_distortion = std::max(total.area_distortion, f.area_distortion);  // the worst lung's
+    }
+    report.maps.push_back(total);
+  }
+  for (int bands = 2; bands <= kMaxBands && bands * bands <= work.front()->c_solved; ++bands) {
+    BandsSweepEntry all{static_cast<std::uint32_t>(bands), static_cast<std::uint32_t>(bands * bands), 0, {}};
+    for (std::size_t l = 0; l < work.size(); ++l) report.per_lung[l].bands_sweep.push_back({all.bands, all.coefficients, 0, {}});
+    for (std::size_t m = 0; m < maps; ++m) {
+      ErrorSum e;
+      for (std::size_t l = 0; l < work.size(); ++l) {
+        const ErrorSum& part = sweeps[l][m].by_bands[bands];
+        e.diff2 += part.diff2;
+        e.exact2 += part.exact2;
+        BandsSweepEntry& mine = report.per_lung[l].bands_sweep.back();
+        if (m == 0) mine.eq7_rms_rel_error = part.rms_rel();
+        mine.by_map.push_back({sweeps[l][m].figures.map, part.rms_rel()});
+      }
+      if (m == 0) all.eq7_rms_rel_error = e.rms_rel();
+      all.by_map.push_back({sweeps[0][m].figures.map, e.rms_rel()});
+      if (m > 0 && static_cast<std::uint32_t>(bands) == opt.bands) report.maps[m].eq7_rms_rel_error = e.rms_rel();
+    }
+    report.bands_sweep.push_back(std::move(all));
+  }
+}
 
-  // Physiology at the tidal volume: upright and supine, through eq. (7).
+/// Physiology at the tidal volume, upright and supine, through eq. (7).
+void physiology(const BakedAsset& a, BakeReport& report) {
   constexpr double kTidalMl = kTidalVolumeMl;
+  const std::uint32_t c = a.coefficients();
+  const std::size_t n = a.vertex_count();
+  std::vector<float> force(a.lungs.size() * c), d7(n);
   const Eigen::Vector3d upright(0, 0, -1), supine_g(0, 1, 0);
   for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], upright, force.data() + l * c);
   displacement_eq7(a, force, d7);
@@ -175,6 +257,22 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], supine_g, force.data() + l * c);
   displacement_eq7(a, force, d7);
   report.posterior_anterior_displacement_ratio = end_ratio(a, d7, 1, 0.15);  // posterior is high y
+}
+
+}  // namespace
+
+void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+                   int threads, const BakeProgress& progress, BakeReport& report) {
+  const std::vector<Eigen::Vector3d> dirs = report_directions();
+  Eigen::MatrixXd g_mat(3, static_cast<Eigen::Index>(dirs.size()));
+  for (std::size_t k = 0; k < dirs.size(); ++k) g_mat.col(static_cast<Eigen::Index>(k)) = dirs[k];
+  const ExactEq1 exact = exact_eq1(work, a, opt, g_mat);
+  if (progress) progress("evaluate", 0.2);
+  float_errors(a, dirs, exact, report);
+  if (progress) progress("evaluate", 0.4);
+  if (opt.bands_sweep) sweep_errors(work, a, opt, threads, exact, report);
+  if (progress) progress("evaluate", 0.9);
+  physiology(a, report);
   report.evaluated = true;
   if (progress) progress("evaluate", 1.0);
 }

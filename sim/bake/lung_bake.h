@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "sim/mesh/spherical_map.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/transfer/transfer_rows.h"
 #include "sim/transfer/transfer_solver.h"
@@ -16,13 +17,14 @@ namespace lungar::sim {
 
 struct LungWork {
   std::string name;
+  LungSource source;
   TriMesh mesh;
   bool has_centre = false;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   VertexGeometry geometry;
   double rest_volume_mm3 = 0;
   Eigen::VectorXd areas;          ///< A_I
-  std::uint64_t folded = 0;
+  SphereMapResult sphere;         ///< u_I of the SH fit, its folds and area distortion
   int c_solved = 0;               ///< SH fields solved: L^2, or 64 when the report sweeps the bands
   Eigen::MatrixXd y;              ///< N x c_solved, Y_lm(u_I)
   Eigen::MatrixXd offsets;        ///< N x 3, x_I - c
@@ -34,5 +36,8 @@ struct LungWork {
   std::unique_ptr<TransferSolver> solver;
   TransferRows rows;              ///< this lung's truncated rows, global column indices
 };
+
+/// Y_lm(u_I) for l < bands, one row per vertex (N x bands^2).
+Eigen::MatrixXd sh_rows(const std::vector<Eigen::Vector3d>& u, int bands);
 
 }  // namespace lungar::sim

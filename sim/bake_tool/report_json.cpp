@@ -13,6 +13,52 @@
 
 namespace lungar::sim {
 
+namespace {
+
+/// {"bands", "coefficients", "eq7_rms_rel_error" (the asset's map), "by_map": {map: error}} per band count.
+nlohmann::json sweep_json(const std::vector<BandsSweepEntry>& sweep) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const BandsSweepEntry& e : sweep) {
+    nlohmann::json by_map = nlohmann::json::object();
+    for (const MapError& m : e.by_map) by_map[kSphereMapNames.name(m.map)] = m.eq7_rms_rel_error;
+    out.push_back({{"bands", e.bands}, {"coefficients", e.coefficients}, {"eq7_rms_rel_error", e.eq7_rms_rel_error},
+                   {"by_map", by_map}});
+  }
+  return out;
+}
+
+/// The import's figures: the input's vertex count and, when simplified, the Hausdorff distance; for a label
+/// map, or a surface rebuilt from its voxels to close its handles, what the voxel repair changed.
+void add_source(const LungSource& s, nlohmann::json& lung) {
+  if (s.input_vertices > 0) lung["input_nodes"] = s.input_vertices;
+  if (s.simplified) lung["hausdorff_mm"] = s.hausdorff_mm;
+  if (!s.from_label_map && !s.rebuilt_from_voxels) return;
+  nlohmann::json voxels = {{"grid_mm", s.grid_mm},
+                           {"components", s.components},
+                           {"removed_voxels", s.removed_voxels},
+                           {"removed_ml", s.removed_ml},
+                           {"filled_voxels", s.filled_voxels},
+                           {"filled_ml", s.filled_ml}};
+  if (s.from_label_map) {
+    voxels["label"] = s.label;
+    voxels["label_voxels"] = s.label_voxels;
+    lung["label_map"] = voxels;
+  } else {
+    voxels["handles"] = s.handles;
+    lung["voxel_rebuild"] = voxels;
+  }
+}
+
+nlohmann::json maps_json(const std::vector<MapFigures>& maps) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const MapFigures& m : maps)
+    out.push_back({{"map", kSphereMapNames.name(m.map)}, {"folded_triangles", m.folded_triangles},
+                   {"area_distortion", m.area_distortion}, {"eq7_rms_rel_error", m.eq7_rms_rel_error}});
+  return out;
+}
+
+}  // namespace
+
 nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& notes) {
   nlohmann::json j;
   j["version"] = LUNGAR_VERSION;
@@ -41,10 +87,26 @@ nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& 
   j["tidal_volume_rel_error"] = r.tidal_volume_rel_error;
   j["base_apex_displacement_ratio"] = r.base_apex_displacement_ratio;
   j["posterior_anterior_displacement_ratio"] = r.posterior_anterior_displacement_ratio;
-  nlohmann::json sweep = nlohmann::json::array();
-  for (const BandsSweepEntry& e : r.bands_sweep)
-    sweep.push_back({{"bands", e.bands}, {"coefficients", e.coefficients}, {"eq7_rms_rel_error", e.eq7_rms_rel_error}});
-  j["bands_sweep"] = sweep;
+  j["sphere_map_s"] = r.sphere_map_s;
+  j["map"] = kSphereMapNames.name(r.map);
+  j["bands_sweep"] = sweep_json(r.bands_sweep);
+  j["maps"] = maps_json(r.maps);
+  nlohmann::json lungs = nlohmann::json::array();
+  for (const LungReport& l : r.per_lung) {
+    lungs.push_back({{"name", l.name},
+                     {"nodes", l.nodes},
+                     {"triangles", l.triangles},
+                     {"volume_ml", l.volume_ml},
+                     {"centroid_mm", {l.centroid_mm.x(), l.centroid_mm.y(), l.centroid_mm.z()}},
+                     {"map", kSphereMapNames.name(l.map)},
+                     {"folded_triangles", l.folded_triangles},
+                     {"area_distortion", l.area_distortion},
+                     {"eq7_rms_rel_error", l.eq7_rms_rel_error},
+                     {"maps", maps_json(l.maps)},
+                     {"bands_sweep", sweep_json(l.bands_sweep)}});
+    add_source(l.source, lungs.back());
+  }
+  j["per_lung"] = lungs;
   j["notes"] = notes;
   return j;
 }

@@ -94,8 +94,11 @@ TEST(Bake, ReportMeetsThePhysiologyAndAccuracyTargetsOnASmallPair) {
   const BakeReport& r = small_bake().report;
   ASSERT_TRUE(r.evaluated);
   EXPECT_EQ(r.lungs, 2u);
-  EXPECT_EQ(r.coefficients, 16u);
-  EXPECT_EQ(r.folded_triangles, 0u) << "procedural lungs are star-shaped about their centres";
+  EXPECT_EQ(r.coefficients, kDefaultBands * kDefaultBands);
+  EXPECT_EQ(r.map, SphereMap::conformal);
+  EXPECT_EQ(r.folded_triangles, 0u) << "the conformal map is one-to-one";
+  ASSERT_EQ(r.maps.size(), 2u);
+  EXPECT_EQ(r.maps[1].folded_triangles, 0u) << "procedural lungs are star-shaped about their centres";
   EXPECT_GE(r.gravity_directions, 26u);
   EXPECT_LT(r.eq7_rms_rel_error, 0.02);
   EXPECT_NEAR(r.alpha, 1.0, 0.03);
@@ -109,7 +112,12 @@ TEST(Bake, ReportMeetsThePhysiologyAndAccuracyTargetsOnASmallPair) {
   EXPECT_EQ(r.bands_sweep.front().bands, 2u);
   EXPECT_EQ(r.bands_sweep.back().coefficients, 64u);
   EXPECT_LT(r.bands_sweep.back().eq7_rms_rel_error, r.bands_sweep.front().eq7_rms_rel_error);
-  EXPECT_NEAR(r.bands_sweep[2].eq7_rms_rel_error, r.eq7_rms_rel_error, 1e-4) << "L = 4 in double and in float";
+  EXPECT_NEAR(r.bands_sweep[r.bands - 2].eq7_rms_rel_error, r.eq7_rms_rel_error, 1e-4) << "in double and in float";
+  ASSERT_EQ(r.per_lung.size(), 2u);
+  EXPECT_EQ(r.per_lung[0].name, "right");
+  EXPECT_LT(r.per_lung[0].centroid_mm.x(), 0) << "LPS: the right lung at -x";
+  EXPECT_NEAR(r.per_lung[0].volume_ml + r.per_lung[1].volume_ml, r.rest_volume_ml, 1e-9);
+  EXPECT_EQ(r.per_lung[0].nodes + r.per_lung[1].nodes, r.nodes);
   EXPECT_NEAR(r.rest_volume_ml, 5000.0, 1.0);
 }
 

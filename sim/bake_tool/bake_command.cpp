@@ -1,30 +1,191 @@
 /// @file bake_command.cpp
-/// @brief Input -> bake -> asset (atomic) -> report JSON (atomic).
+/// @brief Input -> lungs (simplified to --nodes) -> bake -> asset (atomic) -> report JSON (atomic).
 #include "sim/bake_tool/bake_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <thread>
 
 #include "config/base/atomic_file.h"
 #include "sim/asset/asset_io.h"
+#include "sim/bake_tool/label_map_io.h"
 #include "sim/bake_tool/mesh_import.h"
 #include "sim/bake_tool/report_json.h"
+#include "sim/bake_tool/surface_simplify.h"
+#include "sim/mesh/surface_distance.h"
+#include "sim/voxel/label_surface.h"
+#include "sim/voxel/voxelize.h"
+#include "sim/mesh/spherical_map.h"
 
 namespace lungar::sim {
+namespace {
+
+/// `total` vertices shared out in proportion to `areas`.
+std::vector<std::uint32_t> share_by_area(std::uint32_t total, const std::vector<double>& areas) {
+  double sum = 0;
+  for (double a : areas) sum += a;
+  std::vector<std::uint32_t> out;
+  for (double a : areas) out.push_back(static_cast<std::uint32_t>(std::lround(total * (sum > 0 ? a / sum : 1.0 / areas.size()))));
+  return out;
+}
+
+/// Runs job(0 .. n-1), two at a time when there are threads to spare (each job is single-threaded).
+template <class Job>
+void for_each_lung(std::size_t n, int threads, const Job& job) {
+  std::vector<std::thread> pool;
+  for (std::size_t l = 1; l < n; ++l) {
+    if (threads != 1) pool.emplace_back(job, l);
+    else job(l);
+  }
+  if (n > 0) job(0);
+  for (auto& t : pool) t.join();
+}
+
+/// Simplifies `lung` to `target` vertices when it has more than 5 % over, and (with `measure`) how far it strays.
+Status simplify_lung(LungMesh& lung, std::uint32_t target, int threads, bool measure = true) {
+  if (lung.source.input_vertices == 0) lung.source.input_vertices = static_cast<std::uint32_t>(lung.mesh.positions.size());
+  if (target == 0 || static_cast<double>(lung.mesh.positions.size()) <= 1.05 * target) return {};
+  lungar::Result<TriMesh> simple = simplify_surface(lung.mesh, target);
+  if (!simple) return {"lung '" + lung.name + "': " + simple.error()};
+  lung.source.simplified = true;
+  if (measure) lung.source.hausdorff_mm = hausdorff_mm(lung.mesh, *simple, threads);
+  lung.mesh = simple.take();
+  return {};
+}
+
+/// Surfaces from a label map: one lung per --label, each sized by its share of --nodes.
+Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const BakeProgress& progress,
+                                              std::vector<std::string>& notes) {
+  using R = Result<std::vector<LungMesh>>;
+  std::vector<LabelRequest> requests;
+  for (const std::string& text : cmd.labels) {
+    lungar::Result<LabelRequest> r = parse_label_request(text);
+    if (!r) return R::fail(r.error());
+    for (const LabelRequest& other : requests)
+      if (other.name == r->name) return R::fail("--label: the name '" + r->name + "' is given twice; expected one per lung");
+    requests.push_back(r.take());
+  }
+  if (progress) progress("label map", 0.0);
+  lungar::Result<std::vector<LabelMask>> masks = read_label_masks(cmd.labelmap, requests);
+  if (!masks) return R::fail(masks.error());
+  std::vector<double> areas;
+  for (const LabelMask& m : *masks) areas.push_back(mask_surface_area_mm2(m.mask));
+  const std::vector<std::uint32_t> target = share_by_area(cmd.nodes > 0 ? cmd.nodes : kDefaultLabelMapNodes, areas);
+  std::vector<LungMesh> lungs(masks->size());
+  std::vector<std::string> error(masks->size());
+  if (progress) progress("surface", 0.0);
+  for_each_lung(masks->size(), cmd.options.threads, [&](std::size_t l) {
+    const LabelMask& m = (*masks)[l];
+    lungar::Result<LabelSurface> s = label_surface(m.mask, target[l]);
+    if (!s) {
+      error[l] = cmd.labelmap + ": --label " + m.label.name + "=" + std::to_string(m.label.value) + ": " + s.error();
+      return;
+    }
+    LungMesh& lung = lungs[l];
+    lung.name = m.label.name;
+    lung.mesh = std::move(s->mesh);
+    lung.source = {0, false, 0, true, false, 0, m.label.value, m.voxels, s->grid_mm, s->repair.components,
+                   s->repair.removed_voxels, s->repair.filled_voxels, s->removed_ml, s->filled_ml};
+    if (Status st = simplify_lung(lung, target[l], 1); !st) error[l] = cmd.labelmap + ": " + st.error;
+  });
+  for (const std::string& e : error)
+    if (!e.empty()) return R::fail(e);
+  for (const LungMesh& lung : lungs) {
+    const double x = volume_centroid(lung.mesh).x();
+    if ((lung.name == "right" && x > 0) || (lung.name == "left" && x < 0))
+      notes.push_back(cmd.labelmap + ": lung '" + lung.name + "' lies at x " + (x > 0 ? "> 0" : "< 0") +
+                      " (LPS: +x is the patient's left); check its --label value");
+  }
+  return R::ok(std::move(lungs));
+}
+
+/// A surface with handles (a raw segmentation export: marching cubes leaves tunnels where voxels touch along an
+/// edge) cannot be mapped one-to-one onto the sphere: it is voxelised at its own edge length, closed to a ball in
+/// voxel space and extracted again with `target` vertices (its own count when 0), as a label map would be.
+Status rebuild_without_handles(LungMesh& lung, std::uint32_t target) {
+  const long handles = (2 - euler_characteristic(lung.mesh)) / 2;
+  lungar::Result<LabelSurface> s = label_surface(voxelize(lung.mesh, voxel_step_for(lung.mesh)),
+                                                 target > 0 ? target : static_cast<std::uint32_t>(lung.mesh.positions.size()));
+  if (!s) return {"lung '" + lung.name + "': rebuilding it from its voxels: " + s.error()};
+  lung.source = {static_cast<std::uint32_t>(lung.mesh.positions.size()), true, 0, false, true, handles, 0, 0,
+                 s->grid_mm, s->repair.components, s->repair.removed_voxels, s->repair.filled_voxels, s->removed_ml,
+                 s->filled_ml};
+  lung.mesh = std::move(s->mesh);
+  return {};
+}
+
+/// The note that says a lung was rebuilt, and how far it moved.
+std::string rebuild_note(const std::string& file, const LungMesh& lung) {
+  const LungSource& src = lung.source;
+  char line[360];
+  std::snprintf(line, sizeof line,
+                "%s: lung '%s' had %ld handle%s (the conformal map needs a genus-0 surface); rebuilt from its voxels "
+                "on a %.2f mm grid: %lld voxels (%.2f mL) filled, %.2f mm from the input at most",
+                file.c_str(), lung.name.c_str(), src.handles, src.handles == 1 ? "" : "s", src.grid_mm,
+                static_cast<long long>(src.filled_voxels), src.filled_ml, src.hausdorff_mm);
+  return line;
+}
+
+/// Surfaces from mesh files, simplified to --nodes when they have more.
+Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgress& progress,
+                                         std::vector<std::string>& notes) {
+  using R = Result<std::vector<LungMesh>>;
+  const double mm = units_to_mm(cmd.units);
+  if (mm == 0) return R::fail("--units: expected mm, cm or m, got '" + cmd.units + "'");
+  Result<std::vector<LungMesh>> imported = import_lungs(cmd.meshes, mm, notes);
+  if (!imported) return imported;
+  std::vector<LungMesh>& lungs = *imported;
+  std::vector<double> areas;
+  std::size_t vertices = 0;
+  for (const LungMesh& l : lungs) {
+    areas.push_back(surface_area(l.mesh));
+    vertices += l.mesh.positions.size();
+  }
+  if (cmd.nodes > 0 && vertices < cmd.nodes)
+    notes.push_back(cmd.meshes.front() + ": kept all " + std::to_string(vertices) + " vertices (--nodes asks for " +
+                    std::to_string(cmd.nodes) + "; surfaces are simplified, never refined)");
+  const std::vector<std::uint32_t> target = share_by_area(cmd.nodes, areas);
+  if (progress && cmd.nodes > 0) progress("simplify", 0.0);
+  std::vector<Status> status(lungs.size());
+  const int threads = cmd.options.threads > 0 ? cmd.options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  for (std::size_t l = 0; l < lungs.size(); ++l) {
+    const std::uint32_t want = cmd.nodes > 0 ? target[l] : 0;
+    if (cmd.options.sphere.map == SphereMap::radial || euler_characteristic(lungs[l].mesh) == 2) {
+      status[l] = simplify_lung(lungs[l], want, std::max(1, threads));
+      continue;
+    }
+    const TriMesh input = lungs[l].mesh;
+    status[l] = rebuild_without_handles(lungs[l], want);
+    if (status[l]) status[l] = simplify_lung(lungs[l], want, std::max(1, threads), false);
+    if (!status[l]) continue;
+    lungs[l].source.hausdorff_mm = hausdorff_mm(input, lungs[l].mesh, std::max(1, threads));  // against the input
+    notes.push_back(rebuild_note(cmd.meshes.front(), lungs[l]));
+  }
+  for (const Status& s : status)
+    if (!s) return R::fail(cmd.meshes.front() + ": " + s.error);
+  return imported;
+}
+
+}  // namespace
 
 Result<BakeReport> run_bake_command(const BakeCommand& cmd, const BakeProgress& progress,
                                     std::vector<std::string>& notes) {
   if (cmd.out.empty()) return fail("--out: expected the path of the .lungbake file to write");
-  if (cmd.procedural == !cmd.meshes.empty()) return fail("expected either --procedural or --mesh FILE");
+  const int inputs = int{cmd.procedural} + int{!cmd.meshes.empty()} + int{!cmd.labelmap.empty()};
+  if (inputs != 1) return fail("expected one of --procedural, --mesh FILE or --labelmap FILE");
   std::vector<LungMesh> lungs;
+  std::string source = cmd.procedural ? std::string("procedural lungs") : cmd.labelmap;
   if (cmd.procedural) {
-    lungs = procedural_lungs(cmd.nodes, cmd.seed);
+    lungs = procedural_lungs(cmd.nodes > 0 ? cmd.nodes : kDefaultProceduralNodes, cmd.seed);
   } else {
-    const double mm = units_to_mm(cmd.units);
-    if (mm == 0) return fail("--units: expected mm, cm or m, got '" + cmd.units + "'");
-    Result<std::vector<LungMesh>> imported = import_lungs(cmd.meshes, mm, notes);
-    if (!imported) return fail(imported.error());
-    lungs = std::move(*imported);
+    Result<std::vector<LungMesh>> got =
+        cmd.labelmap.empty() ? mesh_lungs(cmd, progress, notes) : label_map_lungs(cmd, progress, notes);
+    if (!got) return fail(got.error());
+    lungs = std::move(*got);
+    if (cmd.labelmap.empty()) source = cmd.meshes.front();
   }
   Result<BakeOutput> baked = bake_lungs(std::move(lungs), cmd.options, progress);
-  if (!baked) return fail((cmd.procedural ? std::string("procedural lungs") : cmd.meshes.front()) + ": " + baked.error());
+  if (!baked) return fail(source + ": " + baked.error());
   if (Status s = write_asset(baked->asset, cmd.out); !s) return fail(s.error());
   if (!cmd.report_json.empty()) {
     const std::string text = report_json(baked->report, notes).dump(2) + "\n";

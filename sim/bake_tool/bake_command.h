@@ -1,6 +1,6 @@
 /// @file bake_command.h
-/// @brief What `lungar-bake` does once its command line is parsed: import or generate, bake, write the asset
-///        and the report. Tests call it directly.
+/// @brief What `lungar-bake` does once its command line is parsed: import (a mesh, a label map) or generate,
+///        simplify, bake, write the asset and the report. Tests call it directly.
 #pragma once
 
 #include <cstdint>
@@ -13,18 +13,26 @@
 
 namespace lungar::sim {
 
+/// Vertices of a pair baked from a label map when --nodes is not given: the paper's model size.
+inline constexpr std::uint32_t kDefaultLabelMapNodes = 400000;
+
 struct BakeCommand {
   bool procedural = false;
-  std::uint32_t nodes = kDefaultProceduralNodes;
+  /// Vertices in all, shared between the lungs by surface area; 0: the input's default (procedural pair and
+  /// label map: 400,000; meshes: as they are). Meshes with more are simplified to it.
+  std::uint32_t nodes = 0;
   std::uint64_t seed = 1;
   std::vector<std::string> meshes;
+  std::string labelmap;              ///< NRRD, NIfTI or MetaImage label map
+  std::vector<std::string> labels;   ///< NAME=VALUE, one per lung of the label map
   std::string units = "mm";
-  std::string out;                 ///< the .lungbake path
-  std::string report_json;         ///< "" for none
+  std::string out;                   ///< the .lungbake path
+  std::string report_json;           ///< "" for none
   BakeOptions options;
 };
 
 /// Runs the bake; on any error nothing is left under `out` (or the report's path). `notes` collects repairs.
+/// `progress` also hears the import's stages ("label map", "surface", "simplify").
 Result<BakeReport> run_bake_command(const BakeCommand& command, const BakeProgress& progress,
                                     std::vector<std::string>& notes);
 

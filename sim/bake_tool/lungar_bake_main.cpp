@@ -52,24 +52,40 @@ int main(int argc, char** argv) {
                "truncated rows) and reports its accuracy against the exact eq. (1)."};
   app.set_version_flag("--version", std::string("lungar-bake ") + LUNGAR_VERSION);
   auto* procedural = app.add_flag("--procedural", cmd.procedural, "bake the built-in procedural pair of lungs");
-  app.add_option("--nodes", cmd.nodes, "total vertices of the procedural pair")
-      ->check(CLI::Range(52u, 8000000u))->needs(procedural)->capture_default_str();
+  app.add_option("--nodes", cmd.nodes, "vertices in all, shared between the lungs by area (default: 400000 for "
+                                       "--procedural and --labelmap; meshes with more are simplified to it)")
+      ->check(CLI::Range(52u, 8000000u));
   app.add_option("--seed", cmd.seed, "seed of the procedural pair")->needs(procedural)->capture_default_str();
   auto* mesh = app.add_option("--mesh", cmd.meshes, "lung surface (STL, OBJ, PLY): one file with both lungs, "
                                                     "or one file per lung")
                    ->expected(1, 2)->allow_extra_args(false)->take_all();
-  procedural->excludes(mesh);
+  auto* labelmap = app.add_option("--labelmap", cmd.labelmap, "CT label map (NRRD, NIfTI .nii/.nii.gz, MetaImage "
+                                                              ".mha/.mhd) holding the lungs");
+  app.add_option("--label", cmd.labels, "NAME=VALUE: a lung of the label map and its label (e.g. --label right=2 "
+                                        "--label left=3)")
+      ->needs(labelmap)->allow_extra_args(false);
+  procedural->excludes(mesh)->excludes(labelmap);
+  mesh->excludes(labelmap);
   app.add_option("--out", cmd.out, "the .lungbake file to write")->required();
   app.add_option("--bands", cmd.options.bands, "SH bands L (L^2 coefficients)")
       ->check(CLI::Range(1u, 8u))->capture_default_str();
   app.add_option("--units", cmd.units, "units of the mesh files")->check(CLI::IsMember({"mm", "cm", "m"}))
       ->capture_default_str();
+  app.add_option("--map", cmd.options.sphere.map, "the sphere map of the SH fit (radial: the paper's, folds where "
+                                                "the surface is not star-shaped; conformal: one-to-one on genus-0 surfaces)")
+      ->transform(CLI::CheckedTransformer(lungar::sim::kSphereMapNames.map(), CLI::ignore_case))
+      ->capture_default_str();
   app.add_option("--threads", cmd.options.threads, "worker threads (0: all)")->check(CLI::Range(0, 256))
       ->capture_default_str();
   app.add_option("--report-json", cmd.report_json, "write the bake report here");
+  app.add_flag("!--no-transfer-rows", cmd.options.transfer_rows,
+               "leave out the explicit transfer rows (the CPU eq. (1) baseline, --deform cpu1)");
+  app.add_flag("!--no-evaluate", cmd.options.evaluate,
+               "skip the report's accuracy and physiology figures (a faster bake, as the demo's)");
   try {
     app.parse(argc, argv);
-    if (!cmd.procedural && cmd.meshes.empty()) throw CLI::RequiredError("--procedural or --mesh FILE");
+    if (!cmd.procedural && cmd.meshes.empty() && cmd.labelmap.empty())
+      throw CLI::RequiredError("--procedural, --mesh FILE or --labelmap FILE");
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
@@ -81,9 +97,9 @@ int main(int argc, char** argv) {
 
   ProgressBar bar(::isatty(STDERR_FILENO) == 1);
   std::vector<std::string> notes;
-  log_line(cmd.procedural ? "baking the procedural pair, " + std::to_string(cmd.nodes) + " nodes, seed " +
-                                std::to_string(cmd.seed)
-                          : "baking " + cmd.meshes.front() + (cmd.meshes.size() > 1 ? " and " + cmd.meshes[1] : ""));
+  log_line(cmd.procedural  ? "baking the procedural pair, seed " + std::to_string(cmd.seed)
+           : !cmd.labelmap.empty() ? "baking the lungs of the label map " + cmd.labelmap
+                                   : "baking " + cmd.meshes.front() + (cmd.meshes.size() > 1 ? " and " + cmd.meshes[1] : ""));
   lungar::Result<lungar::sim::BakeReport> result = lungar::fail("not baked");
   try {
     result = lungar::sim::run_bake_command(cmd, [&](std::string_view s, double f) { bar(s, f); }, notes);

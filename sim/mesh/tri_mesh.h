@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/mesh/lung_source.h"
+
 namespace lungar::sim {
 
 using Triangle = std::array<std::uint32_t, 3>;
@@ -26,6 +28,7 @@ struct LungMesh {
   TriMesh mesh;
   bool has_centre = false;       ///< procedural lungs know their centre; imported ones use the volume centroid
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  LungSource source;             ///< filled by lungar-bake's import; the report carries it
 };
 
 /// Per-vertex geometry used by the bake (DESIGN.md: areas are a third of the incident triangles' areas,

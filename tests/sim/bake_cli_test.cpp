@@ -12,6 +12,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "label_map_files_support.h"
 #include "sim/asset/asset_io.h"
 #include "sim_test_support.h"
 
@@ -74,6 +75,63 @@ TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
   EXPECT_EQ(r["nodes"].get<std::uint32_t>(), a->vertex_count());
   EXPECT_EQ(r["bands_sweep"].size(), 7u);
   EXPECT_EQ(r["bands_sweep"][2]["coefficients"].get<int>(), 16);
+}
+
+/// Two balls of 30 mm radius on a 2 mm grid: label 2 at x = -40 mm (the right lung, LPS), label 3 at x = +40 mm.
+test::LabelVolume two_balls() {
+  test::LabelVolume v;
+  v.size = {70, 40, 40};
+  v.spacing = {2, 2, 2};
+  v.origin = {-69, -39, -39};
+  for (int k = 0; k < 40; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 70; ++i) {
+        const double x = -69 + 2 * i, y = -39 + 2 * j, z = -39 + 2 * k;
+        const double r2 = y * y + z * z;
+        v.labels.push_back((x + 40) * (x + 40) + r2 < 900 ? 2 : (x - 40) * (x - 40) + r2 < 900 ? 3 : 0);
+      }
+  return v;
+}
+
+TEST(BakeCli, LabelMapBakeWritesThePerLungReport) {
+  test::TempDir dir;
+  ASSERT_TRUE(test::write_label_volume(dir.file("m.nii.gz"), two_balls()));
+  const std::string args = "--labelmap " + dir.file("m.nii.gz") + " --label right=2 --label left=3 --nodes 8000 " +
+                           "--bands 3 --no-transfer-rows --threads 2 --out " + dir.file("m.lungbake") +
+                           " --report-json " + dir.file("m.json");
+  ASSERT_EQ(run(args, dir.file("err")), 0) << slurp(dir.file("err"));
+  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("m.json")));
+  EXPECT_EQ(r["map"], "conformal");
+  ASSERT_EQ(r["per_lung"].size(), 2u);
+  for (const auto& lung : r["per_lung"]) {
+    for (const char* key : {"name", "nodes", "volume_ml", "centroid_mm", "folded_triangles", "eq7_rms_rel_error",
+                            "map", "maps", "bands_sweep", "input_nodes", "label_map"})
+      EXPECT_TRUE(lung.contains(key)) << key;
+    EXPECT_EQ(lung["folded_triangles"], 0);
+    EXPECT_NEAR(lung["volume_ml"].get<double>(), 113.1, 3.0) << "a ball of 30 mm";
+    EXPECT_NEAR(std::abs(lung["centroid_mm"][0].get<double>()), 40, 1.0);
+  }
+  EXPECT_EQ(r["per_lung"][0]["name"], "right");
+  EXPECT_LT(r["per_lung"][0]["centroid_mm"][0].get<double>(), 0);
+  ASSERT_EQ(r["bands_sweep"].size(), 7u);
+  EXPECT_TRUE(r["bands_sweep"][1]["by_map"].contains("radial"));
+  EXPECT_TRUE(r["bands_sweep"][1]["by_map"].contains("conformal"));
+}
+
+TEST(BakeCli, BadLabelOptionsAreRefused) {
+  test::TempDir dir;
+  ASSERT_TRUE(test::write_label_volume(dir.file("m.nrrd"), two_balls()));
+  const std::string map = dir.file("m.nrrd");
+  for (const std::string& args : std::vector<std::string>{"--labelmap " + map + " --label right --out a.lungbake",
+                                 std::string("--label right=2 --out a.lungbake"),
+                                 "--labelmap " + map + " --mesh x.stl --label right=2 --out a.lungbake",
+                                 "--labelmap " + map + " --label right=9 --out " + dir.file("a.lungbake")}) {
+    const int rc = run(args, dir.file("err"));
+    EXPECT_GE(rc, 1) << args;
+    EXPECT_LT(rc, 128) << args;
+    EXPECT_FALSE(slurp(dir.file("err")).empty()) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("a.lungbake"))) << args;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,144 @@
+/// @file itk_label_reader.cpp
+/// @brief ITK reads the header and the voxels; the labels are cropped here in one pass over the voxels.
+#include "sim/bake_tool/itk_label_reader.h"
+
+#include <itkImage.h>
+#include <itkImageFileReader.h>
+#include <itkImageIOFactory.h>
+#include <itkMetaImageIOFactory.h>
+#include <itkNiftiImageIOFactory.h>
+#include <itkNrrdImageIOFactory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <set>
+
+namespace lungar::sim::itk_io {
+namespace {
+
+/// Registers the three formats lungar reads (no other ITK format is linked).
+void register_formats() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    itk::NrrdImageIOFactory::RegisterOneFactory();
+    itk::NiftiImageIOFactory::RegisterOneFactory();
+    itk::MetaImageIOFactory::RegisterOneFactory();
+  });
+}
+
+/// ITK's exception text on one line, without its source location.
+std::string itk_reason(const itk::ExceptionObject& e) {
+  std::string why = e.GetDescription();
+  std::replace(why.begin(), why.end(), '\n', ' ');
+  while (!why.empty() && why.back() == ' ') why.pop_back();
+  return why.empty() ? "unknown reason" : why;
+}
+
+struct Box {
+  std::array<int, 3> lo{INT32_MAX, INT32_MAX, INT32_MAX}, hi{-1, -1, -1};
+  std::int64_t count = 0;
+};
+
+/// The grid's placement: origin and the voxel steps (direction cosines times spacing), LPS mm.
+template <class Image>
+lungar::Status place(const std::string& path, const Image& image, LabelImage& out) {
+  for (int a = 0; a < 3; ++a) {
+    out.size[a] = static_cast<int>(image.GetLargestPossibleRegion().GetSize()[a]);
+    out.origin[a] = image.GetOrigin()[a];
+    for (int b = 0; b < 3; ++b) out.axes[3 * b + a] = image.GetDirection()(b, a) * image.GetSpacing()[a];
+  }
+  const auto& m = out.axes;
+  const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+                     m[2] * (m[3] * m[7] - m[4] * m[6]);
+  bool finite = std::isfinite(det);
+  for (double o : out.origin) finite = finite && std::isfinite(o);
+  if (!finite || !(std::abs(det) > 1e-9))
+    return fail(path + ": space directions: expected a non-singular voxel frame (spacing and direction cosines)");
+  return ok();
+}
+
+/// Reads the voxels as T, finds each value's bounding box in one pass, then copies the boxes out.
+template <class T>
+lungar::Result<LabelImage> crop_labels(const std::string& path, const std::vector<std::int64_t>& values) {
+  using Image = itk::Image<T, 3>;
+  auto reader = itk::ImageFileReader<Image>::New();
+  reader->SetFileName(path);
+  try {
+    reader->Update();
+  } catch (const itk::ExceptionObject& e) {
+    return fail(path + ": voxels: cannot read them: " + itk_reason(e) + "; expected an intact label map");
+  }
+  LabelImage out;
+  if (lungar::Status s = place(path, *reader->GetOutput(), out); !s) return fail(s.error());
+  const T* voxel = reader->GetOutput()->GetBufferPointer();
+  const auto at = [&](int i, int j, int k) {
+    return static_cast<std::int64_t>(voxel[(std::int64_t{k} * out.size[1] + j) * out.size[0] + i]);
+  };
+  std::vector<Box> box(values.size());
+  std::set<std::int64_t> seen;
+  for (int k = 0; k < out.size[2]; ++k)
+    for (int j = 0; j < out.size[1]; ++j)
+      for (int i = 0; i < out.size[0]; ++i) {
+        const std::int64_t value = at(i, j, k);
+        if (seen.size() <= 16) seen.insert(value);
+        for (std::size_t l = 0; l < values.size(); ++l)
+          if (value == values[l]) {
+            Box& b = box[l];
+            ++b.count;
+            const std::array<int, 3> p{i, j, k};
+            for (int a = 0; a < 3; ++a) b.lo[a] = std::min(b.lo[a], p[a]), b.hi[a] = std::max(b.hi[a], p[a]);
+          }
+      }
+  out.more_values = seen.size() > 16;
+  out.values_seen.assign(seen.begin(), seen.end());
+  if (out.more_values) out.values_seen.pop_back();
+  for (std::size_t l = 0; l < values.size(); ++l) {
+    CroppedLabel c{values[l], box[l].count, box[l].lo, {0, 0, 0}, {}};
+    if (c.voxels > 0) {
+      for (int a = 0; a < 3; ++a) c.size[a] = box[l].hi[a] - box[l].lo[a] + 1;
+      c.inside.resize(static_cast<std::size_t>(std::int64_t{c.size[0]} * c.size[1] * c.size[2]));
+      std::size_t v = 0;
+      for (int k = 0; k < c.size[2]; ++k)
+        for (int j = 0; j < c.size[1]; ++j)
+          for (int i = 0; i < c.size[0]; ++i) c.inside[v++] = at(i + c.lo[0], j + c.lo[1], k + c.lo[2]) == values[l];
+    }
+    out.labels.push_back(std::move(c));
+  }
+  return out;
+}
+
+}  // namespace
+
+lungar::Result<LabelImage> read_label_image(const std::string& path, const std::vector<std::int64_t>& values) {
+  register_formats();
+  itk::ImageIOBase::Pointer io = itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::IOFileModeEnum::ReadMode);
+  if (!io) return fail(path + ": cannot read: expected a label map in NRRD, NIfTI (.nii, .nii.gz) or MetaImage (.mha, .mhd)");
+  try {
+    io->SetFileName(path);
+    io->ReadImageInformation();
+  } catch (const itk::ExceptionObject& e) {
+    return fail(path + ": header: cannot read it: " + itk_reason(e));
+  }
+  if (io->GetNumberOfDimensions() != 3)
+    return fail(path + ": dimension: expected a 3-D label map, got " + std::to_string(io->GetNumberOfDimensions()) + "-D");
+  if (io->GetNumberOfComponents() != 1)
+    return fail(path + ": components: expected one label per voxel, got " + std::to_string(io->GetNumberOfComponents()));
+  for (unsigned a = 0; a < 3; ++a)
+    if (io->GetDimensions(a) < 2) return fail(path + ": sizes: expected at least 2 voxels along each axis");
+  using C = itk::IOComponentEnum;
+  switch (io->GetComponentType()) {
+    case C::UCHAR: return crop_labels<std::uint8_t>(path, values);
+    case C::CHAR: return crop_labels<std::int8_t>(path, values);
+    case C::USHORT: return crop_labels<std::uint16_t>(path, values);
+    case C::SHORT: return crop_labels<std::int16_t>(path, values);
+    case C::UINT: return crop_labels<std::uint32_t>(path, values);
+    case C::INT: return crop_labels<std::int32_t>(path, values);
+    case C::ULONG: case C::LONG: case C::ULONGLONG: case C::LONGLONG: return crop_labels<std::int64_t>(path, values);
+    default:
+      return fail(path + ": voxel type: expected integer labels, got " +
+                  itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()));
+  }
+}
+
+}  // namespace lungar::sim::itk_io

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
   using lungar::platform::RuntimeOptions;
   CLI::App app{
       "lungar: breathing 3-D lungs superimposed on a patient simulator, for a head-mounted display.\n"
-      "With no arguments it runs the demo: the procedural lungs, the mock tracker turning the patient from upright "
+      "With no arguments it runs the demo: real lungs from CT (the shipped label map, baked once by lungar-bake and "
+      "cached), the mock tracker turning the patient from upright "
       "to supine, normal breathing, for 10 s; in a window when DISPLAY is set, headless otherwise; then a snapshot "
       "and stats in $XDG_STATE_HOME/lungar/ (~/.local/state/lungar/) and a summary."};
   app.set_version_flag("--version", std::string("lungar ") + LUNGAR_VERSION);

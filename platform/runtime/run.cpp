@@ -29,14 +29,15 @@ constexpr double kDemoSeconds = 10.0;
 const char* const kDefaultSnapshot = "out/snapshot.png";
 const char* const kDefaultStats = "out/stats.json";
 
-/// The configured asset, or the demo pair baked once and cached; with the name the stats JSON reports.
-Result<std::shared_ptr<LungScene>> load_scene(const config::Settings& s) {
+/// The configured asset, or the demo's lungs baked once and cached (the CT pair; the procedural one on
+/// --procedural); with the name the stats JSON reports.
+Result<std::shared_ptr<LungScene>> load_scene(const config::Settings& s, bool procedural) {
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == config::Deform::Cpu1;
-  const std::string name = s.sim.asset.empty() ? demo_asset_path(demo) : s.sim.asset;
-  Result<sim::BakedAsset> asset = s.sim.asset.empty() ? load_or_bake_demo_asset(demo, log_line) : sim::load_asset(name);
-  if (!asset) return asset.with_context("");
-  return LungScene::create(asset.take(), name, {.half_float = s.render.half_float});
+  demo.procedural = procedural;
+  Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
+  if (!drawn) return drawn.with_context("");
+  return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 
 /// This station's tracker, and the breathing script with the teaching scenario's turns when the mock tracker
@@ -64,12 +65,12 @@ Status add_sources(const config::Settings& s, const RuntimeOptions& o, double li
 }
 
 /// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
-Status open_output_and_scene(const config::Settings& s, RuntimeParts& parts) {
+Status open_output_and_scene(const config::Settings& s, bool procedural, RuntimeParts& parts) {
   auto output = open_output(s, log_line);
   if (!output) return output.with_context("");
   parts.output = output.take();
   log_line("output: " + parts.output->describe());
-  auto scene = load_scene(s);
+  auto scene = load_scene(s, procedural);
   if (!scene) return scene.with_context("");
   parts.scene = scene.take();
   const sim::BakedAsset& a = parts.scene->asset();
@@ -139,7 +140,7 @@ int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
   log_line(config::summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
-  if (Status opened = open_output_and_scene(s, parts); !opened) {
+  if (Status opened = open_output_and_scene(s, o.procedural, parts); !opened) {
     log_line("error: " + opened.error());
     return 1;
   }

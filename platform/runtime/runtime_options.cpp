@@ -73,7 +73,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--config", o.config_path,
                  "settings TOML (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, else "
                  "built-in; every key: default.toml)");
-  app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the cached demo lungs)");
+  auto* asset = app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the demo's CT lungs, cached)");
+  app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
+      ->excludes(asset);
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker,

@@ -16,6 +16,7 @@ namespace lungar::platform {
 struct RuntimeOptions {
   std::string config_path;
   std::string asset_path;
+  bool procedural = false;        ///< draw the procedural pair, not the demo's CT lungs
   std::string scenario_path;      ///< breathing/orientation scenario TOML
   std::string tracker;            ///< "mock" | "hid" | "igtl[:HOST[:PORT]]" | "replay:FILE"; empty: from the config
   bool headless = false;

@@ -203,6 +203,7 @@ lungar::Result<SphereMapResult> conformal_map(const TriMesh& mesh) {
   r.u = lift_to_sphere(plane);
   balance_centroid(r.u, vertex_area);
   r.folded = untangle(mesh, edges, r.u);
+  r.area_distortion = rms_over_area(log_area_ratio(mesh, area, r.u, total), area, total);
   return r;
 }
 

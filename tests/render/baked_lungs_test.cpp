@@ -11,6 +11,7 @@
 #include "render/frame_target.h"
 #include "render/png_snapshot.h"
 #include "render/renderer.h"
+#include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
@@ -218,19 +219,34 @@ TEST_F(BakedLungsTest, LevelOfDetailOfTheBakeOrderLeavesNoHoles) {
 namespace lungar::render {
 namespace {
 
-// The README's picture: LUNGAR_README_SNAPSHOT=out.png bakes 100k procedural nodes and writes the stereo pair
-// (2 x 640x720, points of 5 px, upright at end-inspiration, seen from the front-left). Skipped otherwise.
+// The README's picture: LUNGAR_README_SNAPSHOT=out.png draws LUNGAR_README_ASSET (a .lungbake; without it, 100k
+// procedural nodes baked here) and writes the stereo pair (2 x 640x720, points of 5 px, upright at
+// end-inspiration, seen from the front-left, aimed at the pair's centre). Skipped otherwise.
 TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
   const char* path = std::getenv("LUNGAR_README_SNAPSHOT");
   if (path == nullptr) GTEST_SKIP() << "set LUNGAR_README_SNAPSHOT=path.png to write the README snapshot";
   auto c = platform::EglContext::headless();
   ASSERT_TRUE(c) << c.error();
-  sim::BakeOptions o;
-  o.transfer_rows = false;
-  o.evaluate = false;
-  auto baked = sim::bake_procedural(100000, 1, o, nullptr);
-  ASSERT_TRUE(baked) << baked.error();
-  const sim::BakedAsset& a = baked->asset;
+  sim::BakedAsset a;
+  if (const char* asset = std::getenv("LUNGAR_README_ASSET")) {
+    auto loaded = sim::load_asset(asset);
+    ASSERT_TRUE(loaded) << loaded.error();
+    a = loaded.take();
+  } else {
+    sim::BakeOptions o;
+    o.transfer_rows = false;
+    o.evaluate = false;
+    auto baked = sim::bake_procedural(100000, 1, o, nullptr);
+    ASSERT_TRUE(baked) << baked.error();
+    a = std::move(baked->asset);
+  }
+  glm::vec3 lo(1e9f), hi(-1e9f);
+  for (std::size_t i = 0; i < a.positions.size(); i += 3) {
+    const glm::vec3 p(a.positions[i], a.positions[i + 1], a.positions[i + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 centre = 0.5f * (lo + hi);
   auto drawable = LungDrawable::create(a);
   ASSERT_TRUE(drawable) << drawable.error();
   auto renderer = Renderer::create(*drawable);
@@ -246,7 +262,7 @@ TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
   }
   HmdGeometry hmd;
   const StereoView stereo(hmd);
-  const auto eyes = stereo.eyes(look_from({-130.f, -300.f, 40.f}, {0.f, 0.f, -10.f}, {0.f, 0.f, 1.f}));
+  const auto eyes = stereo.eyes(look_from(centre + glm::vec3(-130.f, -300.f, 50.f), centre, {0.f, 0.f, 1.f}));
   auto target = FrameTarget::create(stereo.target_width(), stereo.target_height());
   ASSERT_TRUE(target);
   FrameInputs f;

@@ -33,7 +33,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 Status fit_basis(LungWork& w, const BakeOptions& opt, int bands_solved) {
   const std::string who = "lung '" + w.name + "'";
   lungar::Result<SphereMapResult> mapped = map_to_sphere(w.mesh, w.centre, opt.sphere);
-  if (!mapped) return {who + ": " + mapped.error()};
+  if (!mapped) return fail(who + ": " + mapped.error());
   w.sphere = mapped.take();
   const auto n = static_cast<Eigen::Index>(w.mesh.positions.size());
   w.c_solved = bands_solved * bands_solved;
@@ -45,9 +45,9 @@ Status fit_basis(LungWork& w, const BakeOptions& opt, int bands_solved) {
   Eigen::LDLT<Eigen::MatrixXd> g(w.gram.topLeftCorner(c, c));
   const Eigen::VectorXd diag = g.vectorD();
   if (g.info() != Eigen::Success || !(diag.minCoeff() > 1e-9 * diag.maxCoeff()))
-    return {who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
-            " SH bands; expected a finer, closed surface around its centre"};
-  return {};
+    return fail(who + ": its " + std::to_string(n) + " vertices cannot resolve " + std::to_string(opt.bands) +
+                " SH bands; expected a finer, closed surface around its centre");
+  return ok();
 }
 
 /// Everything one lung's bake computes; the evaluation reuses the factor and the double-precision fields.

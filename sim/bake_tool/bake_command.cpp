@@ -44,30 +44,29 @@ void for_each_lung(std::size_t n, int threads, const Job& job) {
 /// Simplifies `lung` to `target` vertices when it has more than 5 % over, and (with `measure`) how far it strays.
 Status simplify_lung(LungMesh& lung, std::uint32_t target, int threads, bool measure = true) {
   if (lung.source.input_vertices == 0) lung.source.input_vertices = static_cast<std::uint32_t>(lung.mesh.positions.size());
-  if (target == 0 || static_cast<double>(lung.mesh.positions.size()) <= 1.05 * target) return {};
+  if (target == 0 || static_cast<double>(lung.mesh.positions.size()) <= 1.05 * target) return ok();
   lungar::Result<TriMesh> simple = simplify_surface(lung.mesh, target);
-  if (!simple) return {"lung '" + lung.name + "': " + simple.error()};
+  if (!simple) return fail("lung '" + lung.name + "': " + simple.error());
   lung.source.simplified = true;
   if (measure) lung.source.hausdorff_mm = hausdorff_mm(lung.mesh, *simple, threads);
   lung.mesh = simple.take();
-  return {};
+  return ok();
 }
 
 /// Surfaces from a label map: one lung per --label, each sized by its share of --nodes.
 Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const BakeProgress& progress,
                                               std::vector<std::string>& notes) {
-  using R = Result<std::vector<LungMesh>>;
   std::vector<LabelRequest> requests;
   for (const std::string& text : cmd.labels) {
     lungar::Result<LabelRequest> r = parse_label_request(text);
-    if (!r) return R::fail(r.error());
+    if (!r) return fail(r.error());
     for (const LabelRequest& other : requests)
-      if (other.name == r->name) return R::fail("--label: the name '" + r->name + "' is given twice; expected one per lung");
+      if (other.name == r->name) return fail("--label: the name '" + r->name + "' is given twice; expected one per lung");
     requests.push_back(r.take());
   }
   if (progress) progress("label map", 0.0);
   lungar::Result<std::vector<LabelMask>> masks = read_label_masks(cmd.labelmap, requests);
-  if (!masks) return R::fail(masks.error());
+  if (!masks) return fail(masks.error());
   std::vector<double> areas;
   for (const LabelMask& m : *masks) areas.push_back(mask_surface_area_mm2(m.mask));
   const std::vector<std::uint32_t> target = share_by_area(cmd.nodes > 0 ? cmd.nodes : kDefaultLabelMapNodes, areas);
@@ -86,17 +85,17 @@ Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const Bake
     lung.mesh = std::move(s->mesh);
     lung.source = {0, false, 0, true, false, 0, m.label.value, m.voxels, s->grid_mm, s->repair.components,
                    s->repair.removed_voxels, s->repair.filled_voxels, s->removed_ml, s->filled_ml};
-    if (Status st = simplify_lung(lung, target[l], 1); !st) error[l] = cmd.labelmap + ": " + st.error;
+    if (Status st = simplify_lung(lung, target[l], 1); !st) error[l] = cmd.labelmap + ": " + st.error();
   });
   for (const std::string& e : error)
-    if (!e.empty()) return R::fail(e);
+    if (!e.empty()) return fail(e);
   for (const LungMesh& lung : lungs) {
     const double x = volume_centroid(lung.mesh).x();
     if ((lung.name == "right" && x > 0) || (lung.name == "left" && x < 0))
       notes.push_back(cmd.labelmap + ": lung '" + lung.name + "' lies at x " + (x > 0 ? "> 0" : "< 0") +
                       " (LPS: +x is the patient's left); check its --label value");
   }
-  return R::ok(std::move(lungs));
+  return lungs;
 }
 
 /// A surface with handles (a raw segmentation export: marching cubes leaves tunnels where voxels touch along an
@@ -106,12 +105,12 @@ Status rebuild_without_handles(LungMesh& lung, std::uint32_t target) {
   const long handles = (2 - euler_characteristic(lung.mesh)) / 2;
   lungar::Result<LabelSurface> s = label_surface(voxelize(lung.mesh, voxel_step_for(lung.mesh)),
                                                  target > 0 ? target : static_cast<std::uint32_t>(lung.mesh.positions.size()));
-  if (!s) return {"lung '" + lung.name + "': rebuilding it from its voxels: " + s.error()};
+  if (!s) return fail("lung '" + lung.name + "': rebuilding it from its voxels: " + s.error());
   lung.source = {static_cast<std::uint32_t>(lung.mesh.positions.size()), true, 0, false, true, handles, 0, 0,
                  s->grid_mm, s->repair.components, s->repair.removed_voxels, s->repair.filled_voxels, s->removed_ml,
                  s->filled_ml};
   lung.mesh = std::move(s->mesh);
-  return {};
+  return ok();
 }
 
 /// The note that says a lung was rebuilt, and how far it moved.
@@ -129,9 +128,8 @@ std::string rebuild_note(const std::string& file, const LungMesh& lung) {
 /// Surfaces from mesh files, simplified to --nodes when they have more.
 Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgress& progress,
                                          std::vector<std::string>& notes) {
-  using R = Result<std::vector<LungMesh>>;
   const double mm = units_to_mm(cmd.units);
-  if (mm == 0) return R::fail("--units: expected mm, cm or m, got '" + cmd.units + "'");
+  if (mm == 0) return fail("--units: expected mm, cm or m, got '" + cmd.units + "'");
   Result<std::vector<LungMesh>> imported = import_lungs(cmd.meshes, mm, notes);
   if (!imported) return imported;
   std::vector<LungMesh>& lungs = *imported;
@@ -162,7 +160,7 @@ Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgr
     notes.push_back(rebuild_note(cmd.meshes.front(), lungs[l]));
   }
   for (const Status& s : status)
-    if (!s) return R::fail(cmd.meshes.front() + ": " + s.error);
+    if (!s) return fail(cmd.meshes.front() + ": " + s.error());
   return imported;
 }
 

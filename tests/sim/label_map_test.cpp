@@ -76,8 +76,8 @@ void expect_same_lungs_from_both_formats(const LabelVolume& v, std::uint32_t nod
   std::vector<std::string> notes;
   const auto a = run_bake_command(label_command(dir.file("map.nrrd"), dir.file("a.lungbake"), nodes), nullptr, notes);
   const auto b = run_bake_command(label_command(dir.file("map.nii.gz"), dir.file("b.lungbake"), nodes), nullptr, notes);
-  ASSERT_TRUE(a) << a.error;
-  ASSERT_TRUE(b) << b.error;
+  ASSERT_TRUE(a) << a.error();
+  ASSERT_TRUE(b) << b.error();
   for (const char* name : {"right", "left"}) {
     const LungReport& la = lung_named(*a, name);
     const LungReport& lb = lung_named(*b, name);
@@ -101,7 +101,7 @@ TEST(LabelMap, SyntheticLungsComeOutAtTheirPlaceAndSizeWithTheTunnelClosed) {
   ASSERT_TRUE(test::write_label_volume(dir.file("map.nrrd"), synthetic_pair()));
   std::vector<std::string> notes;
   const auto r = run_bake_command(label_command(dir.file("map.nrrd"), dir.file("a.lungbake"), 6000), nullptr, notes);
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.error();
   const LungReport& right = lung_named(*r, "right");
   const LungReport& left = lung_named(*r, "left");
   EXPECT_NEAR(right.volume_ml, 4.0 / 3.0 * std::numbers::pi * kRightHalf.prod() / 1000, 0.03 * right.volume_ml);
@@ -135,11 +135,11 @@ class BadLabelMap : public ::testing::Test {
     std::vector<std::string> notes;
     const auto r = run_bake_command(c, nullptr, notes);
     EXPECT_FALSE(r) << "a bad label map was baked";
-    EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+    EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
     EXPECT_FALSE(std::filesystem::exists(dir_.file("out.lungbake")));
     for (const auto& entry : std::filesystem::directory_iterator(dir_.file("")))
       EXPECT_EQ(entry.path().string().find("out.lungbake"), std::string::npos) << entry.path();
-    return r.error;
+    return r.error();
   }
   TempDir dir_;
 };

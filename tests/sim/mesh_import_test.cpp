@@ -232,7 +232,7 @@ TEST(MeshImport, NodesSimplifiesALargerSurfaceAndMeasuresHowFarItMoved) {
   c.options.transfer_rows = false;
   std::vector<std::string> notes;
   const Result<BakeReport> r = run_bake_command(c, nullptr, notes);
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.error();
   EXPECT_NEAR(r->nodes, 2000, 100) << "N +- 5 %";
   const LungSource& s = r->per_lung[0].source;
   EXPECT_TRUE(s.simplified);
@@ -244,7 +244,7 @@ TEST(MeshImport, NodesSimplifiesALargerSurfaceAndMeasuresHowFarItMoved) {
   c.nodes = 50000;  // more than the surface has: kept as it is, and said
   notes.clear();
   const Result<BakeReport> kept = run_bake_command(c, nullptr, notes);
-  ASSERT_TRUE(kept) << kept.error;
+  ASSERT_TRUE(kept) << kept.error();
   EXPECT_EQ(kept->nodes, s.input_vertices);
   EXPECT_FALSE(kept->per_lung[0].source.simplified);
   ASSERT_FALSE(notes.empty());
@@ -262,7 +262,7 @@ TEST(MeshImport, ASurfaceWithAHandleIsRebuiltFromItsVoxelsForTheConformalMap) {
   c.options.transfer_rows = false;
   std::vector<std::string> notes;
   const Result<BakeReport> r = run_bake_command(c, nullptr, notes);
-  ASSERT_TRUE(r) << r.error;
+  ASSERT_TRUE(r) << r.error();
   const LungSource& s = r->per_lung[0].source;
   EXPECT_TRUE(s.rebuilt_from_voxels);
   EXPECT_EQ(s.handles, 1);
@@ -277,7 +277,7 @@ TEST(MeshImport, ASurfaceWithAHandleIsRebuiltFromItsVoxelsForTheConformalMap) {
   c.options.sphere.map = SphereMap::radial;  // the radial map takes a surface with handles as it is
   notes.clear();
   const Result<BakeReport> radial = run_bake_command(c, nullptr, notes);
-  ASSERT_TRUE(radial) << radial.error;
+  ASSERT_TRUE(radial) << radial.error();
   EXPECT_FALSE(radial->per_lung[0].source.rebuilt_from_voxels);
   EXPECT_GT(radial->folded_triangles, 0u);
 }

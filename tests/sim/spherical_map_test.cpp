@@ -97,7 +97,7 @@ TEST(SphericalMap, TheBakeReportsBothMapsSideBySide) {
   options.threads = 2;
   options.transfer_rows = false;
   const auto baked = bake_lungs({lung}, options, nullptr);
-  ASSERT_TRUE(baked) << baked.error;
+  ASSERT_TRUE(baked) << baked.error();
   const BakeReport& r = baked->report;
   EXPECT_EQ(r.map, SphereMap::conformal);
   EXPECT_EQ(r.folded_triangles, 0u);

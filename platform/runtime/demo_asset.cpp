@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -104,7 +105,7 @@ Result<DrawnAsset> ct_asset(const DemoAssetOptions& o, const fs::path& map, cons
   std::error_code ec;
   if (fs::exists(path, ec)) {
     auto loaded = sim::load_asset(path);
-    if (loaded) return DrawnAsset{loaded.take(), name};
+    if (loaded) return DrawnAsset{loaded.take(), name, true};
     log("cached demo asset unusable (" + loaded.error() + "); baking it again");
   }
   log("baking the demo lungs from the CT label map " + map.string() + " with " + tool.string() +
@@ -117,10 +118,24 @@ Result<DrawnAsset> ct_asset(const DemoAssetOptions& o, const fs::path& map, cons
   if (Status s = run_child(argv); !s) return fail("demo asset: " + s.error());
   auto loaded = sim::load_asset(path);
   if (!loaded) return fail("demo asset: " + loaded.error());
-  return DrawnAsset{loaded.take(), name};
+  return DrawnAsset{loaded.take(), name, true};
 }
 
 }  // namespace
+
+bool centre_demo_lungs(const DrawnAsset& drawn, config::RegistrationSettings& r) {
+  const config::RegistrationSettings identity;
+  if (!drawn.demo_ct || r.translation_mm != identity.translation_mm || r.rotation_wxyz != identity.rotation_wxyz ||
+      drawn.asset.positions.empty())
+    return false;
+  std::array<float, 3> lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  for (std::size_t i = 0; i < drawn.asset.positions.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], drawn.asset.positions[i]);
+    hi[i % 3] = std::max(hi[i % 3], drawn.asset.positions[i]);
+  }
+  for (int k = 0; k < 3; ++k) r.translation_mm[k] = -0.5 * (static_cast<double>(lo[k]) + hi[k]);
+  return true;
+}
 
 std::string demo_asset_path(const DemoAssetOptions& o) {
   char name[160];

@@ -17,6 +17,7 @@
 
 #include "sim/asset/baked_asset.h"
 #include "config/base/result.h"
+#include "config/settings.h"
 #include "sim/bake/bake.h"
 
 namespace lungar::platform {
@@ -39,7 +40,13 @@ struct DemoAssetOptions {
 struct DrawnAsset {
   sim::BakedAsset asset;
   std::string name;
+  bool demo_ct = false;  ///< the demo's CT lungs (in the scanner's LPS frame, far from its origin)
 };
+
+/// The demo's CT lungs sit where the scanner put them (their centre some 24 cm from its origin); with no
+/// registration configured (the identity), the demo moves their centre onto the patient tracker, where the
+/// procedural pair's is. Returns whether it did.
+bool centre_demo_lungs(const DrawnAsset& drawn, config::RegistrationSettings& registration);
 
 /// Where the cached procedural asset for `o` lives.
 std::string demo_asset_path(const DemoAssetOptions& o);

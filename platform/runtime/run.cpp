@@ -29,14 +29,15 @@ constexpr double kDemoSeconds = 10.0;
 const char* const kDefaultSnapshot = "out/snapshot.png";
 const char* const kDefaultStats = "out/stats.json";
 
-/// The configured asset, or the demo's lungs baked once and cached (the CT pair; the procedural one on
-/// --procedural); with the name the stats JSON reports.
-Result<std::shared_ptr<LungScene>> load_scene(const config::Settings& s, bool procedural) {
+/// The configured asset, or the demo's lungs baked once and cached (the CT pair, centred on the patient; the
+/// procedural one on --procedural); with the name the stats JSON reports.
+Result<std::shared_ptr<LungScene>> load_scene(config::Settings& s, bool procedural) {
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == config::Deform::Cpu1;
   demo.procedural = procedural;
   Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
   if (!drawn) return drawn.with_context("");
+  if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
   return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 
@@ -65,7 +66,7 @@ Status add_sources(const config::Settings& s, const RuntimeOptions& o, double li
 }
 
 /// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
-Status open_output_and_scene(const config::Settings& s, bool procedural, RuntimeParts& parts) {
+Status open_output_and_scene(config::Settings& s, bool procedural, RuntimeParts& parts) {
   auto output = open_output(s, log_line);
   if (!output) return output.with_context("");
   parts.output = output.take();
@@ -136,7 +137,8 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
 
 }  // namespace
 
-int run_runtime(const config::Settings& s, const RuntimeOptions& o) {
+int run_runtime(const config::Settings& configured, const RuntimeOptions& o) {
+  config::Settings s = configured;  // the demo's CT lungs may set the registration
   log_line(config::summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;

@@ -116,11 +116,18 @@ int main(int argc, char** argv) {
   }
   const auto& r = *result;
   char line[512];
-  std::snprintf(line, sizeof line,
-                "wrote %s: %u nodes, %u lungs, %u coefficients, %.1f s; eq7 error %.4f, alpha %.4f, "
-                "%.0f non-zeros a transfer row, %llu folded triangles",
-                cmd.out.c_str(), r.nodes, r.lungs, r.coefficients, r.bake_s, r.eq7_rms_rel_error, r.alpha,
-                r.transfer_nnz_per_row_mean, static_cast<unsigned long long>(r.folded_triangles));
-  log_line(line);
+  std::snprintf(line, sizeof line, "wrote %s: %u nodes, %u lungs, %u coefficients, %.1f s; %s map, %llu folded triangles",
+                cmd.out.c_str(), r.nodes, r.lungs, r.coefficients, r.bake_s, lungar::sim::kSphereMapNames.name(r.map),
+                static_cast<unsigned long long>(r.folded_triangles));
+  std::string message = line;
+  if (r.evaluated) {
+    std::snprintf(line, sizeof line, "; eq7 error %.4f, alpha %.4f", r.eq7_rms_rel_error, r.alpha);
+    message += line;
+  }
+  if (r.transfer_nnz_per_row_mean > 0) {
+    std::snprintf(line, sizeof line, "; %.0f non-zeros a transfer row", r.transfer_nnz_per_row_mean);
+    message += line;
+  }
+  log_line(message);
   return 0;
 }

@@ -54,7 +54,7 @@ option(LUNGAR_MAN "Make a man page per tool with help2man" ON)
 if(LUNGAR_MAN AND HELP2MAN AND NOT CMAKE_CROSSCOMPILING)
   set(man_names
     "lungar=breathing 3-D lungs on a patient simulator, for a head-mounted display"
-    "lungar-bake=bake lung surfaces into the asset the lungar runtime draws"
+    "lungar-bake=bake lung surfaces and CT label maps into the asset the lungar runtime draws"
     "lungar-trk=inspect, dump, cut and synthesise .trk tracker logs")
   set(man_pages "")
   foreach(entry ${man_names})

@@ -44,12 +44,8 @@ class ProgressBar {
   int percent_ = -1;
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  lungar::sim::BakeCommand cmd;
-  CLI::App app{"lungar-bake: bakes lung surfaces into a .lungbake asset (transfer-matrix SH, force bases, "
-               "truncated rows) and reports its accuracy against the exact eq. (1)."};
+/// The command line: every option of `cmd` on `app`.
+void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
   app.set_version_flag("--version", std::string("lungar-bake ") + LUNGAR_VERSION);
   auto* procedural = app.add_flag("--procedural", cmd.procedural, "bake the built-in procedural pair of lungs");
   app.add_option("--nodes", cmd.nodes, "vertices in all, shared between the lungs by area (default: 400000 for "
@@ -82,6 +78,32 @@ int main(int argc, char** argv) {
                "leave out the explicit transfer rows (the CPU eq. (1) baseline, --deform cpu1)");
   app.add_flag("!--no-evaluate", cmd.options.evaluate,
                "skip the report's accuracy and physiology figures (a faster bake, as the demo's)");
+}
+
+/// One line: what was written, and the figures the bake computed.
+void log_summary(const lungar::sim::BakeCommand& cmd, const lungar::sim::BakeReport& r) {
+  char line[512];
+  std::snprintf(line, sizeof line, "wrote %s: %u nodes, %u lungs, %u coefficients, %.1f s; %s map, %llu folded triangles",
+                cmd.out.c_str(), r.nodes, r.lungs, r.coefficients, r.bake_s, lungar::sim::kSphereMapNames.name(r.map),
+                static_cast<unsigned long long>(r.folded_triangles));
+  std::string message = line;
+  if (r.evaluated) {
+    std::snprintf(line, sizeof line, "; eq7 error %.4f, alpha %.4f", r.eq7_rms_rel_error, r.alpha);
+    message += line;
+  }
+  if (r.transfer_nnz_per_row_mean > 0) {
+    std::snprintf(line, sizeof line, "; %.0f non-zeros a transfer row", r.transfer_nnz_per_row_mean);
+    message += line;
+  }
+  log_line(message);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  lungar::sim::BakeCommand cmd;
+  CLI::App app{"lungar-bake: bakes lung surfaces or CT label maps into a .lungbake asset (transfer-matrix SH, force bases, "
+               "truncated rows) and reports its accuracy against the exact eq. (1)."};
+  add_bake_options(app, cmd);
   try {
     app.parse(argc, argv);
     if (!cmd.procedural && cmd.meshes.empty() && cmd.labelmap.empty())
@@ -114,20 +136,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lungar-bake: %s\n", result.error().c_str());
     return 1;
   }
-  const auto& r = *result;
-  char line[512];
-  std::snprintf(line, sizeof line, "wrote %s: %u nodes, %u lungs, %u coefficients, %.1f s; %s map, %llu folded triangles",
-                cmd.out.c_str(), r.nodes, r.lungs, r.coefficients, r.bake_s, lungar::sim::kSphereMapNames.name(r.map),
-                static_cast<unsigned long long>(r.folded_triangles));
-  std::string message = line;
-  if (r.evaluated) {
-    std::snprintf(line, sizeof line, "; eq7 error %.4f, alpha %.4f", r.eq7_rms_rel_error, r.alpha);
-    message += line;
-  }
-  if (r.transfer_nnz_per_row_mean > 0) {
-    std::snprintf(line, sizeof line, "; %.0f non-zeros a transfer row", r.transfer_nnz_per_row_mean);
-    message += line;
-  }
-  log_line(message);
+  log_summary(cmd, *result);
   return 0;
 }

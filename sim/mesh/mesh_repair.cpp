@@ -73,10 +73,8 @@ bool orient_consistently(std::vector<Triangle>& tris) {
   return true;
 }
 
-}  // namespace
-
-Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::string& source,
-                                            std::vector<std::string>& notes) {
+/// Every coordinate finite and every index a vertex.
+Status check_soup(const TriMesh& soup, const std::string& source) {
   for (std::size_t i = 0; i < soup.positions.size(); ++i)
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(soup.positions[i][k]))
@@ -87,8 +85,13 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
       if (v >= soup.positions.size())
         return fail(source + ": triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) +
                        "; expected an index below " + std::to_string(soup.positions.size()));
+  return ok();
+}
 
-  // Weld corners with identical coordinates (STL stores every corner of every triangle).
+/// Welds corners with identical coordinates (STL stores every corner of every triangle) and drops the
+/// triangles left without area: the welded positions, and the triangles on them.
+Result<std::pair<std::vector<Eigen::Vector3d>, std::vector<Triangle>>> weld_corners(
+    const TriMesh& soup, const std::string& source, std::vector<std::string>& notes) {
   std::unordered_map<std::array<double, 3>, std::uint32_t, Vec3Hash> unique;
   unique.reserve(soup.positions.size());
   std::vector<std::uint32_t> weld(soup.positions.size());
@@ -117,28 +120,34 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
   }
   if (degenerate > 0) notes.push_back(source + ": dropped " + std::to_string(degenerate) + " degenerate triangles");
   if (tris.empty()) return fail(source + ": no triangles with non-zero area; expected a closed lung surface");
+  return std::pair{std::move(welded), std::move(tris)};
+}
 
-  // Closed and 2-manifold: every undirected edge is shared by exactly two triangles.
-  {
-    std::unordered_map<std::uint64_t, std::uint32_t> uses;
-    uses.reserve(tris.size() * 2);
-    for (const Triangle& t : tris)
-      for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
-    std::size_t open = 0, nonmanifold = 0;
-    for (const auto& [key, n] : uses) {
-      if (n == 1) ++open;
-      if (n > 2) ++nonmanifold;
-    }
-    if (open > 0)
-      return fail(source + ": surface is open (" + std::to_string(open) +
-                     " edges belong to one triangle only); expected a closed surface");
-    if (nonmanifold > 0)
-      return fail(source + ": surface is not manifold (" + std::to_string(nonmanifold) +
-                     " edges shared by more than two triangles); expected a 2-manifold surface");
+/// Closed and 2-manifold: every undirected edge is shared by exactly two triangles.
+Status check_closed_manifold(const std::vector<Triangle>& tris, const std::string& source) {
+  std::unordered_map<std::uint64_t, std::uint32_t> uses;
+  uses.reserve(tris.size() * 2);
+  for (const Triangle& t : tris)
+    for (int k = 0; k < 3; ++k) ++uses[edge_key(t[k], t[(k + 1) % 3])];
+  std::size_t open = 0, nonmanifold = 0;
+  for (const auto& [key, n] : uses) {
+    if (n == 1) ++open;
+    if (n > 2) ++nonmanifold;
   }
+  if (open > 0)
+    return fail(source + ": surface is open (" + std::to_string(open) +
+                   " edges belong to one triangle only); expected a closed surface");
+  if (nonmanifold > 0)
+    return fail(source + ": surface is not manifold (" + std::to_string(nonmanifold) +
+                   " edges shared by more than two triangles); expected a 2-manifold surface");
+  return ok();
+}
 
-  // Connected components by shared vertices.
-  std::vector<std::uint32_t> parent(welded.size());
+/// Connected components by shared vertices, largest first, without stray specks (a fraction of a percent of the
+/// surface: segmentation noise, not lungs).
+std::vector<std::vector<Triangle>> split_components(const std::vector<Triangle>& tris, std::size_t vertex_count,
+                                                    const std::string& source, std::vector<std::string>& notes) {
+  std::vector<std::uint32_t> parent(vertex_count);
   std::iota(parent.begin(), parent.end(), 0u);
   for (const Triangle& t : tris) {
     const std::uint32_t r0 = find_root(parent, t[0]);
@@ -152,7 +161,6 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
   std::sort(comps.begin(), comps.end(), [](const auto& a, const auto& b) {
     return a.size() != b.size() ? a.size() > b.size() : a.front() < b.front();
   });
-  // Stray specks (a fraction of a percent of the surface) are segmentation noise, not lungs.
   const std::size_t speck = std::max<std::size_t>(1, comps.front().size() / 100);
   std::size_t dropped = 0;
   while (comps.size() > 1 && comps.back().size() < speck) {
@@ -160,28 +168,47 @@ Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::stri
     ++dropped;
   }
   if (dropped > 0) notes.push_back(source + ": dropped " + std::to_string(dropped) + " tiny stray components");
+  return comps;
+}
 
-  std::vector<TriMesh> out;
-  for (auto& comp : comps) {
-    if (!orient_consistently(comp))
-      return fail(source + ": surface cannot be oriented consistently; expected an orientable closed surface");
-    TriMesh m;
-    std::unordered_map<std::uint32_t, std::uint32_t> remap;
-    for (Triangle& t : comp)
-      for (std::uint32_t& v : t) {
-        auto [it, fresh] = remap.try_emplace(v, static_cast<std::uint32_t>(m.positions.size()));
-        if (fresh) m.positions.push_back(welded[v]);
-        v = it->second;
-      }
-    m.triangles = std::move(comp);
-    if (m.positions.size() < 4)
-      return fail(source + ": a component has " + std::to_string(m.positions.size()) +
-                     " vertices; expected a closed lung surface");
-    if (enclosed_volume(m) < 0) {
-      for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
-      notes.push_back(source + ": triangles faced inward; flipped them to face outward");
+/// One component as a mesh of its own, oriented consistently and facing outward.
+Result<TriMesh> component_mesh(std::vector<Triangle> comp, const std::vector<Eigen::Vector3d>& welded,
+                               const std::string& source, std::vector<std::string>& notes) {
+  if (!orient_consistently(comp))
+    return fail(source + ": surface cannot be oriented consistently; expected an orientable closed surface");
+  TriMesh m;
+  std::unordered_map<std::uint32_t, std::uint32_t> remap;
+  for (Triangle& t : comp)
+    for (std::uint32_t& v : t) {
+      auto [it, fresh] = remap.try_emplace(v, static_cast<std::uint32_t>(m.positions.size()));
+      if (fresh) m.positions.push_back(welded[v]);
+      v = it->second;
     }
-    out.push_back(std::move(m));
+  m.triangles = std::move(comp);
+  if (m.positions.size() < 4)
+    return fail(source + ": a component has " + std::to_string(m.positions.size()) +
+                   " vertices; expected a closed lung surface");
+  if (enclosed_volume(m) < 0) {
+    for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+    notes.push_back(source + ": triangles faced inward; flipped them to face outward");
+  }
+  return m;
+}
+
+}  // namespace
+
+Result<std::vector<TriMesh>> repair_surface(const TriMesh& soup, const std::string& source,
+                                            std::vector<std::string>& notes) {
+  if (Status s = check_soup(soup, source); !s) return fail(s.error());
+  auto welded = weld_corners(soup, source, notes);
+  if (!welded) return fail(welded.error());
+  const auto& [positions, tris] = *welded;
+  if (Status s = check_closed_manifold(tris, source); !s) return fail(s.error());
+  std::vector<TriMesh> out;
+  for (auto& comp : split_components(tris, positions.size(), source, notes)) {
+    auto mesh = component_mesh(std::move(comp), positions, source, notes);
+    if (!mesh) return fail(mesh.error());
+    out.push_back(mesh.take());
   }
   return out;
 }

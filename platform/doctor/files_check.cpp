@@ -65,7 +65,7 @@ Check check_asset(const config::Settings& s, const DoctorEnv& env) {
   }
   DemoAssetOptions demo;
   demo.cache_dir = config::cache_dir(env.xdg);
-  const std::string cached = demo_asset_path(demo);
+  const std::string cached = demo_cache_path(demo);
   std::error_code ec;
   if (fs::exists(cached, ec)) {
     auto asset = sim::load_asset(cached);

@@ -145,6 +145,14 @@ std::string demo_asset_path(const DemoAssetOptions& o) {
   return (fs::path(cache_dir(o)) / name).string();
 }
 
+std::string demo_cache_path(const DemoAssetOptions& o) {
+  if (!o.procedural) {
+    const fs::path map = find_label_map(o);
+    if (!map.empty() && !find_bake_tool(o).empty()) return ct_asset_path(o, map);
+  }
+  return demo_asset_path(o);
+}
+
 Result<DrawnAsset> load_drawn_asset(const std::string& configured_path, const DemoAssetOptions& o,
                                          const std::function<void(const std::string&)>& log) {
   if (!configured_path.empty()) {

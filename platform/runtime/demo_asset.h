@@ -51,6 +51,10 @@ bool centre_demo_lungs(const DrawnAsset& drawn, config::RegistrationSettings& re
 /// Where the cached procedural asset for `o` lives.
 std::string demo_asset_path(const DemoAssetOptions& o);
 
+/// Where the demo lungs that `load_drawn_asset("", o)` draws are cached: the CT pair's file when its label map
+/// and lungar-bake are found (and `o.procedural` is false), else the procedural pair's. `lungar doctor` looks there.
+std::string demo_cache_path(const DemoAssetOptions& o);
+
 /// The asset at `configured_path` when it is not empty; else the demo's (loaded from the cache, or baked and
 /// cached first). `log` receives progress lines.
 Result<DrawnAsset> load_drawn_asset(const std::string& configured_path, const DemoAssetOptions& o,

@@ -13,6 +13,7 @@
 #include "config/config_paths.h"
 #include "drivers/igtl/tcp_socket.h"
 #include "platform/doctor/checks.h"
+#include "platform/runtime/demo_asset.h"
 #include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
@@ -182,6 +183,20 @@ TEST_F(Doctor, DemoAssetNotYetBakedPassesAndSaysWhereItWillGo) {
   const Check c = check_asset(lungar::config::Settings{}, env);
   EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
   EXPECT_TRUE(contains(c.detail, (root / "cache/lungar").string())) << c.detail;
+}
+
+TEST_F(Doctor, DemoAssetCachedIsFoundWhereTheRuntimeCachesTheCtLungs) {
+  env.xdg.cache_home = (root / "cache").string();
+  lungar::platform::DemoAssetOptions demo;
+  demo.cache_dir = (root / "cache/lungar").string();
+  // The build tree has the shipped label map and lungar-bake, so the runtime's demo is the CT pair.
+  const fs::path cached = lungar::platform::demo_cache_path(demo);
+  ASSERT_EQ(cached.filename().string().rfind("ct-", 0), 0u) << cached;
+  fs::create_directories(cached.parent_path());
+  fs::copy_file(kData + "hil_lungs.lungbake", cached);
+  const Check c = check_asset(lungar::config::Settings{}, env);
+  EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
+  EXPECT_TRUE(contains(c.detail, "demo lungs cached at " + cached.string())) << c.detail;
 }
 
 TEST_F(Doctor, DiskFailsBelowTheMinimumNamingTheStateFolder) {

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 namespace lungar {
 
@@ -23,6 +24,11 @@ inline std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc
     size -= piece;
   }
   return static_cast<std::uint32_t>(c);
+}
+
+/// The same over a span of bytes (the .trk reader and writer).
+inline std::uint32_t crc32(std::span<const std::uint8_t> bytes, std::uint32_t crc = 0) {
+  return crc32(bytes.data(), bytes.size(), crc);
 }
 
 }  // namespace lungar

@@ -85,13 +85,9 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
   return o.str();
 }
 
-std::optional<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name,
-                                                        std::string* error) {
+Result<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name) {
   auto r = config::load_settings_from_string(toml, name);
-  if (!r) {
-    if (error) *error = r.error();
-    return std::nullopt;
-  }
+  if (!r) return fail(r.error());
   return r->trackers;
 }
 

@@ -3,9 +3,9 @@
 /// the layout its bytes were made with, and load_settings_from_string() reads it back.
 #pragma once
 
-#include <optional>
 #include <string>
 
+#include "config/base/result.h"
 #include "config/settings.h"
 
 namespace lungar::drivers {
@@ -14,8 +14,7 @@ namespace lungar::drivers {
 /// [trackers.igtl] (device names, scale, rigidity tolerance).
 std::string layout_to_toml(const config::TrackerSettings& t);
 
-/// The tracker settings described by a .trk header's layout text; nullopt with `error` when it does not load.
-std::optional<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name,
-                                                        std::string* error);
+/// The tracker settings described by a .trk header's layout text, or why it does not load.
+Result<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name);
 
 }  // namespace lungar::drivers

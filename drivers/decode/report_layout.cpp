@@ -24,16 +24,16 @@ bool components(const std::string& text, std::string_view letters, std::array<Co
 Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 /// Checks that the station byte, the time and each enabled sensor's fields lie inside the report, and adds the
-/// sensors to `l`: "" or "key: what is wrong".
-std::string place_fields(const config::TrackerSettings& t, ReportLayout& l) {
+/// sensors to `l`; an error reads "trackers.<key>: what is wrong".
+Status place_fields(const config::TrackerSettings& t, ReportLayout& l) {
   const config::ReportSettings& r = t.report;
   const int first = r.report_id >= 0 ? 1 : 0;
   auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
   if (r.station_offset >= 0 && !inside(r.station_offset, 1)) {
-    return "report.station_offset: expected a byte inside the report";
+    return fail("trackers.report.station_offset: expected a byte inside the report");
   }
   if (r.time_offset >= 0 && !inside(r.time_offset, r.time_bits / 8)) {
-    return "report.time_offset: expected the timestamp inside the report";
+    return fail("trackers.report.time_offset: expected the timestamp inside the report");
   }
   const std::pair<Role, const config::SensorSettings*> sensors[] = {
       {Role::Head, &t.head}, {Role::Patient, &t.patient}, {Role::Stylus, &t.stylus}};
@@ -43,18 +43,19 @@ std::string place_fields(const config::TrackerSettings& t, ReportLayout& l) {
     const int rot_n = l.euler ? 3 : 4;
     if ((l.position.present() && !inside(s->offset + r.position_offset, 3 * l.position.bytes())) ||
         !inside(s->offset + r.orientation_offset, rot_n * l.orientation.bytes())) {
-      return name + ".offset: expected the sensor's fields inside the report";
+      return fail("trackers." + name + ".offset: expected the sensor's fields inside the report");
     }
-    if (s->station < 0 || s->station > 255) return name + ".station: expected 0 to 255";
+    if (s->station < 0 || s->station > 255) return fail("trackers." + name + ".station: expected 0 to 255");
     for (int k = 0; r.station_offset >= 0 && k < l.sensor_count; ++k) {
       if (l.sensors[k].station == s->station) {
-        return name + ".station: expected a station different from trackers." + to_string(l.sensors[k].role) + "'s";
+        return fail("trackers." + name + ".station: expected a station different from trackers." +
+                    to_string(l.sensors[k].role) + "'s");
       }
     }
     l.sensors[l.sensor_count++] = {role, s->station, s->offset, vec(s->fixed_position_mm)};
   }
-  if (l.sensor_count == 0) return "head: expected at least one enabled sensor";
-  return "";
+  if (l.sensor_count == 0) return fail("trackers.head: expected at least one enabled sensor");
+  return ok();
 }
 
 }  // namespace
@@ -77,12 +78,10 @@ Result<WorldFrame> make_world_frame(const config::TrackerSettings& t) {
   return w;
 }
 
-LayoutResult make_layout(const config::TrackerSettings& t) {
+Result<ReportLayout> make_layout(const config::TrackerSettings& t) {
   const config::ReportSettings& r = t.report;
-  LayoutResult res;
-  auto fail = [&](const std::string& key, const std::string& what) {
-    res.error = "trackers." + key + ": " + what;
-    return res;
+  auto fail = [](const std::string& key, const std::string& what) {
+    return lungar::fail("trackers." + key + ": " + what);
   };
   ReportLayout l;
   l.report_id = r.report_id;
@@ -123,18 +122,11 @@ LayoutResult make_layout(const config::TrackerSettings& t) {
   }
   for (int k = 0; k < 3; ++k) l.euler_sequence[k] = seq[k].index;
   auto world = make_world_frame(t);
-  if (!world) {
-    res.error = world.error();
-    return res;
-  }
+  if (!world) return lungar::fail(world.error());
   l.world = *world;
 
-  if (const std::string e = place_fields(t, l); !e.empty()) {
-    res.error = "trackers." + e;
-    return res;
-  }
-  res.layout = l;
-  return res;
+  if (Status placed = place_fields(t, l); !placed) return lungar::fail(placed.error());
+  return l;
 }
 
 }  // namespace lungar::drivers

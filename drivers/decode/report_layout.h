@@ -70,16 +70,12 @@ struct ReportLayout {
   int sensor_count = 0;
 };
 
-struct LayoutResult {
-  std::optional<ReportLayout> layout;
-  std::string error;  ///< "trackers.<key>: expected ..., got ..." when the settings do not describe a layout
-};
-
 /// The world frame of the [trackers] keys (axis_remap, world_offset_mm, workspace, quat_norm_tolerance); an
 /// error names the key. make_layout() uses it; other decoders (OpenIGTLink) too.
 Result<WorldFrame> make_world_frame(const config::TrackerSettings& t);
 
-/// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings).
-LayoutResult make_layout(const config::TrackerSettings& t);
+/// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings); an error
+/// reads "trackers.<key>: expected ..., got ...".
+Result<ReportLayout> make_layout(const config::TrackerSettings& t);
 
 }  // namespace lungar::drivers

@@ -72,11 +72,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   t.patient = {(c[3] & 0x40) != 0, (c[1] >> 2) & 3, c[8] % 48, {}};
   t.stylus = {(c[3] & 0x80) != 0, (c[1] >> 4) & 3, c[5] % 48, {}};
   const auto made = drivers::make_layout(t);
-  if (!made.layout) {
-    if (made.error.empty()) std::abort();
+  if (!made) {
+    if (made.error().empty()) std::abort();
     return 0;
   }
-  const drivers::ReportLayout& l = *made.layout;
+  const drivers::ReportLayout& l = *made;
   const std::span<const std::uint8_t> report(data + 12, size - 12);
   const auto d = drivers::decode_report(report, l);
   if (d.error != drivers::DecodeError::None && d.count != 0) std::abort();

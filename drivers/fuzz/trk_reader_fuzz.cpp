@@ -10,15 +10,15 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace lungar::drivers;
   auto r = parse_trk(std::vector<std::uint8_t>(data, data + size), "fuzz.trk");
-  if (r.log) {
-    const auto& bytes = r.log->bytes;
-    for (const TrkRecord& rec : r.log->records) {
+  if (r) {
+    const auto& bytes = r->bytes;
+    for (const TrkRecord& rec : r->records) {
       if (rec.report.data() < bytes.data() || rec.report.data() + rec.report.size() > bytes.data() + bytes.size()) {
         std::abort();
       }
     }
-    (void)r.log->header.field("vendor_id");
-  } else if (r.error.empty()) {
+    (void)r->header.field("vendor_id");
+  } else if (r.error().empty()) {
     std::abort();
   }
   return 0;

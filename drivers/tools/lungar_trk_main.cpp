@@ -33,27 +33,23 @@ int die(const std::string& line) {
 }
 
 /// Tracker settings from --config when given, else from the log's own header.
-std::optional<config::TrackerSettings> settings_for(const TrkLog& log, const std::string& file,
-                                                    const std::string& config_path, std::string* error) {
+Result<config::TrackerSettings> settings_for(const TrkLog& log, const std::string& file,
+                                             const std::string& config_path) {
   if (!config_path.empty()) {
     auto r = config::load_settings(config_path);
-    if (!r) {
-      *error = r.error();
-      return std::nullopt;
-    }
+    if (!r) return r.with_context("");
     return r->trackers;
   }
   if (log.header.layout_toml.empty()) {
-    *error = file + ": the log does not describe its report layout: expected --config FILE.toml";
-    return std::nullopt;
+    return fail(file + ": the log does not describe its report layout: expected --config FILE.toml");
   }
-  return layout_from_toml(log.header.layout_toml, file + " (header layout)", error);
+  return layout_from_toml(log.header.layout_toml, file + " (header layout)");
 }
 
 int info(const std::string& file) {
   auto r = load_trk(file);
-  if (!r.log) return die(r.error);
-  const TrkLog& log = *r.log;
+  if (!r) return die(r.error());
+  const TrkLog& log = *r;
   std::printf("file: %s\nversion: %u\n", file.c_str(), log.header.version);
   std::printf("description:\n");
   std::string d = log.header.description;
@@ -83,22 +79,21 @@ int info(const std::string& file) {
 
 int dump(const std::string& file, const std::string& format, const std::string& config_path) {
   auto r = load_trk(file);
-  if (!r.log) return die(r.error);
-  std::string error;
-  auto settings = settings_for(*r.log, file, config_path, &error);
-  if (!settings) return die(error);
+  if (!r) return die(r.error());
+  auto settings = settings_for(*r, file, config_path);
+  if (!settings) return die(settings.error());
   auto layout = make_layout(*settings);
-  if (!layout.layout) return die(file + ": " + layout.error);
+  if (!layout) return die(file + ": " + layout.error());
   auto igtl_layout = make_igtl_layout(*settings);
   if (!igtl_layout) return die(file + ": " + igtl_layout.error());
   const bool csv = format == "csv";
   if (csv) std::printf("record,t_arrival_ns,t_device_ns,role,status,x_mm,y_mm,z_mm,qw,qx,qy,qz\n");
   DeviceClock clock;
   std::size_t index = 0;
-  for (const auto& rec : r.log->records) {
+  for (const auto& rec : r->records) {
     // An OpenIGTLink record decodes as a message, the others as HID reports (trk_format.h).
     DecodedReport d = rec.source == TrkSource::Igtl ? decode_igtl_message(rec.report, *igtl_layout)
-                                                    : decode_report(rec.report, *layout.layout);
+                                                    : decode_report(rec.report, *layout);
     std::int64_t t_dev = -1;
     if (d.error == DecodeError::None && d.has_time) {
       t_dev = clock.advance(d.device_ticks, d.time_bits, d.time_tick_ns);
@@ -130,7 +125,7 @@ int dump(const std::string& file, const std::string& format, const std::string& 
     }
     ++index;
   }
-  if (r.log->truncated_tail) {
+  if (r->truncated_tail) {
     std::fprintf(stderr, "lungar-trk: %s: the last record is incomplete (cut short while writing) and is left out\n",
                  file.c_str());
   }
@@ -139,17 +134,17 @@ int dump(const std::string& file, const std::string& format, const std::string& 
 
 int cut(const std::string& file, const std::string& out, double from_s, double to_s) {
   auto r = load_trk(file);
-  if (!r.log) return die(r.error);
+  if (!r) return die(r.error());
   if (!(to_s > from_s)) return die("--to: expected a time after --from (" + std::to_string(from_s) + " s)");
   TrkWriter w;
-  if (!w.open(out, r.log->header, TrkWriter::Mode::Atomic)) return die(w.error());
-  const std::int64_t t0 = r.log->records.empty() ? 0 : r.log->records.front().t_arrival_ns;
-  for (const auto& rec : r.log->records) {
+  if (Status s = w.open(out, r->header, TrkWriter::Mode::Atomic); !s) return die(s.error());
+  const std::int64_t t0 = r->records.empty() ? 0 : r->records.front().t_arrival_ns;
+  for (const auto& rec : r->records) {
     const double t = static_cast<double>(rec.t_arrival_ns - t0) * 1e-9;
     if (t < from_s || t >= to_s) continue;
-    if (!w.append(rec.source, rec.t_arrival_ns, rec.report)) return die(w.error());
+    if (Status s = w.append(rec.source, rec.t_arrival_ns, rec.report); !s) return die(s.error());
   }
-  if (!w.commit()) return die(w.error());
+  if (Status s = w.commit(); !s) return die(s.error());
   std::fprintf(stderr, "lungar-trk: wrote %" PRIu64 " records to %s\n", w.records(), out.c_str());
   return 0;
 }
@@ -170,25 +165,26 @@ int synth(const std::string& out, const std::string& config_path, const std::str
     return die("--trajectory: expected static | upright_to_supine | head_orbit, got \"" + t.mock_trajectory + "\"");
   }
   auto layout = make_layout(t);
-  if (!layout.layout) return die(layout.error);
+  if (!layout) return die(layout.error());
   TrkHeader h;
   h.description = "source=synth\ntrajectory=" + t.mock_trajectory + "\nrate_hz=" + std::to_string(t.mock_rate_hz) +
                   "\nseconds=" + std::to_string(seconds) + "\nnoise_mm=" + std::to_string(noise_mm) +
                   "\ndropout=" + std::to_string(dropout) + "\n";
   h.layout_toml = layout_to_toml(t);
   TrkWriter w;
-  if (!w.open(out, h, TrkWriter::Mode::Atomic)) return die(w.error());
-  MockReports reports(t, *layout.layout);
+  if (Status s = w.open(out, h, TrkWriter::Mode::Atomic); !s) return die(s.error());
+  MockReports reports(t, *layout);
   const auto ticks = static_cast<std::int64_t>(seconds * t.mock_rate_hz);
   const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / t.mock_rate_hz);
-  bool ok = true;
-  for (std::int64_t k = 0; k < ticks && ok; ++k) {
+  Status written;
+  for (std::int64_t k = 0; k < ticks && written; ++k) {
     // Arrival times start at 1 s, a report's own period apart, as if read on time.
     reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
-      ok = ok && w.append(TrkSource::Synth, 1'000'000'000 + k * period_ns, bytes);
+      if (written) written = w.append(TrkSource::Synth, 1'000'000'000 + k * period_ns, bytes);
     });
   }
-  if (!ok || !w.commit()) return die(w.error());
+  if (written) written = w.commit();
+  if (!written) return die(written.error());
   std::fprintf(stderr, "lungar-trk: wrote %" PRIu64 " records to %s\n", w.records(), out.c_str());
   return 0;
 }

@@ -64,39 +64,28 @@ TrackerState Tracker::state() const { return core_->state(); }
 bool Tracker::finished() const { return core_->finished(); }
 std::string Tracker::describe() const { return source_->describe(); }
 
-TrackerResult make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
-  TrackerResult r;
-  LayoutResult layout = make_layout(settings);
-  if (!layout.layout) {
-    r.error = "tracker report layout: " + layout.error;
-    return r;
-  }
+Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
+  Result<ReportLayout> layout = make_layout(settings);
+  if (!layout) return layout.with_context("tracker report layout: ");
   auto igtl_layout = make_igtl_layout(settings);
-  if (!igtl_layout) {
-    r.error = "tracker: " + igtl_layout.error();
-    return r;
-  }
+  if (!igtl_layout) return igtl_layout.with_context("tracker: ");
   std::unique_ptr<TrackerSource> source;
   bool layout_differs = false;
   switch (settings.source) {
     case config::TrackerSource::Mock:
       if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
-        r.error = "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
-                  settings.mock_trajectory + "\"";
-        return r;
+        return fail("trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
+                    settings.mock_trajectory + "\"");
       }
-      source = mock_create(settings, *layout.layout);
+      source = mock_create(settings, *layout);
       break;
     case config::TrackerSource::Replay: {
-      TrkLoadResult log = load_trk(settings.replay_file);
-      if (!log.log) {
-        r.error = log.error;
-        return r;
-      }
+      Result<TrkLog> log = load_trk(settings.replay_file);
+      if (!log) return fail(log.error());
       // The bytes are decoded with the configured layout, as the HID source would; a log made with another
       // layout says so in its header, and the mismatch is worth a line.
-      layout_differs = !log.log->header.layout_toml.empty() && log.log->header.layout_toml != layout_to_toml(settings);
-      source = replay_create(std::move(*log.log), settings.replay_file, settings.replay_realtime, settings.replay_loop);
+      layout_differs = !log->header.layout_toml.empty() && log->header.layout_toml != layout_to_toml(settings);
+      source = replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop);
       break;
     }
     case config::TrackerSource::Hid: {
@@ -109,13 +98,10 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
   }
   TrackerOptions opts = options;
   opts.record_layout_toml = layout_to_toml(settings);
-  auto core = std::make_unique<TrackerCore>(*layout.layout, *igtl_layout, settings, opts);
+  auto core = std::make_unique<TrackerCore>(*layout, *igtl_layout, settings, opts);
   if (!options.record_path.empty()) {
-    std::string error;
-    if (!core->start_recording(options.record_path, source->trk_description(), source->trk_source(), &error)) {
-      r.error = error;
-      return r;
-    }
+    Status recording = core->start_recording(options.record_path, source->trk_description(), source->trk_source());
+    if (!recording) return fail(recording.error());
   }
   core->log(-1, "tracker: %s", source->describe().c_str());
   if (layout_differs) {
@@ -123,8 +109,7 @@ TrackerResult make_tracker(const config::TrackerSettings& settings, const Tracke
                   "the config's (lungar-trk dump uses the log's own)",
               settings.replay_file.c_str());
   }
-  r.tracker = std::make_unique<Tracker>(std::move(core), std::move(source));
-  return r;
+  return std::make_unique<Tracker>(std::move(core), std::move(source));
 }
 
 }  // namespace lungar::drivers

@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "config/base/result.h"
 #include "config/settings.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/pose/pose_history.h"
@@ -86,14 +87,11 @@ class Tracker {
   std::unique_ptr<Thread> thread_;
 };
 
-struct TrackerResult {
-  std::unique_ptr<Tracker> tracker;
-  std::string error;  ///< one line naming what is wrong (layout, replay file, record file)
-};
-
 /// Builds the source named by settings.source (mock | hid | replay | igtl) and starts its thread. A HID tracker
 /// that is not plugged in, or an OpenIGTLink server that is not up, is not an error: it starts disconnected and
-/// connects when the device or server appears.
-TrackerResult make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options = {});
+/// connects when the device or server appears. An error is one line naming what is wrong (layout, replay file,
+/// record file).
+Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings,
+                                              const TrackerOptions& options = {});
 
 }  // namespace lungar::drivers

@@ -33,18 +33,14 @@ TrackerCore::TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layo
   if (!options_.log) options_.log = default_log;
 }
 
-bool TrackerCore::start_recording(const std::string& path, const std::string& description, TrkSource source,
-                                  std::string* error) {
+Status TrackerCore::start_recording(const std::string& path, const std::string& description, TrkSource source) {
   TrkHeader h;
   h.description = description;
   h.layout_toml = options_.record_layout_toml;
-  if (!recorder_.open(path, h, TrkWriter::Mode::AppendLog)) {
-    if (error) *error = recorder_.error();
-    return false;
-  }
+  if (Status opened = recorder_.open(path, h, TrkWriter::Mode::AppendLog); !opened) return opened;
   record_source = source;
   recording_ = true;
-  return true;
+  return ok();
 }
 
 void TrackerCore::log(int key, const char* fmt, ...) {
@@ -85,10 +81,10 @@ DecodeError TrackerCore::feed_igtl(std::span<const std::uint8_t> message, std::i
 void TrackerCore::record(TrkSource source, std::span<const std::uint8_t> bytes, std::int64_t t_arrival_ns) {
   reports_.fetch_add(1, std::memory_order_relaxed);
   if (!recording_) return;
-  if (recorder_.append(source, t_arrival_ns, bytes)) {
+  if (Status appended = recorder_.append(source, t_arrival_ns, bytes)) {
     recorded_.fetch_add(1, std::memory_order_relaxed);
   } else {
-    log(-1, "recording stopped: %s", recorder_.error().c_str());
+    log(-1, "recording stopped: %s", appended.error().c_str());
     recording_ = false;
   }
 }

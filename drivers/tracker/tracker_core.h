@@ -22,9 +22,8 @@ class TrackerCore {
   TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout, const config::TrackerSettings& settings,
               TrackerOptions options);
 
-  /// Opens the --record log with the device's description in its header. False with `error` on failure.
-  bool start_recording(const std::string& path, const std::string& description, TrkSource source,
-                       std::string* error);
+  /// Opens the --record log with the device's description in its header.
+  Status start_recording(const std::string& path, const std::string& description, TrkSource source);
 
   /// One raw report read at `t_arrival_ns` (monotonic). Records it, decodes it, and publishes its poses or
   /// counts why not. Allocates nothing (unless a callback or the rate-limited log does).

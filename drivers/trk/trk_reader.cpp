@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "drivers/trk/crc32.h"
+#include "config/base/crc32.h"
 
 namespace lungar::drivers {
 
@@ -45,11 +45,9 @@ std::string TrkHeader::field(const std::string& key) const {
   return {};
 }
 
-TrkHeaderResult parse_trk_header(std::span<const std::uint8_t> d) {
-  TrkHeaderResult r;
-  auto fail = [&](const std::string& what, std::size_t at) {
-    r.error = what + ", at byte " + std::to_string(at);
-    return r;
+Result<TrkHeader> parse_trk_header(std::span<const std::uint8_t> d) {
+  auto fail = [](const std::string& what, std::size_t at) {
+    return lungar::fail(what + ", at byte " + std::to_string(at));
   };
   if (d.size() < 16) return fail("expected a .trk header (magic, version, lengths), got only " + std::to_string(d.size()) + " bytes", 0);
   if (std::memcmp(d.data(), kTrkMagic, 8) != 0) return fail("expected the magic \"LUNGATRK\": not a .trk log", 0);
@@ -77,8 +75,7 @@ TrkHeaderResult parse_trk_header(std::span<const std::uint8_t> d) {
   const std::uint32_t actual = crc32(d.first(off));
   if (stored != actual) return fail("header CRC mismatch: the header is damaged", off);
   h.size = off + 4;
-  r.header = std::move(h);
-  return r;
+  return h;
 }
 
 TrkNext read_trk_record(std::span<const std::uint8_t> d, std::size_t off) {
@@ -132,17 +129,13 @@ TrkNext read_trk_record(std::span<const std::uint8_t> d, std::size_t off) {
   return n;
 }
 
-TrkLoadResult parse_trk(std::vector<std::uint8_t> bytes, const std::string& name) {
-  TrkLoadResult r;
+Result<TrkLog> parse_trk(std::vector<std::uint8_t> bytes, const std::string& name) {
   TrkLog log;
   log.bytes = std::move(bytes);
   const std::span<const std::uint8_t> d(log.bytes);
-  TrkHeaderResult h = parse_trk_header(d);
-  if (!h.header) {
-    r.error = name + ": " + h.error;
-    return r;
-  }
-  log.header = std::move(*h.header);
+  Result<TrkHeader> h = parse_trk_header(d);
+  if (!h) return h.with_context(name + ": ");
+  log.header = h.take();
   std::size_t off = log.header.size;
   for (;;) {
     TrkNext n = read_trk_record(d, off);
@@ -151,30 +144,19 @@ TrkLoadResult parse_trk(std::vector<std::uint8_t> bytes, const std::string& name
       log.truncated_tail = true;
       break;
     }
-    if (n.status == TrkStatus::Corrupt) {
-      r.error = name + ": record " + std::to_string(log.records.size()) + ": " + n.error;
-      return r;
-    }
+    if (n.status == TrkStatus::Corrupt)
+      return fail(name + ": record " + std::to_string(log.records.size()) + ": " + n.error);
     log.records.push_back(n.record);
     off = n.next_offset;
   }
-  r.log = std::move(log);
-  return r;
+  return log;  // the records' spans stay valid: moving a vector keeps its buffer
 }
 
-TrkLoadResult load_trk(const std::string& path) {
+Result<TrkLog> load_trk(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    TrkLoadResult r;
-    r.error = path + ": cannot open the tracker log: expected a readable .trk file";
-    return r;
-  }
+  if (!in) return fail(path + ": cannot open the tracker log: expected a readable .trk file");
   std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    TrkLoadResult r;
-    r.error = path + ": read error";
-    return r;
-  }
+  if (in.bad()) return fail(path + ": read error");
   return parse_trk(std::move(bytes), path);
 }
 

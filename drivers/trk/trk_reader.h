@@ -4,20 +4,17 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "config/base/result.h"
 #include "drivers/trk/trk_format.h"
 
 namespace lungar::drivers {
 
-struct TrkHeaderResult {
-  std::optional<TrkHeader> header;
-  std::string error;  ///< what is wrong, with the byte offset
-};
-TrkHeaderResult parse_trk_header(std::span<const std::uint8_t> data);
+/// The header, or what is wrong with it, with the byte offset.
+Result<TrkHeader> parse_trk_header(std::span<const std::uint8_t> data);
 
 enum class TrkStatus { Ok, End, TruncatedTail, Corrupt };
 
@@ -44,13 +41,9 @@ struct TrkLog {
   bool truncated_tail = false;            ///< the last record was incomplete and is left out
 };
 
-struct TrkLoadResult {
-  std::optional<TrkLog> log;
-  std::string error;  ///< "FILE: what, at byte N"
-};
-/// Reads and checks a whole log. A corrupt record is an error (naming the file, record and offset).
-TrkLoadResult load_trk(const std::string& path);
+/// Reads and checks a whole log. A corrupt record is an error ("FILE: record N: what, at byte M").
+Result<TrkLog> load_trk(const std::string& path);
 /// The same from bytes; `name` stands for the file in messages.
-TrkLoadResult parse_trk(std::vector<std::uint8_t> bytes, const std::string& name);
+Result<TrkLog> parse_trk(std::vector<std::uint8_t> bytes, const std::string& name);
 
 }  // namespace lungar::drivers

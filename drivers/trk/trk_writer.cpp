@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "drivers/trk/crc32.h"
+#include "config/base/crc32.h"
 
 namespace lungar::drivers {
 
@@ -59,12 +59,11 @@ TrkWriter::~TrkWriter() {
   }
 }
 
-bool TrkWriter::fail(const std::string& what) {
-  error_ = path_ + ": " + what + (errno ? std::string(": ") + std::strerror(errno) : std::string());
-  return false;
+Status TrkWriter::fail(const std::string& what) const {
+  return lungar::fail(path_ + ": " + what + (errno ? std::string(": ") + std::strerror(errno) : std::string()));
 }
 
-bool TrkWriter::open(const std::string& path, const TrkHeader& header, Mode mode) {
+Status TrkWriter::open(const std::string& path, const TrkHeader& header, Mode mode) {
   path_ = path;
   mode_ = mode;
   temp_path_ = path + ".partial";
@@ -82,7 +81,7 @@ bool TrkWriter::open(const std::string& path, const TrkHeader& header, Mode mode
   }
   if (mode == Mode::Atomic) {
     fd_ = fd;
-    return true;
+    return ok();
   }
   if (::fsync(fd) != 0 || ::close(fd) != 0 || ::rename(temp_path_.c_str(), path.c_str()) != 0) {
     ::unlink(temp_path_.c_str());
@@ -90,10 +89,10 @@ bool TrkWriter::open(const std::string& path, const TrkHeader& header, Mode mode
   }
   fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd_ < 0) return fail("cannot reopen the tracker log for appending");
-  return true;
+  return ok();
 }
 
-bool TrkWriter::append(TrkSource source, std::int64_t t_arrival_ns, std::span<const std::uint8_t> report) {
+Status TrkWriter::append(TrkSource source, std::int64_t t_arrival_ns, std::span<const std::uint8_t> report) {
   errno = 0;
   if (fd_ < 0) return fail("the tracker log is not open");
   if (report.empty() || report.size() > kTrkMaxReport) return fail("report length out of [1, 4096]");
@@ -109,10 +108,10 @@ bool TrkWriter::append(TrkSource source, std::int64_t t_arrival_ns, std::span<co
   put_le(p + 2 + body, crc32(std::span<const std::uint8_t>(p + 2, body)), 4);
   if (!write_all(fd_, p, kTrkRecordOverhead + report.size())) return fail("cannot append a record");
   ++records_;
-  return true;
+  return ok();
 }
 
-bool TrkWriter::commit() {
+Status TrkWriter::commit() {
   errno = 0;
   if (fd_ < 0) return fail("the tracker log is not open");
   const int fd = fd_;
@@ -130,7 +129,7 @@ bool TrkWriter::commit() {
     ::unlink(temp_path_.c_str());
     return fail("cannot put the tracker log in place");
   }
-  return true;
+  return ok();
 }
 
 }  // namespace lungar::drivers

@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 
+#include "config/base/result.h"
 #include "drivers/trk/trk_format.h"
 
 namespace lungar::drivers {
@@ -26,21 +27,20 @@ class TrkWriter {
   TrkWriter(const TrkWriter&) = delete;
   TrkWriter& operator=(const TrkWriter&) = delete;
 
-  /// Creates the log. False with error() ("FILE: what") on failure.
-  bool open(const std::string& path, const TrkHeader& header, Mode mode);
-  /// Appends one record; allocates nothing. False with error() on failure (the record is lost).
-  bool append(TrkSource source, std::int64_t t_arrival_ns, std::span<const std::uint8_t> report);
-  /// Atomic mode: flushes and renames into place. AppendLog: flushes and closes. False with error() on failure.
-  bool commit();
+  /// Creates the log; an error reads "FILE: what".
+  Status open(const std::string& path, const TrkHeader& header, Mode mode);
+  /// Appends one record; allocates nothing unless it fails (then the record is lost).
+  Status append(TrkSource source, std::int64_t t_arrival_ns, std::span<const std::uint8_t> report);
+  /// Atomic mode: flushes and renames into place. AppendLog: flushes and closes.
+  Status commit();
   bool is_open() const { return fd_ >= 0; }
-  const std::string& error() const { return error_; }
   std::uint64_t records() const { return records_; }
 
  private:
-  bool fail(const std::string& what);
+  Status fail(const std::string& what) const;
   int fd_ = -1;
   Mode mode_ = Mode::AppendLog;
-  std::string path_, temp_path_, error_;
+  std::string path_, temp_path_;
   std::uint64_t records_ = 0;
 };
 

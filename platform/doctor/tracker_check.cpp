@@ -127,12 +127,11 @@ Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env) {
       return passed("tracker", "mock (" + t.mock_trajectory + "): no device needed");
     case config::TrackerSource::Replay: {
       const auto log = drivers::load_trk(t.replay_file);
-      if (!log.log) {
-        return failed("tracker", "trackers.replay_file: " + log.error,
+      if (!log) {
+        return failed("tracker", "trackers.replay_file: " + log.error(),
                       "point trackers.replay_file at a .trk log (`lungar-trk info FILE` checks one)");
       }
-      return passed("tracker", "replay of " + t.replay_file + " (" + std::to_string(log.log->records.size()) +
-                                   " reports)");
+      return passed("tracker", "replay of " + t.replay_file + " (" + std::to_string(log->records.size()) + " reports)");
     }
     case config::TrackerSource::Hid:
       return hid_node_check(t.hid, env);

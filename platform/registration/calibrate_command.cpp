@@ -18,10 +18,7 @@ namespace {
 Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std::string& log_path,
                                           const std::string& config_path) {
   if (!log.header.layout_toml.empty()) {
-    std::string error;
-    auto t = drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)", &error);
-    if (!t) return fail(error);
-    return *t;
+    return drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)");
   }
   if (config_path.empty()) return config::TrackerSettings{};
   auto s = config::load_settings(config_path);
@@ -34,17 +31,17 @@ Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std
 Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
                                                             const std::string& config_path) {
   auto loaded = drivers::load_trk(log_path);
-  if (!loaded.log) return fail(loaded.error);
-  auto trackers = log_layout(*loaded.log, log_path, config_path);
+  if (!loaded) return loaded.with_context("");
+  auto trackers = log_layout(*loaded, log_path, config_path);
   if (!trackers) return trackers.with_context("");
   auto layout = drivers::make_layout(*trackers);
-  if (!layout.layout) return fail(log_path + ": report layout: " + layout.error);
+  if (!layout) return layout.with_context(log_path + ": report layout: ");
   std::vector<StylusSample> samples;
   Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
   Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
-  const std::int64_t t0 = loaded.log->records.empty() ? 0 : loaded.log->records.front().t_arrival_ns;
-  for (const auto& rec : loaded.log->records) {
-    const drivers::DecodedReport r = drivers::decode_report(rec.report, *layout.layout);
+  const std::int64_t t0 = loaded->records.empty() ? 0 : loaded->records.front().t_arrival_ns;
+  for (const auto& rec : loaded->records) {
+    const drivers::DecodedReport r = drivers::decode_report(rec.report, *layout);
     if (r.error != drivers::DecodeError::None) continue;  // malformed reports are never applied
     for (int k = 0; k < r.count; ++k) {
       const auto& pose = r.poses[static_cast<std::size_t>(k)];

@@ -52,8 +52,8 @@ Status add_sources(const config::Settings& s, const RuntimeOptions& o, double li
   topts.record_path = o.record_path;
   topts.log = [](const std::string& line) { log_line(line); };
   auto made = drivers::make_tracker(s.trackers, topts);
-  if (!made.tracker) return fail("tracker: " + made.error);
-  parts.poses = std::make_unique<TrackerPoses>(std::move(made.tracker));
+  if (!made) return made.with_context("tracker: ");
+  parts.poses = std::make_unique<TrackerPoses>(made.take());
   if (s.trackers.source == config::TrackerSource::Mock && !shared_script->orientation.turns().empty()) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }

@@ -27,13 +27,13 @@ struct Reports {
 const Reports& reports() {
   static const Reports r = [] {
     lungar::config::TrackerSettings settings;
-    const LayoutResult made = make_layout(settings);
-    if (!made.layout) {
-      std::fprintf(stderr, "decode micro bench: %s\n", made.error.c_str());
+    const auto made = make_layout(settings);
+    if (!made) {
+      std::fprintf(stderr, "decode micro bench: %s\n", made.error().c_str());
       std::exit(1);
     }
     Reports out;
-    out.layout = *made.layout;
+    out.layout = *made;
     MockReports mock(settings, out.layout);
     for (int k = 0; k < kTicks; ++k) {
       mock.tick(k, [&](std::span<const std::uint8_t> bytes) { out.valid.emplace_back(bytes.begin(), bytes.end()); });

@@ -45,8 +45,8 @@ Bytes head_report() {
 
 ReportLayout layout_of(const config::TrackerSettings& t) {
   auto r = make_layout(t);
-  EXPECT_TRUE(r.layout) << r.error;
-  return r.layout.value_or(ReportLayout{});
+  EXPECT_TRUE(r) << r.error();
+  return r ? *r : ReportLayout{};
 }
 
 /// Rotation by `angle_rad` about coordinate axis 0, 1 or 2.
@@ -335,15 +335,15 @@ TEST(Decode, DeviceClockUnwrapsAndRejectsBackwardsTime) {
 TEST(Decode, LayoutErrorsNameTheKey) {
   config::TrackerSettings t;
   t.report.length = 20;
-  EXPECT_EQ(make_layout(t).error, "trackers.head.offset: expected the sensor's fields inside the report");
+  EXPECT_EQ(make_layout(t).error(), "trackers.head.offset: expected the sensor's fields inside the report");
   t = {};
   t.axis_remap = "x,x,z";
-  EXPECT_EQ(make_layout(t).error, "trackers.axis_remap: expected a signed permutation of x,y,z");
+  EXPECT_EQ(make_layout(t).error(), "trackers.axis_remap: expected a signed permutation of x,y,z");
   t = {};
   t.patient.station = t.head.station;  // found by the decode fuzzer: one report would feed two roles
-  EXPECT_EQ(make_layout(t).error, "trackers.patient.station: expected a station different from trackers.head's");
+  EXPECT_EQ(make_layout(t).error(), "trackers.patient.station: expected a station different from trackers.head's");
   t.report.station_offset = -1;  // without a station byte the values do not matter
-  EXPECT_TRUE(make_layout(t).layout);
+  EXPECT_TRUE(make_layout(t));
 }
 
 // The hole the issue found: with "w,-x,-y,-z" the device sends the conjugate, and the decoder must undo each

@@ -65,27 +65,27 @@ TEST_F(HidUmockdev, ProberFindsTheEmulatedDeviceByIdsAndSerial) {
 TEST_F(HidUmockdev, ReportsComeOutAsTheSamePosesAsReplay) {
   const std::string file = lungar::testing::tracker_data("upright_to_supine.trk");
   auto log = load_trk(file);
-  ASSERT_TRUE(log.log) << log.error;
+  ASSERT_TRUE(log) << log.error();
 
   Collector via_hid;
   auto hid = make_tracker(hid_settings(), collecting(via_hid));
-  ASSERT_TRUE(hid.tracker) << hid.error;
-  ASSERT_TRUE(eventually([&] { return hid.tracker->stats().opens >= 1; }));
+  ASSERT_TRUE(hid) << hid.error();
+  ASSERT_TRUE(eventually([&] { return (*hid)->stats().opens >= 1; }));
   // Flow control: the emulated node is a pseudo-terminal whose line discipline holds 4 KiB; writing past
   // that splits a report across reads. A real device sends at its rate; here at most 64 reports are in flight.
   std::size_t written = 0;
-  for (const auto& rec : log.log->records) {
+  for (const auto& rec : log->records) {
     ASSERT_TRUE(eventually([&] { return written < via_hid.size() + 64; }));
     ASSERT_TRUE(device.write(rec.report));
     ++written;
   }
-  ASSERT_TRUE(eventually([&] { return via_hid.size() >= log.log->records.size(); }))
-      << via_hid.size() << " of " << log.log->records.size();
+  ASSERT_TRUE(eventually([&] { return via_hid.size() >= log->records.size(); }))
+      << via_hid.size() << " of " << log->records.size();
 
   const auto a = via_hid.copy();
   expect_bit_identical(a, replay_all(file));
-  EXPECT_EQ(hid.tracker->stats().malformed, 0u);
-  EXPECT_EQ(hid.tracker->stats().accepted, log.log->records.size());
+  EXPECT_EQ((*hid)->stats().malformed, 0u);
+  EXPECT_EQ((*hid)->stats().accepted, log->records.size());
   const double burst_s = (a.back().t_arrival_ns - a.front().t_arrival_ns) * 1e-9;
   std::printf("[ MEASURED ] hid via umockdev, %zu reports written with 64 in flight: read at %.0f reports/s\n", a.size(),
               (a.size() - 1) / burst_s);
@@ -94,18 +94,18 @@ TEST_F(HidUmockdev, ReportsComeOutAsTheSamePosesAsReplay) {
 TEST_F(HidUmockdev, UnplugGoesStaleAndReplugStreamsAgainWithoutARestart) {
   Collector c;
   auto made = make_tracker(hid_settings(), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
 
   auto layout = make_layout(hid_settings());
-  ASSERT_TRUE(layout.layout);
+  ASSERT_TRUE(layout);
   std::array<std::uint8_t, 32> buf{};
   auto send = [&](double x_mm, std::uint32_t ticks) {
     PoseSample p;
     p.role = Role::Patient;
     p.position_mm = {x_mm, 0, 1000};
-    encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), ticks, buf);
+    encode_report(*layout, std::span<const PoseSample>(&p, 1), ticks, buf);
     return device.write(buf);
   };
   ASSERT_TRUE(send(10.0, 1000));
@@ -138,15 +138,15 @@ TEST_F(HidUmockdev, UnplugGoesStaleAndReplugStreamsAgainWithoutARestart) {
 TEST_F(HidUmockdev, MalformedReportsAreCountedAndNeverApplied) {
   Collector c;
   auto made = make_tracker(hid_settings(), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
   auto layout = make_layout(hid_settings());
   std::array<std::uint8_t, 32> good{};
   PoseSample p;
   p.role = Role::Patient;
   p.position_mm = {1, 2, 3};
-  encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), 100, good);
+  encode_report(*layout, std::span<const PoseSample>(&p, 1), 100, good);
   ASSERT_TRUE(device.write(good));
   ASSERT_TRUE(eventually([&] { return t.stats().accepted == 1; }));
 
@@ -162,9 +162,9 @@ TEST_F(HidUmockdev, MalformedReportsAreCountedAndNeverApplied) {
   ASSERT_TRUE(device.write(bad));
   PoseSample far = p;
   far.position_mm = {1, 2, 9000};  // outside the default workspace (3 m)
-  encode_report(*layout.layout, std::span<const PoseSample>(&far, 1), 101, bad);
+  encode_report(*layout, std::span<const PoseSample>(&far, 1), 101, bad);
   ASSERT_TRUE(device.write(bad));
-  encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), 50, bad);  // device time backwards
+  encode_report(*layout, std::span<const PoseSample>(&p, 1), 50, bad);  // device time backwards
   ASSERT_TRUE(device.write(bad));
   ASSERT_TRUE(eventually([&] { return t.stats().reports == 6; }));
   const TrackerStats s = t.stats();
@@ -184,8 +184,8 @@ TEST_F(HidUmockdev, MalformedReportsAreCountedAndNeverApplied) {
 TEST_F(HidUmockdev, DeliveredRateAndJitterAt16ms) {
   Collector c;
   auto made = make_tracker(hid_settings(), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
   auto layout = make_layout(hid_settings());
   std::array<std::uint8_t, 32> buf{};
@@ -196,7 +196,7 @@ TEST_F(HidUmockdev, DeliveredRateAndJitterAt16ms) {
     PoseSample p;
     p.role = Role::Head;
     p.position_mm = {static_cast<double>(k), 0, 1500};
-    encode_report(*layout.layout, std::span<const PoseSample>(&p, 1), static_cast<std::uint32_t>(k * 16000), buf);
+    encode_report(*layout, std::span<const PoseSample>(&p, 1), static_cast<std::uint32_t>(k * 16000), buf);
     written_ns[k] = monotonic_ns();
     ASSERT_TRUE(device.write(buf));
     next += std::chrono::microseconds(16000);
@@ -229,8 +229,8 @@ TEST_F(HidUmockdev, InitFeatureReportsAreSentInOrderOnEveryOpen) {
   s.hid.init_feature_reports = {{0x02, 0x01}, {0x05, 0x00, 0x10, 0xFF}};
   Collector c;
   auto made = make_tracker(s, collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(eventually([&] { return t.stats().opens >= 1; }));
   EXPECT_EQ(device.feature_reports(), s.hid.init_feature_reports);
   EXPECT_EQ(t.state(), TrackerState::Opening);  // told to start; nothing streamed yet
@@ -261,10 +261,10 @@ TEST(HidUmockdevRefusing, ARefusedInitReportIsOneErrorNamingItsIndexAndNoOpen) {
     lines.push_back(line);
   };
   auto made = make_tracker(s, o);
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   ASSERT_TRUE(eventually([&] { return device.feature_reports().size() >= 2; }));  // refused, then tried again
-  made.tracker->stop();
-  EXPECT_EQ(made.tracker->stats().opens, 0u);
+  (*made)->stop();
+  EXPECT_EQ((*made)->stats().opens, 0u);
   std::lock_guard lock(m);
   const auto it = std::find_if(lines.begin(), lines.end(), [](const std::string& l) {
     return l.find("init_feature_reports[0]") != std::string::npos;

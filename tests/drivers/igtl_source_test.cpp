@@ -86,7 +86,7 @@ TEST(IgtlSource, TwoDevicesAt60HzArriveAsSentAtTheSentRate) {
   TestServer server;
   Collector c;
   auto made = make_tracker(igtl_settings(server.listener.port()), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   ASSERT_TRUE(server.wait_for_client());
   const int n = 120;  // 2 s at 60 Hz, two devices per tick
   std::vector<std::int64_t> sent_ns(n);
@@ -123,11 +123,11 @@ TEST(IgtlSource, TwoDevicesAt60HzArriveAsSentAtTheSentRate) {
       n, rate_hz, age_ms[age_ms.size() / 2], age_ms[age_ms.size() * 99 / 100], age_ms.back());
   // Generous on purpose (a loaded 2-core machine delays the sender's sleeps, never the count): 60 Hz +-25 %.
   EXPECT_NEAR(rate_hz, 60.0, 15.0);
-  const TrackerStats st = made.tracker->stats();
+  const TrackerStats st = (*made)->stats();
   EXPECT_EQ(st.accepted, 2u * n);
   EXPECT_EQ(st.malformed, 0u);
   EXPECT_EQ(st.opens, 1u);
-  EXPECT_EQ(made.tracker->state(), TrackerState::Streaming);
+  EXPECT_EQ((*made)->state(), TrackerState::Streaming);
 }
 
 TEST(IgtlSource, ServerStopAndRestartGoesDisconnectedThenStreamingWithoutARestart) {
@@ -135,8 +135,8 @@ TEST(IgtlSource, ServerStopAndRestartGoesDisconnectedThenStreamingWithoutARestar
   const int port = server->listener.port();
   Collector c;
   auto made = make_tracker(igtl_settings(port), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(server->wait_for_client());
   ASSERT_TRUE(server->send(igtl_transform_message("PatientToTracker", pose_at(0, 1), {})));
   ASSERT_TRUE(eventually([&] { return c.size() == 1; }));
@@ -166,8 +166,8 @@ TEST(IgtlSource, MalformedMessagesAreCountedByReasonAndNeverApplied) {
   TestServer server;
   Collector c;
   auto made = make_tracker(igtl_settings(server.listener.port()), collecting(c));
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& t = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
   ASSERT_TRUE(server.wait_for_client());
   const Eigen::Matrix4d good = pose_at(0.5, 1);
   ASSERT_TRUE(server.send(igtl_transform_message("PatientToTracker", good, {})));
@@ -209,7 +209,7 @@ TEST(IgtlSource, ARecordingReplaysToBitIdenticalPoses) {
   TrackerOptions o = collecting(live);
   o.record_path = rec;
   auto made = make_tracker(igtl_settings(server.listener.port()), o);
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   ASSERT_TRUE(server.wait_for_client());
   const std::vector<IgtlTool> tools = {{"HeadToTracker", pose_at(0.1, 0)}, {"PatientToTracker", pose_at(0.1, 1)}};
   for (int k = 0; k < 30; ++k) {
@@ -218,15 +218,15 @@ TEST(IgtlSource, ARecordingReplaysToBitIdenticalPoses) {
     ASSERT_TRUE(server.send(k % 2 ? igtl_tdata_message("T", tools, time) : igtl_qtdata_message("T", tools, time)));
   }
   ASSERT_TRUE(server.send(igtl_status_message("Server", {})));
-  ASSERT_TRUE(eventually([&] { return made.tracker->stats().reports == 61; }));
-  made.tracker->stop();
+  ASSERT_TRUE(eventually([&] { return (*made)->stats().reports == 61; }));
+  (*made)->stop();
 
   const auto a = live.copy();
   ASSERT_EQ(a.size(), 90u);
   expect_bit_identical(a, replay_all(rec));
   const auto log = load_trk(rec);  // every message whole, the STATUS one too, each marked as OpenIGTLink
-  ASSERT_TRUE(log.log) << log.error;
-  ASSERT_EQ(log.log->records.size(), 61u);
-  for (const auto& r : log.log->records) EXPECT_EQ(r.source, TrkSource::Igtl);
+  ASSERT_TRUE(log) << log.error();
+  ASSERT_EQ(log->records.size(), 61u);
+  for (const auto& r : log->records) EXPECT_EQ(r.source, TrkSource::Igtl);
   std::filesystem::remove_all(dir);
 }

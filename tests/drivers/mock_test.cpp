@@ -42,7 +42,7 @@ TEST(MockTrajectory, HeadLooksAtThePatient) {
 TEST(MockReports, DecodeBackToTheTrajectory) {
   config::TrackerSettings t;
   t.stylus.enabled = true;
-  const ReportLayout l = *make_layout(t).layout;
+  const ReportLayout l = *make_layout(t);
   MockReports reports(t, l);
   int n = 0;
   for (std::int64_t k = 0; k < 400; k += 37) {
@@ -63,7 +63,7 @@ TEST(MockReports, DecodeBackToTheTrajectory) {
 TEST(MockReports, DropoutDropsAboutTheConfiguredShare) {
   config::TrackerSettings t;
   t.mock_dropout = 0.25;
-  const ReportLayout l = *make_layout(t).layout;
+  const ReportLayout l = *make_layout(t);
   MockReports reports(t, l);
   int n = 0;
   for (std::int64_t k = 0; k < 2000; ++k) reports.tick(k, [&](std::span<const std::uint8_t>) { ++n; });

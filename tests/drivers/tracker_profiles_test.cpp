@@ -35,8 +35,8 @@ Profile profile(const std::string& name, std::uint16_t vendor_id, std::uint16_t 
   EXPECT_EQ(p.settings.hid.vendor_id, vendor_id);
   EXPECT_EQ(p.settings.hid.product_id, product_id);
   auto l = make_layout(p.settings);
-  EXPECT_TRUE(l.layout) << l.error;
-  p.layout = l.layout.value_or(ReportLayout{});
+  EXPECT_TRUE(l) << l.error();
+  p.layout = l ? *l : ReportLayout{};
   return p;
 }
 

@@ -63,9 +63,9 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
   t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
   t.replay_realtime = false;
   auto made = make_tracker(t, o);
-  ASSERT_TRUE(made.tracker) << made.error;
-  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
-  made.tracker->stop();
+  ASSERT_TRUE(made) << made.error();
+  ASSERT_TRUE(eventually([&] { return (*made)->finished(); }));
+  (*made)->stop();
   const auto got = collected.copy();
   ASSERT_EQ(got.size(), expected.size());
   for (std::size_t k = 0; k < got.size(); ++k) {
@@ -75,11 +75,11 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[k].position_mm[i], expected[k].p[i], kPosTolMm);
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(got[k].orientation_wxyz[i], expected[k].q[i], kQuatTol);
   }
-  const TrackerStats s = made.tracker->stats();
+  const TrackerStats s = (*made)->stats();
   EXPECT_EQ(s.accepted, 750u);
   EXPECT_EQ(s.malformed, 0u);
   // The last patient pose is supine.
-  const PoseSample last = made.tracker->latest(Role::Patient, monotonic_ns());
+  const PoseSample last = (*made)->latest(Role::Patient, monotonic_ns());
   EXPECT_NEAR((last.orientation() * Eigen::Vector3d::UnitY()).z(), -1.0, 1e-3);
 }
 
@@ -89,13 +89,13 @@ TEST(Tracker, NoisyRecordingWithDropoutsReplaysWithoutMalformedReports) {
   t.replay_file = lungar::testing::tracker_data("head_orbit_noisy.trk");
   t.replay_realtime = false;
   auto made = make_tracker(t, quiet());
-  ASSERT_TRUE(made.tracker) << made.error;
-  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
+  ASSERT_TRUE(made) << made.error();
+  ASSERT_TRUE(eventually([&] { return (*made)->finished(); }));
   const auto log = load_trk(t.replay_file);
-  ASSERT_TRUE(log.log);
-  EXPECT_LT(log.log->records.size(), 375u);  // 5 % of 375 dropped
-  EXPECT_EQ(made.tracker->stats().accepted, log.log->records.size());
-  EXPECT_EQ(made.tracker->stats().malformed, 0u);
+  ASSERT_TRUE(log);
+  EXPECT_LT(log->records.size(), 375u);  // 5 % of 375 dropped
+  EXPECT_EQ((*made)->stats().accepted, log->records.size());
+  EXPECT_EQ((*made)->stats().malformed, 0u);
 }
 
 TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
@@ -108,8 +108,8 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   TrackerOptions o = quiet();
   o.record_path = rec;
   auto made = make_tracker(t, o);
-  ASSERT_TRUE(made.tracker) << made.error;
-  Tracker& tr = *made.tracker;
+  ASSERT_TRUE(made) << made.error();
+  Tracker& tr = **made;
   EXPECT_EQ(tr.describe(), "mock upright_to_supine");
   ASSERT_TRUE(eventually([&] { return tr.stats().accepted >= 100; }));
   EXPECT_EQ(tr.state(), TrackerState::Streaming);
@@ -134,30 +134,31 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   EXPECT_TRUE(later.valid());
   EXPECT_TRUE(later.stale());
   auto log = load_trk(rec);
-  ASSERT_TRUE(log.log) << log.error;
-  EXPECT_EQ(log.log->records.size(), s.reports);
-  EXPECT_EQ(log.log->header.field("source"), "mock");
-  EXPECT_FALSE(log.log->header.layout_toml.empty());
-  EXPECT_EQ(log.log->records.front().source, TrkSource::Mock);
+  ASSERT_TRUE(log) << log.error();
+  EXPECT_EQ(log->records.size(), s.reports);
+  EXPECT_EQ(log->header.field("source"), "mock");
+  EXPECT_FALSE(log->header.layout_toml.empty());
+  EXPECT_EQ(log->records.front().source, TrkSource::Mock);
 }
 
 TEST(Tracker, BadSettingsAreOneLineErrors) {
   config::TrackerSettings t;
   t.source = config::TrackerSource::Replay;
   t.replay_file = "/nonexistent/x.trk";
-  EXPECT_EQ(make_tracker(t, quiet()).error, "/nonexistent/x.trk: cannot open the tracker log: expected a readable .trk file");
+  EXPECT_EQ(make_tracker(t, quiet()).error(),
+            "/nonexistent/x.trk: cannot open the tracker log: expected a readable .trk file");
   t = {};
   t.mock_trajectory = "somersault";
-  EXPECT_EQ(make_tracker(t, quiet()).error,
+  EXPECT_EQ(make_tracker(t, quiet()).error(),
             "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"somersault\"");
   t = {};
   t.report.length = 8;
-  EXPECT_EQ(make_tracker(t, quiet()).error,
+  EXPECT_EQ(make_tracker(t, quiet()).error(),
             "tracker report layout: trackers.head.offset: expected the sensor's fields inside the report");
   t = {};
   TrackerOptions o = quiet();
   o.record_path = "/nonexistent/rec.trk";
-  EXPECT_EQ(make_tracker(t, o).error.rfind("/nonexistent/rec.trk: cannot create the tracker log", 0), 0u);
+  EXPECT_EQ(make_tracker(t, o).error().rfind("/nonexistent/rec.trk: cannot create the tracker log", 0), 0u);
 }
 
 TEST(Tracker, AnAbsentHidDeviceIsDisconnectedNotAnError) {
@@ -167,14 +168,14 @@ TEST(Tracker, AnAbsentHidDeviceIsDisconnectedNotAnError) {
   t.hid.product_id = 0xBEEF;
   t.reopen_backoff_ms = 5;
   auto made = make_tracker(t, quiet());
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   std::this_thread::sleep_for(std::chrono::milliseconds(50));  // a few reopen attempts with back-off
-  const TrackerStats s = made.tracker->stats();
+  const TrackerStats s = (*made)->stats();
   EXPECT_NE(s.state, TrackerState::Streaming);
   EXPECT_EQ(s.opens, 0u);
   EXPECT_EQ(s.reports, 0u);
-  EXPECT_FALSE(made.tracker->latest(Role::Head, monotonic_ns()).valid());
-  EXPECT_EQ(made.tracker->describe(), "hid dead:beef");
+  EXPECT_FALSE((*made)->latest(Role::Head, monotonic_ns()).valid());
+  EXPECT_EQ((*made)->describe(), "hid dead:beef");
 }
 
 TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
@@ -191,14 +192,14 @@ TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
     if (s.role == Role::Patient && times.size() < 800) times.push_back(s.t_device_ns);
   };
   auto made = make_tracker(t, o);
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   ASSERT_TRUE(eventually([&] {
     std::lock_guard lock(m);
     return times.size() >= 800;  // 375 patient samples per pass: more than two passes
   }));
-  made.tracker->stop();
-  EXPECT_EQ(made.tracker->stats().malformed, 0u);  // the restart is not "time backwards"
-  EXPECT_EQ(made.tracker->stats().reconnects, 0u);
+  (*made)->stop();
+  EXPECT_EQ((*made)->stats().malformed, 0u);  // the restart is not "time backwards"
+  EXPECT_EQ((*made)->stats().reconnects, 0u);
   for (std::size_t k = 1; k < times.size(); ++k) ASSERT_GE(times[k], times[k - 1]) << k;
 }
 
@@ -216,12 +217,12 @@ TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
     if (s.role == Role::Head) times.push_back(s.t_device_ns);
   };
   auto made = make_tracker(t, o);
-  ASSERT_TRUE(made.tracker) << made.error;
+  ASSERT_TRUE(made) << made.error();
   ASSERT_TRUE(eventually([&] {
     std::lock_guard lock(m);
     return times.size() >= 20;
   }));
-  made.tracker->stop();
+  (*made)->stop();
   for (std::size_t k = 1; k < 20; ++k) EXPECT_EQ(times[k] - times[0], static_cast<std::int64_t>(k) * 4'000'000) << k;
 }
 
@@ -233,19 +234,19 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   config::TrackerSettings t = loaded->trackers;
   t.mock_trajectory = "head_orbit";
   const auto layout = make_layout(t);
-  ASSERT_TRUE(layout.layout) << layout.error;
+  ASSERT_TRUE(layout) << layout.error();
   const auto path = std::filesystem::temp_directory_path() / ("lungar_imu_" + std::to_string(::getpid()) + ".trk");
   TrkWriter w;
   TrkHeader h;
   h.layout_toml = layout_to_toml(t);
-  ASSERT_TRUE(w.open(path.string(), h, TrkWriter::Mode::Atomic)) << w.error();
-  MockReports reports(t, *layout.layout);
+  ASSERT_EQ(w.open(path.string(), h, TrkWriter::Mode::Atomic).error(), "");
+  MockReports reports(t, *layout);
   for (std::int64_t k = 0; k < 50; ++k) {
     reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
       ASSERT_TRUE(w.append(TrkSource::Synth, k * 16'000'000, bytes));
     });
   }
-  ASSERT_TRUE(w.commit()) << w.error();
+  ASSERT_EQ(w.commit().error(), "");
   config::TrackerSettings rs = t;
   rs.source = config::TrackerSource::Replay;
   rs.replay_file = path.string();
@@ -253,9 +254,9 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   Collector collected;
   TrackerOptions o = collecting(collected);
   auto made = make_tracker(rs, o);
-  ASSERT_TRUE(made.tracker) << made.error;
-  ASSERT_TRUE(eventually([&] { return made.tracker->finished(); }));
-  made.tracker->stop();
+  ASSERT_TRUE(made) << made.error();
+  ASSERT_TRUE(eventually([&] { return (*made)->finished(); }));
+  (*made)->stop();
   std::filesystem::remove(path);
   const auto got = collected.copy();
   ASSERT_EQ(got.size(), 50u);

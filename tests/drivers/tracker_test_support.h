@@ -70,10 +70,10 @@ inline std::vector<drivers::PoseSample> replay_all(const std::string& file) {
   rs.replay_realtime = false;
   Collector replayed;
   auto replay = drivers::make_tracker(rs, collecting(replayed));
-  EXPECT_TRUE(replay.tracker) << replay.error;
-  if (!replay.tracker) return {};
-  EXPECT_TRUE(eventually([&] { return replay.tracker->finished(); }));
-  replay.tracker->stop();
+  EXPECT_TRUE(replay) << replay.error();
+  if (!replay) return {};
+  EXPECT_TRUE(eventually([&] { return (*replay)->finished(); }));
+  (*replay)->stop();
   return replayed.copy();
 }
 

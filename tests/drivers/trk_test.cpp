@@ -7,8 +7,8 @@
 #include <iterator>
 #include <vector>
 
+#include "config/base/crc32.h"
 #include "drivers/decode/layout_toml.h"
-#include "drivers/trk/crc32.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 
@@ -39,12 +39,12 @@ TrkHeader header() {
 /// Three records of lengths 3, 5 and 7 whose bytes encode their index.
 fs::path write_three(const fs::path& path, TrkWriter::Mode mode) {
   TrkWriter w;
-  EXPECT_TRUE(w.open(path.string(), header(), mode)) << w.error();
+  EXPECT_EQ(w.open(path.string(), header(), mode).error(), "");
   for (int k = 0; k < 3; ++k) {
     std::vector<std::uint8_t> r(static_cast<std::size_t>(3 + 2 * k), static_cast<std::uint8_t>(k + 10));
-    EXPECT_TRUE(w.append(TrkSource::Hid, 1000 + k, r)) << w.error();
+    EXPECT_EQ(w.append(TrkSource::Hid, 1000 + k, r).error(), "");
   }
-  EXPECT_TRUE(w.commit()) << w.error();
+  EXPECT_EQ(w.commit().error(), "");
   return path;
 }
 
@@ -59,16 +59,16 @@ TEST(Crc32, MatchesTheStandardCheckValue) {
 TEST(Trk, RoundTripKeepsHeaderAndRecords) {
   const auto path = write_three(temp_dir() / "a.trk", TrkWriter::Mode::AppendLog);
   auto r = load_trk(path.string());
-  ASSERT_TRUE(r.log) << r.error;
-  EXPECT_EQ(r.log->header.field("serial"), "SN0001");
-  EXPECT_EQ(r.log->header.field("nothing"), "");
-  EXPECT_EQ(r.log->header.layout_toml, header().layout_toml);
-  ASSERT_EQ(r.log->records.size(), 3u);
-  EXPECT_FALSE(r.log->truncated_tail);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->header.field("serial"), "SN0001");
+  EXPECT_EQ(r->header.field("nothing"), "");
+  EXPECT_EQ(r->header.layout_toml, header().layout_toml);
+  ASSERT_EQ(r->records.size(), 3u);
+  EXPECT_FALSE(r->truncated_tail);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_EQ(r.log->records[k].t_arrival_ns, 1000 + k);
-    EXPECT_EQ(r.log->records[k].report.size(), static_cast<std::size_t>(3 + 2 * k));
-    EXPECT_EQ(r.log->records[k].report[0], k + 10);
+    EXPECT_EQ(r->records[k].t_arrival_ns, 1000 + k);
+    EXPECT_EQ(r->records[k].report.size(), static_cast<std::size_t>(3 + 2 * k));
+    EXPECT_EQ(r->records[k].report[0], k + 10);
   }
 }
 
@@ -78,35 +78,35 @@ TEST(Trk, ATruncatedTailLosesOnlyTheLastRecord) {
   // Every cut inside the last record (21 + 7 bytes) leaves the first two.
   for (std::size_t cut = 1; cut < kTrkRecordOverhead + 7; ++cut) {
     auto r = parse_trk(std::vector<std::uint8_t>(bytes.begin(), bytes.end() - static_cast<long>(cut)), "b.trk");
-    ASSERT_TRUE(r.log) << cut << ": " << r.error;
-    EXPECT_EQ(r.log->records.size(), 2u) << cut;
-    EXPECT_TRUE(r.log->truncated_tail) << cut;
+    ASSERT_TRUE(r) << cut << ": " << r.error();
+    EXPECT_EQ(r->records.size(), 2u) << cut;
+    EXPECT_TRUE(r->truncated_tail) << cut;
   }
 }
 
 TEST(Trk, CorruptionIsAnErrorNamingFileRecordAndOffset) {
   const auto path = write_three(temp_dir() / "c.trk", TrkWriter::Mode::AppendLog);
   auto bytes = read_file(path);
-  const std::size_t header_size = parse_trk_header(bytes).header->size;
+  const std::size_t header_size = parse_trk_header(bytes)->size;
   auto flipped = bytes;
   flipped[header_size + 14] ^= 0x01;  // first record's first report byte
-  EXPECT_EQ(parse_trk(flipped, "c.trk").error,
+  EXPECT_EQ(parse_trk(flipped, "c.trk").error(),
             "c.trk: record 0: record CRC mismatch, at byte " + std::to_string(header_size));
   auto desync = bytes;
   desync[header_size + kTrkRecordOverhead + 3] = 0;  // second record's sync
-  EXPECT_EQ(parse_trk(desync, "c.trk").error, "c.trk: record 1: expected a record sync 0x4B52, at byte " +
-                                                  std::to_string(header_size + kTrkRecordOverhead + 3));
+  EXPECT_EQ(parse_trk(desync, "c.trk").error(), "c.trk: record 1: expected a record sync 0x4B52, at byte " +
+                                                    std::to_string(header_size + kTrkRecordOverhead + 3));
   auto bad_header = bytes;
   bad_header[20] ^= 0xFF;
-  EXPECT_EQ(parse_trk(bad_header, "c.trk").error.rfind("c.trk: header CRC mismatch: the header is damaged", 0), 0u);
-  EXPECT_EQ(parse_trk({'n', 'o', 'p', 'e', 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "x.trk").error,
+  EXPECT_EQ(parse_trk(bad_header, "c.trk").error().rfind("c.trk: header CRC mismatch: the header is damaged", 0), 0u);
+  EXPECT_EQ(parse_trk({'n', 'o', 'p', 'e', 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "x.trk").error(),
             "x.trk: expected the magic \"LUNGATRK\": not a .trk log, at byte 0");
   auto huge = bytes;
   huge[12] = 0xFF;
   huge[13] = 0xFF;
   huge[14] = 0xFF;
-  EXPECT_NE(parse_trk(huge, "c.trk").error.find("expected a text of at most"), std::string::npos);
-  EXPECT_EQ(load_trk((temp_dir() / "missing.trk").string()).error,
+  EXPECT_NE(parse_trk(huge, "c.trk").error().find("expected a text of at most"), std::string::npos);
+  EXPECT_EQ(load_trk((temp_dir() / "missing.trk").string()).error(),
             (temp_dir() / "missing.trk").string() + ": cannot open the tracker log: expected a readable .trk file");
 }
 
@@ -132,19 +132,20 @@ TEST(Trk, AppendLogHasAReadableHeaderFromTheStart) {
   TrkWriter w;
   ASSERT_TRUE(w.open(path.string(), header(), TrkWriter::Mode::AppendLog));
   auto r = load_trk(path.string());  // a crash right after open: an empty but valid log
-  ASSERT_TRUE(r.log) << r.error;
-  EXPECT_TRUE(r.log->records.empty());
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_TRUE(r->records.empty());
   const std::uint8_t rep[2] = {9, 9};
   ASSERT_TRUE(w.append(TrkSource::Hid, 1, rep));
   r = load_trk(path.string());  // each record is on disk as soon as append returns
-  ASSERT_TRUE(r.log) << r.error;
-  EXPECT_EQ(r.log->records.size(), 1u);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->records.size(), 1u);
 }
 
 TEST(Trk, WriterErrorsNameTheFile) {
   TrkWriter w;
-  EXPECT_FALSE(w.open("/nonexistent-dir/x.trk", header(), TrkWriter::Mode::AppendLog));
-  EXPECT_EQ(w.error().rfind("/nonexistent-dir/x.trk: cannot create the tracker log", 0), 0u) << w.error();
+  const Status opened = w.open("/nonexistent-dir/x.trk", header(), TrkWriter::Mode::AppendLog);
+  EXPECT_FALSE(opened);
+  EXPECT_EQ(opened.error().rfind("/nonexistent-dir/x.trk: cannot create the tracker log", 0), 0u) << opened.error();
 }
 
 TEST(LayoutToml, RoundTripsTheLayout) {
@@ -155,15 +156,14 @@ TEST(LayoutToml, RoundTripsTheLayout) {
   t.report.position_scale = 0.1234567890123;
   t.axis_remap = "x,-z,y";
   t.stylus.enabled = true;
-  std::string error;
-  auto back = layout_from_toml(layout_to_toml(t), "t", &error);
-  ASSERT_TRUE(back) << error;
+  auto back = layout_from_toml(layout_to_toml(t), "t");
+  ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->report.endian, t.report.endian);
   EXPECT_EQ(back->report.orientation, t.report.orientation);
   EXPECT_EQ(back->report.orientation_components, t.report.orientation_components);
   EXPECT_DOUBLE_EQ(back->report.position_scale, t.report.position_scale);
   EXPECT_EQ(back->axis_remap, t.axis_remap);
   EXPECT_TRUE(back->stylus.enabled);
-  EXPECT_FALSE(layout_from_toml("[trackers.report]\nlength = \"x\"\n", "h", &error));
-  EXPECT_EQ(error, "h:2: key 'trackers.report.length': expected an integer in [1, 1024] bytes, got the string \"x\"");
+  EXPECT_EQ(layout_from_toml("[trackers.report]\nlength = \"x\"\n", "h").error(),
+            "h:2: key 'trackers.report.length': expected an integer in [1, 1024] bytes, got the string \"x\"");
 }

@@ -62,9 +62,9 @@ TEST(TrkTool, SynthInfoDumpCut) {
   r = run("cut " + a + " " + b + " --from 0.25 --to 0.5");
   ASSERT_EQ(r.rc, 0) << r.out;
   auto log = lungar::drivers::load_trk(b);
-  ASSERT_TRUE(log.log) << log.error;
-  EXPECT_EQ(log.log->records.size(), 50u);  // ticks 25..49, two reports each
-  EXPECT_EQ(log.log->header.description.find("trajectory=head_orbit") != std::string::npos, true);
+  ASSERT_TRUE(log) << log.error();
+  EXPECT_EQ(log->records.size(), 50u);  // ticks 25..49, two reports each
+  EXPECT_EQ(log->header.description.find("trajectory=head_orbit") != std::string::npos, true);
 }
 
 TEST(TrkTool, BadInputIsOneLineAndExitOne) {
@@ -106,14 +106,14 @@ TEST(TrkTool, DumpDecodesOpenIgtlinkRecordsAsMessages) {
   d::TrkHeader h;
   h.description = "source=igtl\n";
   h.layout_toml = d::layout_to_toml(lungar::config::TrackerSettings{});
-  ASSERT_TRUE(w.open(a, h, d::TrkWriter::Mode::Atomic)) << w.error();
+  ASSERT_EQ(w.open(a, h, d::TrkWriter::Mode::Atomic).error(), "");
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.topRightCorner<3, 1>() = Eigen::Vector3d(10, -20, 1000);
   const auto time = d::IgtlTime::from_ns(1'700'000'000'000'000'000ull);
   ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'000'000'000, d::igtl_transform_message("PatientToTracker", m, time)));
   ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'016'000'000, d::igtl_status_message("Server", time)));
   ASSERT_TRUE(w.append(d::TrkSource::Igtl, 1'032'000'000, d::igtl_transform_message("ProbeToTracker", m, time)));
-  ASSERT_TRUE(w.commit()) << w.error();
+  ASSERT_EQ(w.commit().error(), "");
   ToolRun r = run("dump " + a + " --format csv");
   ASSERT_EQ(r.rc, 0) << r.out;
   EXPECT_NE(r.out.find("\n0,1000000000,0,patient,ok,10.0000,-20.0000,1000.0000,1.000000,0.000000,0.000000,0.000000\n"),

@@ -19,7 +19,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   config::TrackerSettings t;
   t.stylus.enabled = true;
   auto layout = drivers::make_layout(t);
-  ASSERT_TRUE(layout.layout) << layout.error;
+  ASSERT_TRUE(layout) << layout.error();
 
   // The truth: model -> patient tracker, and the patient tracker's pose in the world.
   const Eigen::Quaterniond reg_q(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 1.0, -0.3).normalized()));
@@ -36,7 +36,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   drivers::TrkHeader header;
   header.description = "source=test";
   header.layout_toml = drivers::layout_to_toml(t);
-  ASSERT_TRUE(writer.open(log_path, header, drivers::TrkWriter::Mode::Atomic)) << writer.error();
+  ASSERT_EQ(writer.open(log_path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
 
   std::mt19937 rng(5);
   std::normal_distribution<double> tip_noise(0.0, 0.2);  // mm: a steady hand on a landmark
@@ -49,7 +49,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
     pose.set_position(p);
     pose.set_orientation(q);
     std::fill(report.begin(), report.end(), 0);
-    ASSERT_TRUE(drivers::encode_report(*layout.layout, std::span(&pose, 1), ticks, report));
+    ASSERT_TRUE(drivers::encode_report(*layout, std::span(&pose, 1), ticks, report));
     ASSERT_TRUE(writer.append(drivers::TrkSource::Hid, t_ns, report));
   };
   for (const auto& m : model) {
@@ -63,7 +63,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
       emit(drivers::Role::Stylus, world + Eigen::Vector3d(0, 0, 30.0 * (k + 1)), Eigen::Quaterniond::Identity());
     }
   }
-  ASSERT_TRUE(writer.commit()) << writer.error();
+  ASSERT_EQ(writer.commit().error(), "");
 
   auto touched = platform::stylus_points_from_log(log_path, "");
   ASSERT_TRUE(touched) << touched.error();

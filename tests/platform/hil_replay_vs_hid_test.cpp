@@ -87,11 +87,10 @@ class HardwareInTheLoop : public ::testing::Test {
     ASSERT_TRUE(loaded) << loaded.error();
     asset = std::move(*loaded);
     auto log = drivers::load_trk(kLog);
-    ASSERT_TRUE(log.log) << log.error;
-    records = log.log->records.size();
-    std::string error;
-    auto t = drivers::layout_from_toml(log.log->header.layout_toml, kLog, &error);
-    ASSERT_TRUE(t) << error;
+    ASSERT_TRUE(log) << log.error();
+    records = log->records.size();
+    auto t = drivers::layout_from_toml(log->header.layout_toml, kLog);
+    ASSERT_TRUE(t) << t.error();
     trackers = *t;
     auto ctx = platform::EglContext::headless();
     ASSERT_TRUE(ctx) << ctx.error();
@@ -209,9 +208,9 @@ TEST_F(HardwareInTheLoop, ReplayAndEmulatedHidGiveTheSameFramesAsTheCommittedOut
   rs.replay_realtime = false;
   Collector via_replay;
   auto replay = drivers::make_tracker(rs, via_replay.options());
-  ASSERT_TRUE(replay.tracker) << replay.error;
-  ASSERT_TRUE(eventually([&] { return replay.tracker->finished(); }));
-  replay.tracker->stop();
+  ASSERT_TRUE(replay) << replay.error();
+  ASSERT_TRUE(eventually([&] { return (*replay)->finished(); }));
+  (*replay)->stop();
 
   // (b) the same reports written to an emulated hidraw device, read by real hidapi
   lungar::testing::UmockdevTracker device;
@@ -225,20 +224,20 @@ TEST_F(HardwareInTheLoop, ReplayAndEmulatedHidGiveTheSameFramesAsTheCommittedOut
   hs.hid.product_id = spec.product_id;
   Collector via_hid;
   auto hid = drivers::make_tracker(hs, via_hid.options());
-  ASSERT_TRUE(hid.tracker) << hid.error;
-  ASSERT_TRUE(eventually([&] { return hid.tracker->stats().opens >= 1; }));
+  ASSERT_TRUE(hid) << hid.error();
+  ASSERT_TRUE(eventually([&] { return (*hid)->stats().opens >= 1; }));
   auto log = drivers::load_trk(kLog);
-  ASSERT_TRUE(log.log);
+  ASSERT_TRUE(log);
   std::size_t written = 0;
-  for (const auto& rec : log.log->records) {
+  for (const auto& rec : log->records) {
     // The emulated node is a pseudo-terminal with a 4 KiB buffer: keep at most 64 reports in flight.
     ASSERT_TRUE(eventually([&] { return written < via_hid.count() + 64; }));
     ASSERT_TRUE(device.write(rec.report));
     ++written;
   }
   ASSERT_TRUE(eventually([&] { return via_hid.count() >= records; })) << via_hid.count() << " of " << records;
-  hid.tracker->stop();
-  EXPECT_EQ(hid.tracker->stats().malformed, 0u);
+  (*hid)->stop();
+  EXPECT_EQ((*hid)->stats().malformed, 0u);
 
   ASSERT_GT(via_replay.patient.size(), 100u);
   ASSERT_EQ(via_replay.patient.size(), via_hid.patient.size());

@@ -126,17 +126,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   auto log = drivers::load_trk(o.log);
-  if (!log.log || log.log->records.empty()) {
-    std::fprintf(stderr, "lungar-soak: %s\n", log.log ? (o.log + ": no records").c_str() : log.error.c_str());
+  if (!log || log->records.empty()) {
+    std::fprintf(stderr, "lungar-soak: %s\n", log ? (o.log + ": no records").c_str() : log.error().c_str());
     return 2;
   }
-  std::string error;
-  auto layout = drivers::layout_from_toml(log.log->header.layout_toml, o.log, &error);
+  auto layout = drivers::layout_from_toml(log->header.layout_toml, o.log);
   if (!layout) {
-    std::fprintf(stderr, "lungar-soak: %s\n", error.c_str());
+    std::fprintf(stderr, "lungar-soak: %s\n", layout.error().c_str());
     return 2;
   }
-  Feeder feeder(o, std::move(*log.log), *layout);
+  Feeder feeder(o, std::move(*log), *layout);
   if (!feeder.plug()) {
     std::fprintf(stderr, "lungar-soak: %s\n", feeder.error().c_str());
     return 1;

@@ -4,7 +4,6 @@
 
 #include <hidapi/hidapi.h>
 
-#include <ctime>
 #include <mutex>
 #include <thread>
 
@@ -17,12 +16,6 @@
 #include "drivers/tracker/tracker_core.h"
 
 namespace lungar::drivers {
-
-std::int64_t monotonic_ns() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
-}
 
 const char* to_string(TrackerState s) {
   switch (s) {

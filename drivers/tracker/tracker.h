@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "config/base/clock.h"
 #include "config/base/result.h"
 #include "config/settings.h"
 #include "drivers/decode/decoder.h"
@@ -42,8 +43,8 @@ struct TrackerStats {
   TrackerState state = TrackerState::Disconnected;
 };
 
-/// Monotonic clock in nanoseconds (CLOCK_MONOTONIC), the time base of t_arrival_ns.
-std::int64_t monotonic_ns();
+/// The time base of t_arrival_ns: config/base's one monotonic clock (CLOCK_MONOTONIC, nanoseconds).
+using lungar::monotonic_ns;
 
 struct TrackerOptions {
   std::string record_path;  ///< when set, every raw report read is appended to this .trk log

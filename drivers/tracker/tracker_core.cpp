@@ -4,7 +4,8 @@
 
 #include <cstdarg>
 #include <cstdio>
-#include <ctime>
+
+#include "config/base/log_line.h"
 
 namespace lungar::drivers {
 
@@ -12,15 +13,8 @@ namespace {
 
 constexpr std::int64_t kSecond = 1'000'000'000;
 
-void default_log(const std::string& line) {
-  timespec ts{};
-  clock_gettime(CLOCK_REALTIME, &ts);
-  tm utc{};
-  gmtime_r(&ts.tv_sec, &utc);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%S", &utc);
-  std::fprintf(stderr, "%s.%03ldZ %s\n", stamp, ts.tv_nsec / 1'000'000, line.c_str());
-}
+/// Without a log of the caller's, the one log-line format (config/base), as the runtime prints the tracker's lines.
+void default_log(const std::string& line) { log_line("lungar", "drivers: " + line); }
 
 }  // namespace
 

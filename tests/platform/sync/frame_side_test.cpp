@@ -100,6 +100,13 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   }
   ASSERT_EQ(learner->state(), SyncState::InSync);
   EXPECT_STREQ(poses.state(), "streaming");  // the own tracker's state again
+  // In step comes with the instructor's first heartbeat or clock reply; the first shared pose (best effort, at the
+  // tracker's rate) may come a little later, and until then the station's own patient tracker stands in.
+  while (!learner->trainee()->patient_pose().valid() && monotonic_ns() < until) {
+    one_frame(monotonic_ns());
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(learner->trainee()->patient_pose().valid()) << "no shared patient pose within 10 s";
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
 
 #if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer owns operator new: nothing is counted there

@@ -79,7 +79,7 @@ struct RenderSettings {
   double point_size_px = 5.0;
   bool overlay_rest = false;
   Deform deform = Deform::Gpu;
-  StereoStrategy stereo_strategy = StereoStrategy::PerEye;  // measured faster on llvmpipe (README, bench)
+  StereoStrategy stereo_strategy = StereoStrategy::PerEye;  // measured faster (docs/measurements.md, scripts/bench)
   bool lod = true;
   bool half_float = false;
   bool hud = true;

@@ -16,7 +16,7 @@
 namespace lungar::render {
 
 /// Which per-vertex coefficient field the shader dots with the force: the SH field of eq. (7) (L^2 values) or the
-/// exact linear basis (4 values: tau0, tau_x, tau_y, tau_z; DESIGN.md).
+/// exact linear basis (4 values: tau0, tau_x, tau_y, tau_z; docs/design.md, The exact linear basis).
 enum class Basis { SphericalHarmonics, Linear };
 /// Where the coefficients live: vertex attributes (up to 36 coefficients), or a float texture read by gl_VertexID.
 enum class CoeffStorage { Auto, Attributes, Texture };

@@ -20,7 +20,7 @@
 namespace lungar::render {
 
 enum class DrawMode { Points, Mesh };
-/// PerEye: each eye's draw evaluates eq. (7) (the paper; measured 4.7 % faster on llvmpipe, so the default).
+/// PerEye: each eye's draw evaluates eq. (7) (the paper's way; measured faster, so the default: docs/measurements.md).
 /// DeformOnce: one transform-feedback pass writes the deformed points into a buffer, then both eyes draw it.
 enum class StereoStrategy { PerEye, DeformOnce };
 /// Where the drawn positions come from: eq. (7) in the shader, positions uploaded from the CPU
@@ -40,7 +40,8 @@ struct FrameInputs {
   glm::mat4 model{1.f};               ///< lung frame -> world (the registration)
   DrawMode mode = DrawMode::Points;
   PositionSource source = PositionSource::Shader;
-  StereoStrategy strategy = StereoStrategy::PerEye;  ///< for two eyes (one eye deforms in its draw); per-eye measured faster here
+  /// For two eyes (one eye deforms in its draw); per-eye is measured faster (docs/measurements.md).
+  StereoStrategy strategy = StereoStrategy::PerEye;
   bool overlay_rest = false;          ///< the rest shape in grey under the deformed lungs (the paper's Fig. 10)
   float point_size_px = 5.f;          ///< the paper: 5
   bool level_of_detail = true;        ///< draw count from the projected size (points mode)

@@ -1,5 +1,5 @@
 /// @file result.h
-/// @brief lungar's one error convention: a value or one error line, for every layer (DESIGN.md, "Contracts").
+/// @brief lungar's one error convention: a value or one error line, for every layer (docs/design.md, "Contracts").
 /// @ingroup base
 ///
 /// Bad input at a boundary (a file, a field, a device) is a value, not an exception: a function that can fail on

@@ -10,7 +10,6 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
-#include <thread>
 
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake_evaluate.h"
@@ -19,6 +18,7 @@
 #include "sim/force/gravity.h"
 #include "sim/mesh/lod_order.h"
 #include "sim/mesh/procedural_lungs.h"
+#include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
 #include "sim/transfer/stiffness.h"
 
@@ -51,8 +51,8 @@ Status fit_basis(LungWork& w, const BakeOptions& opt, int bands_solved) {
 }
 
 /// Everything one lung's bake computes; the evaluation reuses the factor and the double-precision fields.
-Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t offset, const BakeProgress& progress,
-                BakeReport& timing, std::mutex& timing_mutex) {
+Status bake_one(LungWork& w, const BakeOptions& opt, const Workers& workers, std::uint32_t offset,
+                const BakeProgress& progress, BakeReport& timing, std::mutex& timing_mutex) {
   const std::string who = "lung '" + w.name + "'";
   auto t0 = Clock::now();
   reorder_vertices(w.mesh, lod_order(w.mesh.positions));
@@ -66,6 +66,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
   const int c_solved = bands_solved * bands_solved;
   if (Status s = fit_basis(w, opt, bands_solved); !s) return s;
   const double map_s = seconds_since(t0);
+  check_cancel(workers);
 
   t0 = Clock::now();
   const Eigen::VectorXd youngs = youngs_modulus(w.mesh);
@@ -74,6 +75,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
   w.solver = std::make_unique<TransferSolver>(w.k);
   if (!w.solver->error().empty()) return fail(who + ": " + w.solver->error());
   const double factor_s = seconds_since(t0);
+  check_cancel(workers);
 
   // L^2 + 4 solves: T_lm = K^-1 (A o Y_lm) and tau = K^-1 (A o [1, x - c]).
   auto t1 = Clock::now();
@@ -82,7 +84,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
   rhs.col(c_solved) = w.areas;
   rhs.rightCols(3) = w.areas.asDiagonal() * w.offsets;
   if (progress) progress("solve", 0.0);
-  w.x = w.solver->solve(rhs, threads);
+  w.x = w.solver->solve(rhs, workers);
   const double solve_s = seconds_since(t1);
 
   // Force bases: the pressure's SH projections f0 (of 1) and f_k (of (x - c)_k); swept volumes v0 and v_k.
@@ -96,7 +98,7 @@ Status bake_one(LungWork& w, const BakeOptions& opt, int threads, std::uint32_t 
 
   auto t2 = Clock::now();
   if (opt.transfer_rows)
-    append_transfer_rows(w.k, w.areas, w.x.col(c_solved), opt.transfer_epsilon, threads, offset, w.rows, [&](std::size_t done) {
+    append_transfer_rows(w.k, w.areas, w.x.col(c_solved), opt.transfer_epsilon, workers, offset, w.rows, [&](std::size_t done) {
       if (progress) progress("transfer rows", static_cast<double>(done) / static_cast<double>(n));
     });
   std::lock_guard lock(timing_mutex);
@@ -266,7 +268,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   if (lungs.empty() || lungs.size() > 16) return fail("bake: expected 1 to 16 lungs, got " + std::to_string(lungs.size()));
   if (opt.bands < 1 || opt.bands > static_cast<std::uint32_t>(kMaxBands))
     return fail("bake: bands: expected 1 to 8, got " + std::to_string(opt.bands));
-  const int threads = opt.threads > 0 ? opt.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const Workers all{opt.threads, opt.cancel};
 
   std::mutex progress_mutex;
   BakeProgress serial = [&](std::string_view stage, double fraction) {
@@ -294,16 +296,10 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   BakeReport report;
   std::mutex timing_mutex;
   std::vector<Status> status(work.size());
-  const int per_lung = std::max(1, threads / static_cast<int>(work.size()));
-  {
-    std::vector<std::thread> pool;
-    for (std::size_t l = 0; l < work.size(); ++l) {
-      auto job = [&, l] { status[l] = bake_one(*work[l], opt, per_lung, offsets[l], serial, report, timing_mutex); };
-      if (threads > 1 && l + 1 < work.size()) pool.emplace_back(job);
-      else job();
-    }
-    for (auto& t : pool) t.join();
-  }
+  const Workers per_lung{std::max(1, thread_count(all) / static_cast<int>(work.size())), opt.cancel};
+  parallel_for(work.size(), all, [&](std::size_t l) {
+    status[l] = bake_one(*work[l], opt, per_lung, offsets[l], serial, report, timing_mutex);
+  });
   for (const Status& s : status)
     if (!s.ok()) return fail(s.error());
 
@@ -316,7 +312,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   report.bake_s = seconds_since(start);
   if (opt.evaluate) {
     const auto t = Clock::now();
-    evaluate_bake(work, a, opt, threads, serial, report);
+    evaluate_bake(work, a, opt, all, serial, report);
     report.evaluate_s = seconds_since(t);
   }
   out.report = std::move(report);

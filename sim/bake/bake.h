@@ -3,6 +3,7 @@
 ///        arrays, truncated rows) and the report that measures it against the exact eq. (1).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -45,6 +46,9 @@ struct BakeOptions {
   /// With evaluate and bands_sweep: the other maps the report measures beside `sphere.map` (one more set of
   /// L^2 solves each, no effect on the asset).
   std::vector<SphereMap> compare_maps = {SphereMap::radial, SphereMap::conformal};
+  /// When it turns true (lungar-bake's Ctrl-C), the bake stops at its next step and throws Cancelled
+  /// (sim/parallel/parallel_for.h).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 /// Called with a stage name ("factorise", "solve", "transfer rows", "evaluate") and that stage's fraction done;
@@ -119,7 +123,8 @@ struct BakeOutput {
 };
 
 /// Bakes 1 to 16 closed, outward lung surfaces. Fails with one line naming the lung when a lung cannot be
-/// baked (too few vertices for the bands, a singular stiffness).
+/// baked (too few vertices for the bands, a singular stiffness). Throws Cancelled once options.cancel is set, and
+/// passes on what a step throws (std::bad_alloc).
 Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& options, const BakeProgress& progress);
 
 /// The default demo asset in-process: procedural_lungs(nodes, seed) baked with `options`.

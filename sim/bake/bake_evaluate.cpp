@@ -7,11 +7,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
+#include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
 
 namespace lungar::sim {
@@ -152,8 +152,8 @@ void sweep_fit(const Eigen::MatrixXd& y, const Eigen::MatrixXd& gram, const Eige
 
 /// The bands sweep of one lung with its asset's map, then with each compared map (its own map, basis and L^2
 /// solves with the lung's factor, dropped once measured).
-std::vector<MapSweep> sweep_lung(const LungWork& w, const BakedLung& lung, const BakeOptions& opt, int threads,
-                                 const ExactEq1& exact, std::size_t l) {
+std::vector<MapSweep> sweep_lung(const LungWork& w, const BakedLung& lung, const BakeOptions& opt,
+                                 const Workers& workers, const ExactEq1& exact, std::size_t l) {
   const Eigen::MatrixXd weighted = w.areas.asDiagonal() * exact.pressures[l];
   const auto block = exact.d.middleRows(lung.first_vertex, lung.vertex_count);
   std::vector<MapSweep> out(1);
@@ -169,28 +169,22 @@ std::vector<MapSweep> sweep_lung(const LungWork& w, const BakedLung& lung, const
     s.figures = {map, other->folded, other->area_distortion, 0.0};
     const Eigen::MatrixXd y = sh_rows(other->u, kMaxBands);
     const Eigen::MatrixXd gram = y.transpose() * w.areas.asDiagonal() * y;
-    const Eigen::MatrixXd x = w.solver->solve(w.areas.asDiagonal() * y, threads);
+    const Eigen::MatrixXd x = w.solver->solve(w.areas.asDiagonal() * y, workers);
     sweep_fit(y, gram, x, weighted, exact.scales[l], block, s);
     out.push_back(std::move(s));
   }
   return out;
 }
 
-/// Runs sweep_lung on every lung (one thread each) and writes the sweeps and the per-map figures.
+/// Runs sweep_lung on every lung (the lungs in parallel, the threads shared out between them) and writes the
+/// sweeps and the per-map figures.
 void sweep_errors(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
-                  int threads, const ExactEq1& exact, BakeReport& report) {
+                  const Workers& workers, const ExactEq1& exact, BakeReport& report) {
   std::vector<std::vector<MapSweep>> sweeps(work.size());
-  const int per_lung = std::max(1, threads / static_cast<int>(work.size()));
-  {
-    std::vector<std::thread> pool;
-    for (std::size_t l = 1; l < work.size(); ++l) {
-      auto job = [&, l] { sweeps[l] = sweep_lung(*work[l], a.lungs[l], opt, per_lung, exact, l); };
-      if (threads > 1) pool.emplace_back(job);
-      else job();
-    }
-    sweeps[0] = sweep_lung(*work[0], a.lungs[0], opt, per_lung, exact, 0);
-    for (auto& t : pool) t.join();
-  }
+  const Workers per_lung{std::max(1, thread_count(workers) / static_cast<int>(work.size())), workers.cancel};
+  parallel_for(work.size(), workers, [&](std::size_t l) {
+    sweeps[l] = sweep_lung(*work[l], a.lungs[l], opt, per_lung, exact, l);
+  });
   const auto maps = sweeps.front().size();
   for (const auto& s : sweeps)
     if (s.size() != maps) return;  // a compared map failed on one lung only: no side-by-side figure for all
@@ -262,15 +256,17 @@ void physiology(const BakedAsset& a, BakeReport& report) {
 }  // namespace
 
 void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
-                   int threads, const BakeProgress& progress, BakeReport& report) {
+                   const Workers& workers, const BakeProgress& progress, BakeReport& report) {
   const std::vector<Eigen::Vector3d> dirs = report_directions();
   Eigen::MatrixXd g_mat(3, static_cast<Eigen::Index>(dirs.size()));
   for (std::size_t k = 0; k < dirs.size(); ++k) g_mat.col(static_cast<Eigen::Index>(k)) = dirs[k];
   const ExactEq1 exact = exact_eq1(work, a, opt, g_mat);
   if (progress) progress("evaluate", 0.2);
+  check_cancel(workers);
   float_errors(a, dirs, exact, report);
   if (progress) progress("evaluate", 0.4);
-  if (opt.bands_sweep) sweep_errors(work, a, opt, threads, exact, report);
+  if (opt.bands_sweep) sweep_errors(work, a, opt, workers, exact, report);
+  check_cancel(workers);
   if (progress) progress("evaluate", 0.9);
   physiology(a, report);
   report.evaluated = true;

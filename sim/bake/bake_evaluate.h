@@ -11,7 +11,9 @@
 
 namespace lungar::sim {
 
+/// Fills the report's figures; throws Cancelled when `workers` is cancelled.
 void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& asset,
-                   const BakeOptions& options, int threads, const BakeProgress& progress, BakeReport& report);
+                   const BakeOptions& options, const Workers& workers, const BakeProgress& progress,
+                   BakeReport& report);
 
 }  // namespace lungar::sim

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <thread>
 
 #include "config/base/atomic_file.h"
 #include "sim/asset/asset_io.h"
@@ -13,6 +12,7 @@
 #include "sim/bake_tool/report_json.h"
 #include "sim/bake_tool/surface_simplify.h"
 #include "sim/mesh/surface_distance.h"
+#include "sim/parallel/parallel_for.h"
 #include "sim/voxel/label_surface.h"
 #include "sim/voxel/voxelize.h"
 #include "sim/mesh/spherical_map.h"
@@ -29,26 +29,14 @@ std::vector<std::uint32_t> share_by_area(std::uint32_t total, const std::vector<
   return out;
 }
 
-/// Runs job(0 .. n-1), two at a time when there are threads to spare (each job is single-threaded).
-template <class Job>
-void for_each_lung(std::size_t n, int threads, const Job& job) {
-  std::vector<std::thread> pool;
-  for (std::size_t l = 1; l < n; ++l) {
-    if (threads != 1) pool.emplace_back(job, l);
-    else job(l);
-  }
-  if (n > 0) job(0);
-  for (auto& t : pool) t.join();
-}
-
 /// Simplifies `lung` to `target` vertices when it has more than 5 % over, and (with `measure`) how far it strays.
-Status simplify_lung(LungMesh& lung, std::uint32_t target, int threads, bool measure = true) {
+Status simplify_lung(LungMesh& lung, std::uint32_t target, const Workers& workers, bool measure = true) {
   if (lung.source.input_vertices == 0) lung.source.input_vertices = static_cast<std::uint32_t>(lung.mesh.positions.size());
   if (target == 0 || static_cast<double>(lung.mesh.positions.size()) <= 1.05 * target) return ok();
   lungar::Result<TriMesh> simple = simplify_surface(lung.mesh, target);
   if (!simple) return fail("lung '" + lung.name + "': " + simple.error());
   lung.source.simplified = true;
-  if (measure) lung.source.hausdorff_mm = hausdorff_mm(lung.mesh, *simple, threads);
+  if (measure) lung.source.hausdorff_mm = hausdorff_mm(lung.mesh, *simple, workers);
   lung.mesh = simple.take();
   return ok();
 }
@@ -73,7 +61,8 @@ Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const Bake
   std::vector<LungMesh> lungs(masks->size());
   std::vector<std::string> error(masks->size());
   if (progress) progress("surface", 0.0);
-  for_each_lung(masks->size(), cmd.options.threads, [&](std::size_t l) {
+  // The lungs in parallel, each on one thread.
+  parallel_for(masks->size(), Workers{cmd.options.threads, cmd.options.cancel}, [&](std::size_t l) {
     const LabelMask& m = (*masks)[l];
     lungar::Result<LabelSurface> s = label_surface(m.mask, target[l]);
     if (!s) {
@@ -85,7 +74,8 @@ Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const Bake
     lung.mesh = std::move(s->mesh);
     lung.source = {0, false, 0, true, false, 0, m.label.value, m.voxels, s->grid_mm, s->repair.components,
                    s->repair.removed_voxels, s->repair.filled_voxels, s->removed_ml, s->filled_ml};
-    if (Status st = simplify_lung(lung, target[l], 1); !st) error[l] = cmd.labelmap + ": " + st.error();
+    if (Status st = simplify_lung(lung, target[l], Workers{1, cmd.options.cancel}); !st)
+      error[l] = cmd.labelmap + ": " + st.error();
   });
   for (const std::string& e : error)
     if (!e.empty()) return fail(e);
@@ -145,18 +135,19 @@ Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgr
   const std::vector<std::uint32_t> target = share_by_area(cmd.nodes, areas);
   if (progress && cmd.nodes > 0) progress("simplify", 0.0);
   std::vector<Status> status(lungs.size());
-  const int threads = cmd.options.threads > 0 ? cmd.options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  const Workers workers{cmd.options.threads, cmd.options.cancel};
   for (std::size_t l = 0; l < lungs.size(); ++l) {
+    check_cancel(workers);
     const std::uint32_t want = cmd.nodes > 0 ? target[l] : 0;
     if (cmd.options.sphere.map == SphereMap::radial || euler_characteristic(lungs[l].mesh) == 2) {
-      status[l] = simplify_lung(lungs[l], want, std::max(1, threads));
+      status[l] = simplify_lung(lungs[l], want, workers);
       continue;
     }
     const TriMesh input = lungs[l].mesh;
     status[l] = rebuild_without_handles(lungs[l], want);
-    if (status[l]) status[l] = simplify_lung(lungs[l], want, std::max(1, threads), false);
+    if (status[l]) status[l] = simplify_lung(lungs[l], want, workers, false);
     if (!status[l]) continue;
-    lungs[l].source.hausdorff_mm = hausdorff_mm(input, lungs[l].mesh, std::max(1, threads));  // against the input
+    lungs[l].source.hausdorff_mm = hausdorff_mm(input, lungs[l].mesh, workers);  // against the input
     notes.push_back(rebuild_note(cmd.meshes.front(), lungs[l]));
   }
   for (const Status& s : status)
@@ -164,10 +155,9 @@ Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgr
   return imported;
 }
 
-}  // namespace
-
-Result<BakeReport> run_bake_command(const BakeCommand& cmd, const BakeProgress& progress,
-                                    std::vector<std::string>& notes) {
+/// run_bake_command without the catch of Cancelled.
+Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& progress,
+                                  std::vector<std::string>& notes) {
   if (cmd.out.empty()) return fail("--out: expected the path of the .lungbake file to write");
   const int inputs = int{cmd.procedural} + int{!cmd.meshes.empty()} + int{!cmd.labelmap.empty()};
   if (inputs != 1) return fail("expected one of --procedural, --mesh FILE or --labelmap FILE");
@@ -184,12 +174,24 @@ Result<BakeReport> run_bake_command(const BakeCommand& cmd, const BakeProgress& 
   }
   Result<BakeOutput> baked = bake_lungs(std::move(lungs), cmd.options, progress);
   if (!baked) return fail(source + ": " + baked.error());
+  check_cancel(Workers{0, cmd.options.cancel});  // the last chance to leave nothing behind
   if (Status s = write_asset(baked->asset, cmd.out); !s) return fail(s.error());
   if (!cmd.report_json.empty()) {
     const std::string text = report_json(baked->report, notes).dump(2) + "\n";
     if (Status s = write_file_atomically(cmd.report_json, text); !s) return fail(s.error());
   }
   return std::move(baked->report);
+}
+
+}  // namespace
+
+Result<BakeReport> run_bake_command(const BakeCommand& cmd, const BakeProgress& progress,
+                                    std::vector<std::string>& notes) {
+  try {
+    return bake_and_write(cmd, progress, notes);
+  } catch (const Cancelled&) {
+    return fail("interrupted; nothing was written");
+  }
 }
 
 }  // namespace lungar::sim

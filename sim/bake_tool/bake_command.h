@@ -32,7 +32,8 @@ struct BakeCommand {
 };
 
 /// Runs the bake; on any error nothing is left under `out` (or the report's path). `notes` collects repairs.
-/// `progress` also hears the import's stages ("label map", "surface", "simplify").
+/// `progress` also hears the import's stages ("label map", "surface", "simplify"). Once command.options.cancel is
+/// set, it stops at the next step and fails with "interrupted; nothing was written".
 Result<BakeReport> run_bake_command(const BakeCommand& command, const BakeProgress& progress,
                                     std::vector<std::string>& notes);
 

@@ -8,8 +8,9 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <thread>
 #include <vector>
+
+#include "sim/parallel/parallel_for.h"
 
 namespace lungar::sim {
 namespace {
@@ -113,24 +114,17 @@ class TriangleTree {
 };
 
 /// The largest distance from a vertex of `from` to the surface `to`.
-double one_sided(const TriMesh& from, const TriMesh& to, int threads) {
+double one_sided(const TriMesh& from, const TriMesh& to, const Workers& workers) {
   const TriangleTree tree(to);
-  std::vector<double> worst(static_cast<std::size_t>(std::max(1, threads)), 0.0);
-  auto work = [&](int w) {
-    for (std::size_t i = static_cast<std::size_t>(w); i < from.positions.size(); i += worst.size())
-      worst[static_cast<std::size_t>(w)] = std::max(worst[static_cast<std::size_t>(w)], tree.nearest_d2(from.positions[i]));
-  };
-  std::vector<std::thread> pool;
-  for (int w = 1; w < static_cast<int>(worst.size()); ++w) pool.emplace_back(work, w);
-  work(0);
-  for (auto& t : pool) t.join();
-  return std::sqrt(*std::max_element(worst.begin(), worst.end()));
+  std::vector<double> d2(from.positions.size(), 0.0);
+  parallel_for(d2.size(), workers, [&](std::size_t i) { d2[i] = tree.nearest_d2(from.positions[i]); });
+  return d2.empty() ? 0.0 : std::sqrt(*std::max_element(d2.begin(), d2.end()));
 }
 
 }  // namespace
 
-double hausdorff_mm(const TriMesh& a, const TriMesh& b, int threads) {
-  return std::max(one_sided(a, b, threads), one_sided(b, a, threads));
+double hausdorff_mm(const TriMesh& a, const TriMesh& b, const Workers& workers) {
+  return std::max(one_sided(a, b, workers), one_sided(b, a, workers));
 }
 
 }  // namespace lungar::sim

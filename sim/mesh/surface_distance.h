@@ -3,6 +3,7 @@
 #pragma once
 
 #include "sim/mesh/tri_mesh.h"
+#include "sim/parallel/parallel_for.h"
 
 namespace lungar::sim {
 
@@ -10,6 +11,6 @@ namespace lungar::sim {
 /// nearest point of the other's triangles (exact point-to-triangle distances through a bounding-volume tree).
 /// Sampling at vertices can miss a farther point inside a triangle; for the fine inputs lungar simplifies,
 /// whose vertices are denser than the simplified triangles, that is where the far points are.
-double hausdorff_mm(const TriMesh& a, const TriMesh& b, int threads);
+double hausdorff_mm(const TriMesh& a, const TriMesh& b, const Workers& workers);
 
 }  // namespace lungar::sim

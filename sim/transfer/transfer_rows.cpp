@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
+#include <memory>
+
+#include "sim/parallel/parallel_for.h"
 
 namespace lungar::sim {
 namespace {
@@ -94,29 +96,25 @@ class PushSolver {
 }  // namespace
 
 void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas,
-                          const Eigen::VectorXd& row_weight, double epsilon, int threads, std::uint32_t offset,
-                          TransferRows& out, const std::function<void(std::size_t)>& progress) {
+                          const Eigen::VectorXd& row_weight, double epsilon, const Workers& workers,
+                          std::uint32_t offset, TransferRows& out, const std::function<void(std::size_t)>& progress) {
   const auto rows = static_cast<std::uint32_t>(k.rows());
-  const int workers = std::clamp(threads, 1, 64);
-  // Contiguous blocks keep each thread's output in row order; many more blocks than threads balance load.
-  const std::uint32_t block_rows = std::max<std::uint32_t>(256, rows / (workers * 16) + 1);
+  const int threads = std::clamp(thread_count(workers), 1, 64);
+  // Blocks of consecutive rows, each with its own output, joined in row order below; many more blocks than
+  // threads balance the load.
+  const std::uint32_t block_rows = std::max<std::uint32_t>(256, rows / (threads * 16) + 1);
   const std::uint32_t block_count = (rows + block_rows - 1) / block_rows;
   std::vector<RowBlock> blocks(block_count);
-  std::atomic<std::uint32_t> next{0};
+  std::vector<std::unique_ptr<PushSolver>> solvers(static_cast<std::size_t>(threads));  // one per worker slot
   std::atomic<std::size_t> done{0};
-  auto work = [&](bool reporter) {
-    PushSolver solver(k, areas, row_weight);
-    for (std::uint32_t b; (b = next.fetch_add(1)) < block_count;) {
-      const std::uint32_t first = b * block_rows, last = std::min(rows, first + block_rows);
-      for (std::uint32_t i = first; i < last; ++i) solver.row(i, epsilon, offset, blocks[b]);
-      done += last - first;
-      if (reporter && progress) progress(done.load());
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
+  parallel_for(block_count, Workers{threads, workers.cancel}, [&](std::size_t b) {
+    std::unique_ptr<PushSolver>& solver = solvers[static_cast<std::size_t>(worker_slot())];
+    if (!solver) solver = std::make_unique<PushSolver>(k, areas, row_weight);
+    const auto first = static_cast<std::uint32_t>(b * block_rows), last = std::min(rows, first + block_rows);
+    for (std::uint32_t i = first; i < last; ++i) solver->row(i, epsilon, offset, blocks[b]);
+    done += last - first;
+    if (progress && on_calling_thread()) progress(done.load());
+  });
   if (progress) progress(rows);
 
   if (out.row_ptr.empty()) out.row_ptr.push_back(0);

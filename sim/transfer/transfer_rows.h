@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "sim/parallel/parallel_for.h"
+
 namespace lungar::sim {
 
 /// Default truncation: entries below this fraction of the diagonal T_II are dropped.
@@ -31,9 +33,9 @@ struct TransferRows {
 
 /// Appends the truncated rows of K^-1 (one lung, vertices offset .. offset + K.rows()) to `out`.
 /// `progress(rows_done)` is called now and then from the calling thread only.
-/// `areas` are A_J and `row_weight` the exact tau0 (both local to the lung).
+/// `areas` are A_J and `row_weight` the exact tau0 (both local to the lung). Throws Cancelled when cancelled.
 void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas,
-                          const Eigen::VectorXd& row_weight, double epsilon, int threads, std::uint32_t offset,
-                          TransferRows& out, const std::function<void(std::size_t)>& progress);
+                          const Eigen::VectorXd& row_weight, double epsilon, const Workers& workers,
+                          std::uint32_t offset, TransferRows& out, const std::function<void(std::size_t)>& progress);
 
 }  // namespace lungar::sim

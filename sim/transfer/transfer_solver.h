@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "config/base/result.h"
+#include "sim/parallel/parallel_for.h"
 
 namespace lungar::sim {
 
@@ -15,8 +16,8 @@ class TransferSolver {
   explicit TransferSolver(const Eigen::SparseMatrix<double>& k);
   const std::string& error() const { return error_; }
 
-  /// X = K^-1 B, columns solved in parallel on `threads` threads (the factor is shared, read-only).
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& b, int threads) const;
+  /// X = K^-1 B, columns solved in parallel (the factor is shared, read-only); throws Cancelled when cancelled.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b, const Workers& workers) const;
 
  private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;

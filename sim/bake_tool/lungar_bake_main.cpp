@@ -2,7 +2,9 @@
 /// @brief `lungar-bake`: a lung mesh (or the procedural pair) -> a `.lungbake` asset and a JSON report.
 #include <CLI/CLI.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <unistd.h>
@@ -14,6 +16,27 @@
 namespace {
 
 void log_line(const std::string& message) { lungar::log_line("lungar-bake", message); }
+
+/// Set by the first Ctrl-C (SIGINT) or SIGTERM: the bake stops at its next step and writes nothing.
+std::atomic<bool> g_interrupted{false};
+std::atomic<int> g_signal{0};
+
+void on_interrupt(int signal) {
+  g_signal.store(signal);
+  g_interrupted.store(true);
+  constexpr char kLine[] = "\nlungar-bake: interrupted; stopping at the next step (again to end at once)\n";
+  [[maybe_unused]] const auto written = ::write(STDERR_FILENO, kLine, sizeof kLine - 1);  // stdio is not signal-safe
+}
+
+/// The first SIGINT or SIGTERM cancels the bake; the handler then resets, so a second one ends the process.
+void catch_interrupts() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
 
 /// A one-line bar redrawn in place; only on a terminal.
 class ProgressBar {
@@ -71,8 +94,8 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
                                                 "the surface is not star-shaped; conformal: one-to-one on genus-0 surfaces)")
       ->transform(CLI::CheckedTransformer(lungar::sim::kSphereMapNames.map(), CLI::ignore_case))
       ->capture_default_str();
-  app.add_option("--threads", cmd.options.threads, "worker threads (0: all)")->check(CLI::Range(0, 256))
-      ->capture_default_str();
+  app.add_option("--threads", cmd.options.threads, "worker threads, at most one a core (0: all)")
+      ->check(CLI::Range(0, 256))->capture_default_str();
   app.add_option("--report-json", cmd.report_json, "write the bake report here");
   app.add_flag("!--no-transfer-rows", cmd.options.transfer_rows,
                "leave out the explicit transfer rows (the CPU eq. (1) baseline, --deform cpu1)");
@@ -117,6 +140,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  cmd.options.cancel = &g_interrupted;
+  catch_interrupts();
   ProgressBar bar(::isatty(STDERR_FILENO) == 1);
   std::vector<std::string> notes;
   log_line(cmd.procedural  ? "baking the procedural pair, seed " + std::to_string(cmd.seed)
@@ -134,7 +159,7 @@ int main(int argc, char** argv) {
   for (const std::string& n : notes) log_line("note: " + n);
   if (!result) {
     std::fprintf(stderr, "lungar-bake: %s\n", result.error().c_str());
-    return 1;
+    return g_interrupted.load() ? 128 + g_signal.load() : 1;  // the shell's code for a process a signal ended
   }
   log_summary(cmd, *result);
   return 0;

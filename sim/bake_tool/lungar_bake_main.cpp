@@ -6,7 +6,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "config/base/log_line.h"
@@ -67,6 +69,21 @@ class ProgressBar {
   int percent_ = -1;
 };
 
+/// An option that takes one of `names` (in any case), its help like the other options': TEXT:{a,b}=default.
+/// (CLI11's CheckedTransformer on the enum map prints "ENUM:value in {a->,b-> } OR {, }=".)
+template <class E, std::size_t N>
+void add_enum_option(CLI::App& app, const std::string& flag, E& value, const lungar::EnumNames<E, N>& names,
+                     const std::string& help) {
+  std::vector<std::string> choices;
+  for (const auto& entry : names.entries) choices.emplace_back(entry.second);
+  const auto set = [&value, &names](const std::string& text) {
+    if (const std::optional<E> parsed = names.parse(text)) value = *parsed;
+  };
+  app.add_option_function<std::string>(flag, set, help)
+      ->transform(CLI::IsMember(choices, CLI::ignore_case))  // a transform: the input becomes the table's spelling
+      ->default_str(names.name(value));
+}
+
 /// The command line: every option of `cmd` on `app`.
 void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
   app.set_version_flag("--version", std::string("lungar-bake ") + LUNGAR_VERSION);
@@ -90,10 +107,9 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
       ->check(CLI::Range(1u, 8u))->capture_default_str();
   app.add_option("--units", cmd.units, "units of the mesh files")->check(CLI::IsMember({"mm", "cm", "m"}))
       ->capture_default_str();
-  app.add_option("--map", cmd.options.sphere.map, "the sphere map of the SH fit (radial: the paper's, folds where "
-                                                "the surface is not star-shaped; conformal: one-to-one on genus-0 surfaces)")
-      ->transform(CLI::CheckedTransformer(lungar::sim::kSphereMapNames.map(), CLI::ignore_case))
-      ->capture_default_str();
+  add_enum_option(app, "--map", cmd.options.sphere.map, lungar::sim::kSphereMapNames,
+                  "the sphere map of the SH fit (radial: the paper's, folds where the surface is not star-shaped; "
+                  "conformal: one-to-one on genus-0 surfaces)");
   app.add_option("--threads", cmd.options.threads, "worker threads, at most one a core (0: all)")
       ->check(CLI::Range(0, 256))->capture_default_str();
   app.add_option("--report-json", cmd.report_json, "write the bake report here");

@@ -28,9 +28,9 @@ namespace {
 
 const std::string kBake = std::string(LUNGAR_BINARY_DIR) + "/sim/lungar-bake";
 
-/// Runs lungar-bake with `args`, stderr to `err`; returns the exit status.
-int run(const std::string& args, const std::string& err) {
-  const int status = std::system((kBake + " " + args + " >/dev/null 2>" + err).c_str());
+/// Runs lungar-bake with `args`, stderr to `err` (and stdout to `out`); returns the exit status.
+int run(const std::string& args, const std::string& err, const std::string& out = "/dev/null") {
+  const int status = std::system((kBake + " " + args + " >" + out + " 2>" + err).c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -41,8 +41,22 @@ std::string slurp(const std::string& path) {
 
 TEST(BakeCli, HelpAndVersion) {
   test::TempDir dir;
-  EXPECT_EQ(run("--help", dir.file("err")), 0);
+  EXPECT_EQ(run("--help", dir.file("err"), dir.file("help")), 0);
+  const std::string help = slurp(dir.file("help"));
+  EXPECT_EQ(help.find("->"), std::string::npos) << "CLI11's enum-map garbage:\n" << help;
+  EXPECT_NE(help.find("--map TEXT:{radial,conformal}=conformal"), std::string::npos) << help;
   EXPECT_EQ(run("--version", dir.file("err")), 0);
+}
+
+TEST(BakeCli, MapNamesAnyCaseAndRefusesOthers) {
+  test::TempDir dir;
+  const std::string args = "--procedural --nodes 600 --no-evaluate --no-transfer-rows --out " + dir.file("r.lungbake") +
+                           " --report-json " + dir.file("r.json") + " --map ";
+  ASSERT_EQ(run(args + "RADIAL", dir.file("err")), 0) << slurp(dir.file("err"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("r.json")))["map"], "radial");
+  EXPECT_EQ(run(args + "spherical", dir.file("err")), 2);
+  EXPECT_NE(slurp(dir.file("err")).find("spherical not in {radial,conformal}"), std::string::npos)
+      << slurp(dir.file("err"));
 }
 
 /// Starts lungar-bake with `args` (stdout to /dev/null, stderr to `err`); its process id.

@@ -3,8 +3,8 @@
 ///
 /// All lungs share one vertex array; each lung owns a contiguous range of it. Per vertex the asset holds the
 /// rest position, the outward unit normal, the lung it belongs to, and the SH coefficients of its transfer-matrix
-/// row, T^I_lm = sum_J T(I,J) A_J Y_lm(u_J) (DESIGN.md, eq. 7), in mm per (unit force SH) — the vertex shader
-/// computes D = dV * sum_lm T^I_lm f_lm and moves the vertex along its normal.
+/// row, T^I_lm = sum_J T(I,J) A_J Y_lm(u_J) (docs/design.md, "SH deformation (eq. 7)"), in mm per (unit force
+/// SH) — the vertex shader computes D = dV * sum_lm T^I_lm f_lm and moves the vertex along its normal.
 ///
 /// Vertices are stored in level-of-detail order: every prefix of a lung's range is an even subsample of its
 /// surface (render/ draws prefixes).
@@ -31,12 +31,12 @@ struct BakedLung {
   std::uint32_t index_count = 0;
   double rest_volume_ml = 0;             ///< enclosed volume at rest
 
-  /// Exact orientation mode (DESIGN.md): unnormalised force SH f(g) = p0 f0 + gamma sum_k g_k f_k, and the swept
-  /// volume of the displacement it produces, V(g) = p0 v0 + gamma g.v (mm^3); the runtime force is f(g) * 1000/V(g),
-  /// so that the displacement is in mm per mL of volume change.
+  /// Exact orientation mode (docs/design.md, "Orientation"): unnormalised force SH f(g) = p0 f0 + gamma sum_k
+  /// g_k f_k, and the swept volume of the displacement it produces, V(g) = p0 v0 + gamma g.v (mm^3); the runtime
+  /// force is f(g) * 1000/V(g), so that the displacement is in mm per mL of volume change.
   std::vector<float> force_const;                 ///< f0, L^2 values
   std::array<std::vector<float>, 3> force_grad;   ///< f_x, f_y, f_z, L^2 values each
-  /// Issue 3: v0 and v are the first-order swept volumes sum_I A_I D_I scaled by one factor per lung (about
+  /// v0 and v are the first-order swept volumes sum_I A_I D_I scaled by one factor per lung (about
   /// 1.03) so that, upright, dV = 500 mL changes the enclosed volume by exactly 500 mL (secant at the tidal
   /// volume, which absorbs the surface-curvature term the first-order sum leaves out).
   double volume_const = 0;                        ///< v0
@@ -46,7 +46,7 @@ struct BakedLung {
   /// upright patient; index [axis * kPaperAngles + angle][lm].
   std::vector<std::vector<float>> paper_force;
 
-  /// Added by issue 3: this lung's share of the pair's rest volume (the shares sum to 1). The breathing
+  /// This lung's share of the pair's rest volume (the shares sum to 1). The breathing
   /// driver's dV(t) is the pair's volume change; each lung sweeps dV * volume_share, so the runtime multiplies
   /// this lung's force SH by dV(t) * volume_share (sim/deform does so for the CPU paths).
   double volume_share = 1.0;
@@ -67,7 +67,7 @@ struct BakedAsset {
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
 
-  /// Added by issue 3, optional (empty when not baked): explicit rows of T truncated below
+  /// Optional (empty when not baked): explicit rows of T truncated below
   /// transfer_epsilon * T_II, in compressed sparse row form over global vertex indices, mm per unit force,
   /// for the paper's CPU eq. (1) baseline (sim/deform/deform_eq1.h). A row only holds its own lung's vertices.
   std::vector<std::uint32_t> transfer_row_ptr;  ///< vertex_count + 1 offsets into transfer_cols/vals

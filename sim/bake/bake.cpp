@@ -29,7 +29,7 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// Maps the lung onto the sphere and sets up the SH fit's basis Y and Gram matrix G = sum_J A_J Y Y^T (the
-/// area-weighted least squares of DESIGN.md), which must resolve the asset's bands.
+/// area-weighted least squares of docs/design.md, "SH deformation (eq. 7)"), which must resolve the asset's bands.
 Status fit_basis(LungWork& w, const BakeOptions& opt, int bands_solved) {
   const std::string who = "lung '" + w.name + "'";
   lungar::Result<SphereMapResult> mapped = map_to_sphere(w.mesh, w.centre, opt.sphere);

@@ -27,9 +27,8 @@ inline constexpr std::uint32_t kBakeRevision = 3;
 inline constexpr double kTidalVolumeMl = 500.0;
 
 /// SH bands of a bake unless asked otherwise: 6 (36 coefficients), where the paper used 4 (16). On real lungs
-/// eq. (7) needs 36 to stay under 1 % (shared right lung, conformal map: 1.21 % at 16, 0.96 % at 25, 0.79 % at 36;
-/// both lungs of the shared label map at 100k nodes: 1.37 / 1.16 / 0.84 %); 36 values are 9 vec4 vertex
-/// attributes, within GLES 3.0's 16 (render/shaders/deform.vert).
+/// eq. (7) needs 36 to stay under 1 % (the bands sweeps in docs/bake-measurements.md); 36 values are 9 vec4
+/// vertex attributes, within GLES 3.0's 16 (render/shaders/deform.vert).
 inline constexpr std::uint32_t kDefaultBands = 6;
 
 struct BakeOptions {
@@ -91,7 +90,8 @@ struct LungReport {
   LungSource source;                                     ///< the import's figures (simplification, label map)
 };
 
-/// The figures of issue 3's report (see sim/bake_tool/report_json.cpp for the JSON keys).
+/// What a bake measures of its asset: size, timings, the sphere map, eq. (7), the linear basis and the truncated
+/// rows against the exact eq. (1), and physiology (see sim/bake_tool/report_json.cpp for the JSON keys).
 struct BakeReport {
   std::uint32_t nodes = 0, triangles = 0, lungs = 0, bands = 0, coefficients = 0;
   double transfer_nnz_per_row_mean = 0;

@@ -1,5 +1,6 @@
 /// @file report_json.h
-/// @brief The bake report as JSON (snake_case keys with unit suffixes, DESIGN.md) and its atomic write.
+/// @brief The bake report as JSON (snake_case keys with unit suffixes, docs/design.md "Contracts") and its
+///        atomic write.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,7 +11,8 @@
 
 namespace lungar::sim {
 
-/// Every key issue 3 lists, plus timings per stage, the lungs' names, and the repair notes.
+/// Every figure of BakeReport (the asset's size, the map, the accuracy against the exact eq. (1), physiology),
+/// plus timings per stage, the lungs' names, and the repair notes.
 nlohmann::json report_json(const BakeReport& report, const std::vector<std::string>& notes);
 
 

@@ -1,6 +1,7 @@
 /// @file force_sh.h
 /// @brief The applied force's SH coefficients per lung for the current orientation, in both modes:
-///        exact (linear in g, DESIGN.md) and the paper's eq. (8)-(9) interpolation. Cheap, no allocation.
+///        exact (linear in g, docs/design.md "Applied force") and the paper's eq. (8)-(9) interpolation. Cheap,
+///        no allocation.
 #pragma once
 
 #include <Eigen/Core>

@@ -19,7 +19,7 @@ struct Edge {
   std::uint32_t t0 = 0, t1 = 0;
 };
 
-/// The edges of a closed surface, each once, with their cotangent weights (DESIGN.md's lung surfaces are closed,
+/// The edges of a closed surface, each once, with their cotangent weights (the bake's lung surfaces are closed,
 /// so every edge is seen from exactly two triangles).
 std::vector<Edge> cotangent_edges(const TriMesh& mesh) {
   std::vector<Edge> half;

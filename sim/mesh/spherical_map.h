@@ -1,5 +1,6 @@
 /// @file spherical_map.h
-/// @brief Where each vertex of a lung surface sits on the unit sphere, for the SH fit of eq. (7) (DESIGN.md).
+/// @brief Where each vertex of a lung surface sits on the unit sphere, for the SH fit of eq. (7) (docs/design.md,
+///        "SH deformation (eq. 7)").
 ///
 /// The paper's radial map u = (x - c)/|x - c| folds wherever the surface is not star-shaped about c (a real
 /// lung's hilar face), so the force is not a function on the sphere there. The conformal map here is the
@@ -8,8 +9,8 @@
 /// rest into that triangle in the plane, lift it by inverse stereographic projection, then a Moebius
 /// transformation puts the surface's area centroid at the sphere's centre. Positive edge weights and a convex
 /// boundary make the plane embedding one-to-one (Tutte, Floater), and both lifts preserve orientation, so no
-/// triangle folds (counted, to be sure). Measured on the real right lung (65,754 nodes): eq. (7) error 1.21 %
-/// at 16 coefficients against the radial map's 1.76 % and 7,844 folded triangles.
+/// triangle folds (counted, to be sure). On a real lung it fits eq. (7) better than the radial map, which folds
+/// its hilar face (docs/bake-measurements.md).
 #pragma once
 
 #include <Eigen/Core>

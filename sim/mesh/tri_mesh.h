@@ -31,8 +31,8 @@ struct LungMesh {
   LungSource source;             ///< filled by lungar-bake's import; the report carries it
 };
 
-/// Per-vertex geometry used by the bake (DESIGN.md: areas are a third of the incident triangles' areas,
-/// normals are area-weighted and unit).
+/// Per-vertex geometry used by the bake (docs/design.md, "Transfer matrix": areas are a third of the incident
+/// triangles' areas, normals are area-weighted and unit).
 struct VertexGeometry {
   std::vector<double> areas;                 ///< A_I, mm^2
   std::vector<Eigen::Vector3d> normals;      ///< n_I, unit, outward for a positively oriented mesh

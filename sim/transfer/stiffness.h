@@ -1,5 +1,6 @@
 /// @file stiffness.h
-/// @brief The stiffness K = L_E + diag(kappa) of stage 2 (DESIGN.md): its inverse is the transfer matrix T.
+/// @brief The stiffness K = L_E + diag(kappa) of stage 2 (docs/design.md, "Transfer matrix"): its inverse is the
+///        transfer matrix T.
 #pragma once
 
 #include <Eigen/Core>

@@ -3,11 +3,11 @@
 ///
 /// The paper shares each unit force with the neighbours until equilibrium; that is a local iterative solve of
 /// K t = e_I. We run it as a residual push (Gauss-Southwell-like, FIFO) confined to where the residual still
-/// matters, then drop entries below epsilon * T_II. With the chest-wall tether as weak as DESIGN.md's, most of
-/// a row's weight lies in a long, faint tail that truncation drops; so each kept row is rescaled so that its
-/// weight sum_J T(I,J) A_J equals the exact tau0_I = (K^-1 A)_I from the factorised solve, which makes uniform
-/// pressure exact and keeps eq. (1)'s error a few per cent instead of tens. Rows are independent, so they run
-/// on many threads.
+/// matters, then drop entries below epsilon * T_II. With the chest-wall tether as weak as docs/design.md's
+/// ("Transfer matrix"), most of a row's weight lies in a long, faint tail that truncation drops; so each kept row
+/// is rescaled so that its weight sum_J T(I,J) A_J equals the exact tau0_I = (K^-1 A)_I from the factorised
+/// solve, which makes uniform pressure exact and keeps eq. (1)'s error a few per cent instead of tens. Rows are
+/// independent, so they run on many threads.
 #pragma once
 
 #include <cstdint>

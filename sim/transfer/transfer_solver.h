@@ -1,5 +1,6 @@
 /// @file transfer_solver.h
-/// @brief One sparse factorisation of K, then any number of exact solves T b = K^-1 b (DESIGN.md, eq. 7).
+/// @brief One sparse factorisation of K, then any number of exact solves T b = K^-1 b (docs/design.md,
+///        "Transfer matrix").
 #pragma once
 
 #include <Eigen/Core>

@@ -15,9 +15,7 @@
 #include <set>
 
 namespace lungar::sim::itk_io {
-namespace {
 
-/// Registers the three formats lungar reads (no other ITK format is linked).
 void register_formats() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -26,6 +24,8 @@ void register_formats() {
     itk::MetaImageIOFactory::RegisterOneFactory();
   });
 }
+
+namespace {
 
 /// ITK's exception text on one line, without its source location.
 std::string itk_reason(const itk::ExceptionObject& e) {

@@ -32,6 +32,10 @@ struct LabelImage {
   bool more_values = false;
 };
 
+/// Registers ITK's readers and writers of the three formats lungar reads (no other ITK format is linked); once per
+/// process, from any thread. read_label_image calls it; so do the tests that write label maps.
+void register_formats();
+
 /// Reads `path` (NRRD, NIfTI, MetaImage) and crops every value in `values`. Errors name the file and the field.
 lungar::Result<LabelImage> read_label_image(const std::string& path, const std::vector<std::int64_t>& values);
 

@@ -5,25 +5,14 @@
 #include <itkImage.h>
 #include <itkImageFileReader.h>
 #include <itkImageFileWriter.h>
-#include <itkMetaImageIOFactory.h>
-#include <itkNiftiImageIOFactory.h>
-#include <itkNrrdImageIOFactory.h>
 
-#include <mutex>
+#include "sim/bake_tool/itk_label_reader.h"
 
 namespace lungar::sim::test {
 namespace {
 
 using Image3 = itk::Image<std::uint16_t, 3>;
-
-void register_formats() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    itk::NrrdImageIOFactory::RegisterOneFactory();
-    itk::NiftiImageIOFactory::RegisterOneFactory();
-    itk::MetaImageIOFactory::RegisterOneFactory();
-  });
-}
+using itk_io::register_formats;  // the bake tool's: the same three formats
 
 template <class Image>
 bool write(const std::string& path, const typename Image::Pointer& image) {

@@ -29,9 +29,10 @@ constexpr std::size_t kHeadSize = 4 * 4 + 8 + 4 * 8;
 
 struct Bytes {
   std::string data;
-  template <class T>
-  void put(const T& v) {
-    data.append(reinterpret_cast<const char*>(&v), sizeof v);
+  /// Appends the values' bytes in order, each as its own type (a record's fixed part in one line).
+  template <class... T>
+  void put(const T&... values) {
+    (data.append(reinterpret_cast<const char*>(&values), sizeof values), ...);
   }
   template <class T>
   void put_array(const T* p, std::size_t n) {
@@ -142,6 +143,11 @@ struct Cursor {
     at += sizeof v;
     return v;
   }
+  /// Reads the fields in order, each in its own type (a record's fixed part in one line).
+  template <class... T>
+  void get_all(T&... fields) {
+    ((fields = get<T>()), ...);
+  }
   template <class T>
   void get_array(std::vector<T>& v, std::size_t n) {
     v.resize(n);
@@ -232,15 +238,9 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   out.write(kAssetMagic, sizeof kAssetMagic);
   out.write(&kAssetVersion, sizeof kAssetVersion);
   Bytes head;
-  head.put(a.bands);
-  head.put(a.vertex_count());
-  head.put(static_cast<std::uint32_t>(a.triangles.size() / 3));
-  head.put(static_cast<std::uint32_t>(a.lungs.size()));
-  head.put(static_cast<std::uint64_t>(a.transfer_vals.size()));
-  head.put(a.p0);
-  head.put(a.gamma_per_mm);
-  head.put(a.decay_length_mm);
-  head.put(a.transfer_epsilon);
+  head.put(a.bands, a.vertex_count(), static_cast<std::uint32_t>(a.triangles.size() / 3),
+           static_cast<std::uint32_t>(a.lungs.size()), static_cast<std::uint64_t>(a.transfer_vals.size()), a.p0,
+           a.gamma_per_mm, a.decay_length_mm, a.transfer_epsilon);
   write_section(out, "HEAD", head.data);
   Bytes lungs;
   for (const BakedLung& l : a.lungs) {
@@ -248,13 +248,8 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
     lungs.put(name_length);
     lungs.data.append(l.name.data(), name_length);
     lungs.put_array(l.centre.data(), 3);
-    lungs.put(l.first_vertex);
-    lungs.put(l.vertex_count);
-    lungs.put(l.first_index);
-    lungs.put(l.index_count);
-    lungs.put(l.rest_volume_ml);
-    lungs.put(l.volume_share);
-    lungs.put(l.volume_const);
+    lungs.put(l.first_vertex, l.vertex_count, l.first_index, l.index_count, l.rest_volume_ml, l.volume_share,
+              l.volume_const);
     lungs.put_array(l.volume_grad.data(), 3);
     lungs.put_array(l.force_const.data(), c);
     for (const auto& f : l.force_grad) lungs.put_array(f.data(), c);
@@ -298,15 +293,8 @@ Result<HeadCounts> read_head(Reader& r, const std::string& path, BakedAsset& a) 
   if (!r.section("HEAD", kHeadSize, payload)) return fail(r.error());
   HeadCounts h;
   Cursor cur{payload};
-  a.bands = cur.get<std::uint32_t>();
-  h.vertices = cur.get<std::uint32_t>();
-  h.triangles = cur.get<std::uint32_t>();
-  h.lungs = cur.get<std::uint32_t>();
-  h.nnz = cur.get<std::uint64_t>();
-  a.p0 = cur.get<double>();
-  a.gamma_per_mm = cur.get<double>();
-  a.decay_length_mm = cur.get<double>();
-  a.transfer_epsilon = cur.get<double>();
+  cur.get_all(a.bands, h.vertices, h.triangles, h.lungs, h.nnz, a.p0, a.gamma_per_mm, a.decay_length_mm,
+              a.transfer_epsilon);
   if (a.bands < 1 || a.bands > 8) {
     return fail(path + ": header field 'bands': expected 1 to 8, found " + std::to_string(a.bands));
   }
@@ -340,13 +328,8 @@ Result<BakedLung> read_lung(Cursor& lc, const std::string& payload, std::uint64_
   lung.name.assign(payload.data() + lc.at, name_length);
   lc.at += name_length;
   for (float& x : lung.centre) x = lc.get<float>();
-  lung.first_vertex = lc.get<std::uint32_t>();
-  lung.vertex_count = lc.get<std::uint32_t>();
-  lung.first_index = lc.get<std::uint32_t>();
-  lung.index_count = lc.get<std::uint32_t>();
-  lung.rest_volume_ml = lc.get<double>();
-  lung.volume_share = lc.get<double>();
-  lung.volume_const = lc.get<double>();
+  lc.get_all(lung.first_vertex, lung.vertex_count, lung.first_index, lung.index_count, lung.rest_volume_ml,
+             lung.volume_share, lung.volume_const);
   for (double& x : lung.volume_grad) x = lc.get<double>();
   lc.get_array(lung.force_const, c);
   for (auto& f : lung.force_grad) lc.get_array(f, c);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "config/base/enum_names.h"
+
 namespace lungar::sim {
 
 namespace {
@@ -62,29 +64,23 @@ Difference max_difference(const Pattern& a, const Pattern& b) {
   return d;
 }
 
+/// The names of the log lines and error messages ("change at 11 s: ...").
+constexpr EnumNames<BreathPhase, 4> kBreathPhaseNames{{{{BreathPhase::Inspiration, "inspiration"},
+                                                       {BreathPhase::Expiration, "expiration"},
+                                                       {BreathPhase::Hold, "hold"},
+                                                       {BreathPhase::Apnoea, "apnoea"}}}};
+constexpr EnumNames<EventKind, 6> kEventKindNames{{{{EventKind::Change, "change"},
+                                                   {EventKind::Sigh, "sigh"},
+                                                   {EventKind::HoldStart, "hold start"},
+                                                   {EventKind::HoldEnd, "hold end"},
+                                                   {EventKind::ApnoeaStart, "apnoea start"},
+                                                   {EventKind::ApnoeaEnd, "apnoea end"}}}};
+
 }  // namespace
 
-const char* to_string(BreathPhase phase) {
-  switch (phase) {
-    case BreathPhase::Inspiration: return "inspiration";
-    case BreathPhase::Expiration: return "expiration";
-    case BreathPhase::Hold: return "hold";
-    case BreathPhase::Apnoea: return "apnoea";
-  }
-  return "?";
-}
+const char* to_string(BreathPhase phase) { return kBreathPhaseNames.name(phase); }
 
-const char* to_string(EventKind kind) {
-  switch (kind) {
-    case EventKind::Change: return "change";
-    case EventKind::Sigh: return "sigh";
-    case EventKind::HoldStart: return "hold start";
-    case EventKind::HoldEnd: return "hold end";
-    case EventKind::ApnoeaStart: return "apnoea start";
-    case EventKind::ApnoeaEnd: return "apnoea end";
-  }
-  return "?";
-}
+const char* to_string(EventKind kind) { return kEventKindNames.name(kind); }
 
 BreathingDriver::BreathingDriver(Segment first) { segments_.push_back(first); }
 

@@ -2,6 +2,8 @@
 /// @brief A small procedural bake shared by the sim tests (baked once per test binary), and temp folders.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <random>
 #include <string>
@@ -44,5 +46,16 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// Checks a refused bake: `r` failed with one line, and `dir` holds nothing named `out_name` or starting with it
+/// (the "<out_name>.partial" a write leaves until it commits).
+template <class R>
+void expect_refused_cleanly(const R& r, const TempDir& dir, const std::string& out_name) {
+  EXPECT_FALSE(r) << "expected a refusal";
+  if (r) return;
+  EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("")))
+    EXPECT_NE(entry.path().filename().string().rfind(out_name, 0), 0u) << entry.path() << " is left";
+}
 
 }  // namespace lungar::sim::test

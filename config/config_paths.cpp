@@ -5,7 +5,6 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "config/settings_load.h"
 
 namespace lungar::config {
 
@@ -73,11 +72,6 @@ ConfigChoice choose_config(const std::string& cli_path, const XdgDirs& d) {
   const std::string no_user = "no " + (user.empty() ? std::string("$HOME") : user);
   if (is_file(system)) return {system, "the system's; " + no_user};
   return {"", "no --config, " + no_user + ", no " + system};
-}
-
-Result<Settings> load_chosen_settings(const ConfigChoice& choice) {
-  if (choice.path.empty()) return Settings{};
-  return load_settings(choice.path);
 }
 
 }  // namespace lungar::config

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "config/settings.h"
 
 namespace lungar::config {
 
@@ -44,8 +43,5 @@ struct ConfigChoice {
 /// `--config` (when not empty) wins even when it does not exist (loading then names it); otherwise the first of the
 /// user's and the system's file that exists; otherwise the defaults.
 ConfigChoice choose_config(const std::string& cli_path, const XdgDirs& d);
-
-/// The chosen file loaded over the defaults (or the defaults); the error names the file, the line and the key.
-Result<Settings> load_chosen_settings(const ConfigChoice& choice);
 
 }  // namespace lungar::config

@@ -7,7 +7,7 @@
 
 #include "config/base/result.h"
 #include "config/scenario.h"
-#include "config/settings.h"
+#include "config/breathing_settings.h"
 
 namespace lungar::config {
 

@@ -1,23 +1,24 @@
 /// @file settings_load.h
-/// @brief Loads settings from TOML over the built-in defaults, rejecting anything it does not understand.
+/// @brief Reads [trackers] from TOML over the built-in defaults, rejecting anything it does not understand.
 #pragma once
 
-#include <optional>
 #include <string>
 
 #include "config/base/result.h"
 #include "config/settings.h"
+#include "config/toml_section.h"
 
 namespace lungar::config {
 
-/// Reads `path` and overlays it on the defaults; an error is one line: "FILE:LINE: key 'a.b': expected ..., got ...". Unknown keys, wrong types, out-of-range values and
-/// syntax errors are errors; nothing is clamped.
-Result<Settings> load_settings(const std::string& path);
+/// Reads [trackers] and its tables over `t`; throws ConfigError "FILE:LINE: key 'trackers.a': expected ..., got
+/// ...". Unknown keys, wrong types, out-of-range values and inconsistent layouts are errors; nothing is clamped.
+void read_tracker_settings(TomlSection s, TrackerSettings& t);
 
-/// The same from TOML text; `name` stands for the file in messages.
-Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name);
+/// The [trackers] table of a TOML document (a .trk header's layout) over the defaults; `name` stands for the file.
+/// The document's other tables belong to other readers and are not looked at.
+Result<TrackerSettings> load_tracker_settings_from_string(const std::string& toml_text, const std::string& name);
 
-/// A one-paragraph human summary of the settings, for start-up logs.
-std::string summarize(const Settings& s);
+/// The same from a config file (lungar-trk reads a profile's tracker part).
+Result<TrackerSettings> load_tracker_settings(const std::string& path);
 
 }  // namespace lungar::config

@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "config/base/enum_names.h"
 #include "config/base/result.h"
 #include "render/frame_target.h"
 #include "render/lung_drawable.h"
@@ -26,6 +27,13 @@ enum class StereoStrategy { PerEye, DeformOnce };
 /// Where the drawn positions come from: eq. (7) in the shader, positions uploaded from the CPU
 /// (LungDrawable::upload_positions), or the rest shape.
 enum class PositionSource { Shader, Uploaded, Rest };
+
+/// The names TOML, the command line and logs give them.
+inline constexpr EnumNames<DrawMode, 2> kDrawModeNames{{{{DrawMode::Points, "points"}, {DrawMode::Mesh, "mesh"}}}};
+inline constexpr EnumNames<StereoStrategy, 2> kStereoStrategyNames{
+    {{{StereoStrategy::PerEye, "per_eye"}, {StereoStrategy::DeformOnce, "deform_once"}}}};
+inline const char* to_string(DrawMode v) { return kDrawModeNames.name(v); }
+inline const char* to_string(StereoStrategy v) { return kStereoStrategyNames.name(v); }
 
 /// Per lung, per frame.
 struct LungFrame {

@@ -86,9 +86,7 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
 }
 
 Result<config::TrackerSettings> layout_from_toml(const std::string& toml, const std::string& name) {
-  auto r = config::load_settings_from_string(toml, name);
-  if (!r) return fail(r.error());
-  return r->trackers;
+  return config::load_tracker_settings_from_string(toml, name);
 }
 
 }  // namespace lungar::drivers

@@ -1,6 +1,6 @@
 /// @file layout_toml.h
 /// @brief Writes the report-layout part of the tracker settings back as TOML, for .trk headers: a log names
-/// the layout its bytes were made with, and load_settings_from_string() reads it back.
+/// the layout its bytes were made with, and load_tracker_settings_from_string() reads it back.
 #pragma once
 
 #include <string>

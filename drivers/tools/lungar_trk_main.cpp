@@ -36,9 +36,7 @@ int die(const std::string& line) {
 Result<config::TrackerSettings> settings_for(const TrkLog& log, const std::string& file,
                                              const std::string& config_path) {
   if (!config_path.empty()) {
-    auto r = config::load_settings(config_path);
-    if (!r) return r.with_context("");
-    return r->trackers;
+    return config::load_tracker_settings(config_path);
   }
   if (log.header.layout_toml.empty()) {
     return fail(file + ": the log does not describe its report layout: expected --config FILE.toml");
@@ -153,9 +151,9 @@ int synth(const std::string& out, const std::string& config_path, const std::str
           double rate_hz, double noise_mm, double dropout) {
   config::TrackerSettings t;
   if (!config_path.empty()) {
-    auto r = config::load_settings(config_path);
+    auto r = config::load_tracker_settings(config_path);
     if (!r) return die(r.error());
-    t = r->trackers;
+    t = *r;
   }
   if (!trajectory.empty()) t.mock_trajectory = trajectory;
   if (rate_hz > 0) t.mock_rate_hz = rate_hz;

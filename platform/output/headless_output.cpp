@@ -8,12 +8,14 @@
 
 namespace lungar::platform {
 
-HeadlessOutput::HeadlessOutput(std::shared_ptr<EglContext> context, const config::HmdSettings& hmd,
+HeadlessOutput::HeadlessOutput(std::shared_ptr<EglContext> context, const HmdSettings& hmd,
                                render::FrameTarget target, double max_fps)
-    : context_(std::move(context)), target_(std::move(target)), views_(hmd, target_->width(), target_->height()),
+    : context_(std::move(context)),
+      target_(std::move(target)),
+      views_(hmd, target_->width(), target_->height()),
       pacer_(max_fps) {}
 
-Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::HmdSettings& hmd,
+Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const HmdSettings& hmd,
                                                                std::shared_ptr<EglContext> context, double max_fps) {
   if (!context) {
     auto made = EglContext::headless();
@@ -25,7 +27,27 @@ Result<std::unique_ptr<HeadlessOutput>> HeadlessOutput::create(const config::Hmd
   const auto [w, h] = HmdViews::target_size(hmd);
   auto target = render::FrameTarget::create(w, h);
   if (!target) return target.with_context("display: ");
-  return std::unique_ptr<HeadlessOutput>(new HeadlessOutput(std::move(context), hmd, target.take(), max_fps));
+  std::unique_ptr<HeadlessOutput> output(new HeadlessOutput(std::move(context), hmd, target.take(), max_fps));
+  if (hmd.lens.enabled) {
+    auto lens = LensPass::create(hmd, w, h);
+    if (!lens) return lens.with_context("");
+    output->lens_.emplace(lens.take());
+  }
+  return output;
+}
+
+void HeadlessOutput::bind_target(std::size_t) {
+  if (lens_) {
+    lens_->bind_scene();
+  } else {
+    target_->bind();
+  }
+}
+
+Status HeadlessOutput::finish_scene(const FrameViews& views) {
+  if (!lens_) return ok();
+  target_->bind();
+  return lens_->apply(views);
 }
 
 std::string HeadlessOutput::describe() const {

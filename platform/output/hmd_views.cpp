@@ -4,13 +4,13 @@
 
 namespace lungar::platform {
 
-render::HmdGeometry hmd_geometry(const config::HmdSettings& s) {
+render::HmdGeometry hmd_geometry(const HmdSettings& s) {
   return {s.ipd_mm,       s.fov_inner_deg, s.fov_outer_deg,  s.fov_up_deg, s.fov_down_deg,
           s.eye_width_px, s.eye_height_px, s.near_mm,        s.far_mm};
 }
 
-std::array<int, 2> HmdViews::target_size(const config::HmdSettings& hmd) {
-  const int eyes = hmd.view == config::View::Stereo ? 2 : 1;
+std::array<int, 2> HmdViews::target_size(const HmdSettings& hmd) {
+  const int eyes = hmd.view == View::Stereo ? 2 : 1;
   return {eyes * hmd.eye_width_px, hmd.eye_height_px};
 }
 

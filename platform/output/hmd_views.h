@@ -7,25 +7,25 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "config/settings.h"
+#include "platform/output/output_settings.h"
 #include "platform/runtime/frame_output.h"
 #include "render/stereo_view.h"
 
 namespace lungar::platform {
 
 /// The [hmd] settings as render/ takes them (render/ does not read config/).
-render::HmdGeometry hmd_geometry(const config::HmdSettings& hmd);
+render::HmdGeometry hmd_geometry(const HmdSettings& hmd);
 
 class HmdViews {
  public:
-  HmdViews(const config::HmdSettings& hmd, int target_width_px, int target_height_px)
-      : stereo_(hmd.view == config::View::Stereo), view_(hmd_geometry(hmd)), width_(target_width_px),
+  HmdViews(const HmdSettings& hmd, int target_width_px, int target_height_px)
+      : stereo_(hmd.view == View::Stereo), view_(hmd_geometry(hmd)), width_(target_width_px),
         height_(target_height_px) {}
 
   /// Stereo: left eye in the left half of the target, right eye in the right half; mono: the whole target.
   const FrameViews& views(const glm::mat4& head_to_world);
   /// The size a headless target needs: two eyes side by side, or one eye.
-  static std::array<int, 2> target_size(const config::HmdSettings& hmd);
+  static std::array<int, 2> target_size(const HmdSettings& hmd);
 
  private:
   bool stereo_;

@@ -22,32 +22,31 @@ constexpr int kMaxExitFrames = 40;
 
 }  // namespace
 
-openxr::OpenXrOptions openxr_options(const config::Settings& s) {
+openxr::OpenXrOptions openxr_options(const DisplaySettings& display, const HmdSettings& hmd,
+                                     const glm::mat4& world_from_space) {
   openxr::OpenXrOptions o;
-  o.space = s.display.openxr.reference_space == config::XrSpace::Stage ? XR_REFERENCE_SPACE_TYPE_STAGE
-                                                                      : XR_REFERENCE_SPACE_TYPE_LOCAL;
-  o.near_mm = static_cast<float>(s.hmd.near_mm);
-  o.far_mm = static_cast<float>(s.hmd.far_mm);
-  drivers::PoseSample space;  // the reference space's pose in the tracker world, as a tracked pose would be
-  space.position_mm = s.registration.xr_space_translation_mm;
-  space.orientation_wxyz = s.registration.xr_space_rotation_wxyz;
-  o.world_from_space = to_glm(pose_isometry(space));
+  o.space = display.openxr.reference_space == XrReferenceSpace::Stage ? XR_REFERENCE_SPACE_TYPE_STAGE
+                                                             : XR_REFERENCE_SPACE_TYPE_LOCAL;
+  o.near_mm = static_cast<float>(hmd.near_mm);
+  o.far_mm = static_cast<float>(hmd.far_mm);
+  o.world_from_space = world_from_space;
   return o;
 }
 
-Result<std::unique_ptr<OpenXrFrameOutput>> OpenXrFrameOutput::create(const config::Settings& s,
+Result<std::unique_ptr<OpenXrFrameOutput>> OpenXrFrameOutput::create(const DisplaySettings& display,
+                                                                     const HmdSettings& hmd,
+                                                                     const glm::mat4& world_from_space,
                                                                      std::function<void(const std::string&)> log) {
   auto context = EglContext::headless();
   if (!context) return context.with_context("display: ");
-  std::unique_ptr<OpenXrFrameOutput> out(
-      new OpenXrFrameOutput(context.take(), s.display.openxr.head == config::XrHead::Tracker));
-  openxr::OpenXrOptions options = openxr_options(s);
+  std::unique_ptr<OpenXrFrameOutput> out(new OpenXrFrameOutput(context.take(), display.openxr.head == XrHead::Tracker));
+  openxr::OpenXrOptions options = openxr_options(display, hmd, world_from_space);
   options.log = log;
   auto xr = openxr::OpenXrOutput::create(*out->context_, options);
   if (!xr) return xr.with_context("display.output = \"openxr\": ");
   out->xr_ = xr.take();
   out->views_.shared_target = false;
-  if (s.hmd.lens.enabled && log) log("hmd.lens: not used with OpenXR (the runtime corrects its own lenses)");
+  if (hmd.lens.enabled && log) log("hmd.lens: not used with OpenXR (the runtime corrects its own lenses)");
   return out;
 }
 

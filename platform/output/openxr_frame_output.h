@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "config/settings.h"
+#include "platform/output/output_settings.h"
 #include "platform/egl/egl_context.h"
 #include "platform/openxr/openxr_output.h"
 #include "platform/runtime/frame_output.h"
@@ -19,13 +19,16 @@
 namespace lungar::platform {
 
 /// The OpenXR options the settings give (reference space, clip planes, the reference space's registration).
-openxr::OpenXrOptions openxr_options(const config::Settings& settings);
+openxr::OpenXrOptions openxr_options(const DisplaySettings& display, const HmdSettings& hmd,
+                                     const glm::mat4& world_from_space);
 
 class OpenXrFrameOutput final : public FrameOutput {
  public:
   /// A surfaceless GLES 3 context handed to the runtime; the session, its swapchains. `log` hears the session's
   /// lines (state changes, reconnections).
-  static Result<std::unique_ptr<OpenXrFrameOutput>> create(const config::Settings& settings,
+  /// `world_from_space`: the reference space's pose in the tracker world ([registration] xr_space_*).
+  static Result<std::unique_ptr<OpenXrFrameOutput>> create(const DisplaySettings& display, const HmdSettings& hmd,
+                                                           const glm::mat4& world_from_space,
                                                            std::function<void(const std::string&)> log);
   /// Asks the runtime to end the session and waits (a little) for EXITING: a clean goodbye.
   ~OpenXrFrameOutput() override;

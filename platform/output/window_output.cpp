@@ -8,9 +8,9 @@
 
 namespace lungar::platform {
 
-Result<std::unique_ptr<WindowOutput>> WindowOutput::create(const config::DisplaySettings& d,
-                                                           const config::HmdSettings& hmd) {
-  const bool fullscreen = d.output == config::Output::Fullscreen;
+Result<std::unique_ptr<WindowOutput>> WindowOutput::create(const DisplaySettings& d,
+                                                           const HmdSettings& hmd) {
+  const bool fullscreen = d.output == Output::Fullscreen;
   const auto [eyes_width, eyes_height] = HmdViews::target_size(hmd);
   WindowOptions w;
   w.x_px = d.x_px;
@@ -25,7 +25,14 @@ Result<std::unique_ptr<WindowOutput>> WindowOutput::create(const config::Display
     // The field to fix: a named output that is not there, or no window at all.
     return context.with_context(fullscreen && !w.output.empty() ? "display.x11_output: " : "display: ");
   }
-  return std::unique_ptr<WindowOutput>(new WindowOutput(context.take(), hmd, d.max_fps));
+  std::unique_ptr<WindowOutput> output(new WindowOutput(context.take(), hmd, d.max_fps));
+  if (hmd.lens.enabled) {
+    const auto [w, h] = output->target_size();
+    auto lens = LensPass::create(hmd, w, h);
+    if (!lens) return lens.with_context("");
+    output->lens_.emplace(lens.take());
+  }
+  return output;
 }
 
 std::string WindowOutput::describe() const {
@@ -33,13 +40,27 @@ std::string WindowOutput::describe() const {
          std::to_string(context_->height()) + ")";
 }
 
-void WindowOutput::bind_target(std::size_t) {
+void WindowOutput::bind_window() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, context_->width(), context_->height());
 }
 
+void WindowOutput::bind_target(std::size_t) {
+  if (lens_) {
+    lens_->bind_scene();
+  } else {
+    bind_window();
+  }
+}
+
+Status WindowOutput::finish_scene(const FrameViews& views) {
+  if (!lens_) return ok();
+  bind_window();
+  return lens_->apply(views);
+}
+
 Status WindowOutput::snapshot(const std::string& png_path) {
-  bind_target(0);  // the back buffer, before the swap
+  bind_window();  // the back buffer, before the swap
   return render::snapshot_png(png_path, 0, 0, context_->width(), context_->height());
 }
 

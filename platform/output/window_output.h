@@ -5,11 +5,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
-#include "config/settings.h"
+#include "platform/output/output_settings.h"
 #include "platform/egl/egl_context.h"
 #include "platform/output/frame_pacer.h"
 #include "platform/output/hmd_views.h"
+#include "platform/output/lens_pass.h"
 #include "platform/runtime/frame_output.h"
 
 namespace lungar::platform {
@@ -17,8 +19,8 @@ namespace lungar::platform {
 class WindowOutput final : public FrameOutput {
  public:
   /// Opens the window (display.output window or fullscreen) and makes its context current.
-  static Result<std::unique_ptr<WindowOutput>> create(const config::DisplaySettings& display,
-                                                      const config::HmdSettings& hmd);
+  static Result<std::unique_ptr<WindowOutput>> create(const DisplaySettings& display,
+                                                      const HmdSettings& hmd);
 
   std::string describe() const override;
   bool poll_events() override { return context_->process_events(); }
@@ -28,14 +30,17 @@ class WindowOutput final : public FrameOutput {
   }
   const FrameViews& views(const glm::mat4& head_to_world) override { return views_.views(head_to_world); }
   void bind_target(std::size_t) override;
+  Status finish_scene(const FrameViews& views) override;
   std::array<int, 2> target_size() const override { return {context_->width(), context_->height()}; }
   Status end_frame() override { return context_->swap_buffers(); }
   Status snapshot(const std::string& png_path) override;
 
  private:
-  WindowOutput(std::unique_ptr<EglContext> context, const config::HmdSettings& hmd, double max_fps)
+  WindowOutput(std::unique_ptr<EglContext> context, const HmdSettings& hmd, double max_fps)
       : context_(std::move(context)), views_(hmd, context_->width(), context_->height()), pacer_(max_fps) {}
+  void bind_window();
   std::unique_ptr<EglContext> context_;
+  std::optional<LensPass> lens_;  ///< with hmd.lens.enabled: the HMD's lenses, corrected here
   HmdViews views_;
   FramePacer pacer_;
 };

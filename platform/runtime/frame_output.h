@@ -50,6 +50,12 @@ class FrameOutput {
   virtual const FrameViews& views(const glm::mat4& head_to_world) = 0;
   /// Binds target `i` as the draw framebuffer (see FrameViews::shared_target).
   virtual void bind_target(std::size_t i) = 0;
+  /// The scene of this frame is drawn, the overlays are not: an output with a lens pass warps the scene into its
+  /// own framebuffer now, and leaves that bound.
+  virtual Status finish_scene(const FrameViews& views) {
+    (void)views;
+    return ok();
+  }
   /// Width and height of target 0 in pixels.
   virtual std::array<int, 2> target_size() const = 0;
   /// Hands the frame over: swap, finish, or xrEndFrame.

@@ -25,7 +25,7 @@ class FrameStats {
   const LogHistogram& frame_ms() const { return frame_ms_; }
   const LogHistogram& pose_age_ms() const { return pose_age_ms_; }
 
-  /// The frame keys of the stats JSON (DESIGN.md: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
+  /// The frame keys of the stats JSON (docs/design.md, Contracts: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
   /// frame_ms_p99, frame_ms_mean, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max, and gravity_lung_first,
   /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame).
   nlohmann::ordered_json to_json() const;

@@ -4,12 +4,13 @@
 /// @ingroup platform
 #pragma once
 
+#include <array>
 #include <span>
 
 #include <Eigen/Geometry>
 
-#include "config/settings.h"
 #include "sim/asset/baked_asset.h"
+#include "sim/force/force_sh.h"
 
 namespace lungar::platform {
 
@@ -19,12 +20,13 @@ inline Eigen::Isometry3d lung_to_world(const Eigen::Isometry3d& patient_to_world
   return patient_to_world * registration;
 }
 
-/// Model -> patient-sensor transform from the config's [registration].
-Eigen::Isometry3d registration_isometry(const config::RegistrationSettings& r);
+/// Model -> patient-sensor transform from a registration's translation (mm) and unit quaternion (w, x, y, z).
+Eigen::Isometry3d registration_isometry(const std::array<double, 3>& translation_mm,
+                                        const std::array<double, 4>& rotation_wxyz);
 
 /// Force SH of every lung (lungs x L^2, lung-major) for the lung frame's orientation in the world; allocates
 /// nothing.
-void patient_force_sh(const sim::BakedAsset& asset, config::OrientationMode mode,
-                      const Eigen::Quaterniond& lung_in_world, std::span<float> force_out);
+void patient_force_sh(const sim::BakedAsset& asset, sim::ForceMode mode, const Eigen::Quaterniond& lung_in_world,
+                      std::span<float> force_out);
 
 }  // namespace lungar::platform

@@ -1,13 +1,11 @@
 /// @file runtime.cpp
-/// @brief The frame, as DESIGN.md's five steps, and what they need sized once.
+/// @brief The frame, as docs/design.md's five steps ("One frame"), and what they need sized once.
 #include "platform/runtime/runtime.h"
 
 #include <GLES3/gl3.h>
 
 #include <cstdio>
 
-#include "drivers/mock/mock_trajectory.h"
-#include "platform/output/hmd_views.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
 #include "sim/deform/deform_eq7.h"
@@ -22,9 +20,6 @@ using drivers::Role;
 
 constexpr std::int64_t kStatusLinePeriodNs = 250'000'000;  // the status line changes four times a second
 
-/// A pose to use before a source has delivered one: the mock's static scene (patient ahead, head in front).
-PoseSample fallback_pose(Role role) { return drivers::mock_pose("static", role, 0.0).value_or(PoseSample{}); }
-
 /// The head sensor looks along its +y with +z up (drivers/mock, the HID layouts); the renderer's head frame is
 /// OpenGL's camera (+y up, looking down -z): a +90 degree turn about x takes one to the other.
 Eigen::Isometry3d head_to_world(const PoseSample& head, const std::array<double, 3>& eye_offset_mm) {
@@ -34,12 +29,15 @@ Eigen::Isometry3d head_to_world(const PoseSample& head, const std::array<double,
   return m;
 }
 
-render::PositionSource position_source(config::Deform d) {
+render::PositionSource position_source(Deform d) {
   switch (d) {
-    case config::Deform::Gpu: return render::PositionSource::Shader;
-    case config::Deform::None: return render::PositionSource::Rest;
-    case config::Deform::Cpu7:
-    case config::Deform::Cpu1: return render::PositionSource::Uploaded;
+    case Deform::Gpu:
+      return render::PositionSource::Shader;
+    case Deform::None:
+      return render::PositionSource::Rest;
+    case Deform::Cpu7:
+    case Deform::Cpu1:
+      return render::PositionSource::Uploaded;
   }
   return render::PositionSource::Shader;
 }
@@ -48,58 +46,35 @@ double ms_between(std::int64_t from_ns, std::int64_t to_ns) { return static_cast
 
 }  // namespace
 
-Runtime::Runtime(const config::Settings& settings, RuntimeParts parts)
-    : settings_(settings), parts_(std::move(parts)), asset_(parts_.scene->asset()) {}
+Runtime::Runtime(const RuntimeConfig& config, RuntimeParts parts)
+    : config_(config), parts_(std::move(parts)), asset_(parts_.scene->asset()) {}
 
-Result<std::unique_ptr<Runtime>> Runtime::create(const config::Settings& s, RuntimeParts parts) {
+Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, RuntimeParts parts) {
   const sim::BakedAsset& asset = parts.scene->asset();
-  if (s.render.deform == config::Deform::Cpu1 && !asset.has_transfer_rows()) {
+  if (config.deform == Deform::Cpu1 && !asset.has_transfer_rows()) {
     return fail(parts.scene->name() + ": --deform cpu1 expected an asset baked with explicit transfer rows, got none");
   }
-  if (s.render.mode == config::RenderMode::Mesh && !parts.scene->drawable().has_triangles()) {
+  if (config.mode == render::DrawMode::Mesh && !parts.scene->drawable().has_triangles()) {
     return fail(parts.scene->name() + ": mesh mode expected an asset with triangles, got none");
   }
-  std::unique_ptr<Runtime> r(new Runtime(s, std::move(parts)));
-  r->registration_ = registration_isometry(s.registration);
-  r->max_ahead_ns_ = static_cast<std::int64_t>(s.hmd.prediction_max_ms * 1e6);
+  std::unique_ptr<Runtime> r(new Runtime(config, std::move(parts)));
+  r->max_ahead_ns_ = static_cast<std::int64_t>(config.prediction_max_ms * 1e6);
   const std::uint32_t c = asset.coefficients();
   r->force_.assign(asset.lungs.size() * c, 0.f);
-  r->source_ = position_source(s.render.deform);
+  r->source_ = position_source(config.deform);
   if (r->source_ == render::PositionSource::Uploaded) r->cpu_positions_.assign(asset.positions.size(), 0.f);
-  if (s.render.deform == config::Deform::Cpu1) r->eq1_.emplace(asset);
+  if (config.deform == Deform::Cpu1) r->eq1_.emplace(asset);
   r->lung_frames_.resize(asset.lungs.size());
   for (std::size_t l = 0; l < r->lung_frames_.size(); ++l) {
     r->lung_frames_[l].force = std::span<const float>(r->force_.data() + l * c, c);
     // LPS: +x is the patient's left, so the lung whose centre has the larger x is the left one.
-    r->lung_frames_[l].color = to_glm(asset.lungs[l].centre[0] >= 0 ? s.render.color_left : s.render.color_right);
+    r->lung_frames_[l].color = asset.lungs[l].centre[0] >= 0 ? config.color_left : config.color_right;
   }
-  if (s.render.hud) r->hud_.emplace();
-  if (s.hmd.lens.enabled) {
-    if (Status lens = r->prepare_lens(); !lens) return lens.with_context("lens distortion: ");
-  }
-  r->last_patient_ = fallback_pose(Role::Patient);
-  r->last_head_ = fallback_pose(Role::Head);
+  if (config.hud) r->hud_.emplace();
+  r->last_patient_ = config.initial_patient;
+  r->last_head_ = config.initial_head;
   r->previous_submit_ns_ = r->parts_.clock();
   return r;
-}
-
-/// The lens pass draws the scene undistorted into its own target, then pre-distorted into the output's.
-Status Runtime::prepare_lens() {
-  const auto [w, h] = parts_.output->target_size();
-  auto scene = render::FrameTarget::create(w, h);
-  if (!scene) return scene.with_context("");
-  auto pass = render::LensDistortion::create();
-  if (!pass) return pass.with_context("");
-  lens_scene_.emplace(scene.take());
-  lens_.emplace(pass.take());
-  for (int c = 0; c < 3; ++c) {
-    lens_params_.k1[c] = static_cast<float>(settings_.hmd.lens.k1[c]);
-    lens_params_.k2[c] = static_cast<float>(settings_.hmd.lens.k2[c]);
-  }
-  const render::HmdGeometry hmd = hmd_geometry(settings_.hmd);
-  lens_centres_ = {render::lens_centre(hmd, true), render::lens_centre(hmd, false)};
-  if (settings_.hmd.view == config::View::Mono) lens_centres_[0] = {0.5f, 0.5f};
-  return ok();
 }
 
 Status Runtime::frame() { return draw_frame(nullptr); }
@@ -111,7 +86,7 @@ bool Runtime::keep_running() {
   return !(frames_ > 0 && parts_.poses->finished());
 }
 
-/// DESIGN.md's "One frame". The final frame (a snapshot) is drawn the same way but not recorded.
+/// docs/design.md, "One frame". The final frame (a snapshot) is drawn the same way but not recorded.
 Status Runtime::draw_frame(const std::string* snapshot_png) {
   Result<FrameTiming> timing = parts_.output->begin_frame(parts_.clock());
   if (!timing) return timing.with_context("output: ");
@@ -120,9 +95,9 @@ Status Runtime::draw_frame(const std::string* snapshot_png) {
       timing->display_ns != 0 ? timing->display_ns : now + static_cast<std::int64_t>(frame_estimate_ms_ * 1e6);
   FrameState state;
   state.now_ns = now;
-  state.breath = breathe(now);                                  // 1. t -> P(t) -> V(t) -> dV(t)
-  force_sh(now, state);                                         // 2. patient pose -> g in the lung frame -> f_lm
-  const FrameViews& views = head_views(now, display_ns);        // 3. head pose at display time -> eye views
+  state.breath = breathe(now);                            // 1. t -> P(t) -> V(t) -> dV(t)
+  force_sh(now, state);                                   // 2. patient pose -> g in the lung frame -> f_lm
+  const FrameViews& views = head_views(now, display_ns);  // 3. head pose at display time -> eye views
   if (timing->should_render) {
     if (Status drawn = deform_and_draw(state, views); !drawn) return drawn;  // 4. dV * f_lm -> shader -> points
   }
@@ -130,7 +105,7 @@ Status Runtime::draw_frame(const std::string* snapshot_png) {
     if (Status shot = parts_.output->snapshot(*snapshot_png); !shot) return shot.with_context("snapshot: ");
     return parts_.output->end_frame();
   }
-  return present_and_record(state);                               // 5. swap or finish; timing and pose age
+  return present_and_record(state);  // 5. swap or finish; timing and pose age
 }
 
 sim::BreathingSample Runtime::breathe(std::int64_t now_ns) const { return parts_.breathing->at(now_ns); }
@@ -138,18 +113,18 @@ sim::BreathingSample Runtime::breathe(std::int64_t now_ns) const { return parts_
 void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
   const PoseSample patient = parts_.poses->latest(Role::Patient, now_ns);
   if (patient.valid()) last_patient_ = patient;
-  const Eigen::Isometry3d lung = lung_to_world(pose_isometry(last_patient_), registration_);
+  const Eigen::Isometry3d lung = lung_to_world(pose_isometry(last_patient_), config_.registration);
   state.patient = last_patient_;
   state.lung_in_world = Eigen::Quaterniond(lung.rotation()).normalized();
   state.lung_origin_mm = lung.translation();
-  patient_force_sh(asset_, settings_.sim.orientation_mode, state.lung_in_world, force_);
+  patient_force_sh(asset_, config_.orientation, state.lung_in_world, force_);
 }
 
 const FrameViews& Runtime::head_views(std::int64_t now_ns, std::int64_t display_ns) {
   const PoseSample head = parts_.poses->predicted(Role::Head, display_ns, max_ahead_ns_);
   if (head.valid()) last_head_ = head;
   measured_head_ = parts_.poses->latest(Role::Head, now_ns);  // its arrival dates the pose age
-  return parts_.output->views(to_glm(head_to_world(last_head_, settings_.hmd.head_to_eye_mm)));
+  return parts_.output->views(to_glm(head_to_world(last_head_, config_.head_to_eye_mm)));
 }
 
 Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views) {
@@ -168,7 +143,7 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
 
 /// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
 void Runtime::deform_on_cpu(const FrameState& state) {
-  if (settings_.render.deform == config::Deform::Cpu7) {
+  if (config_.deform == Deform::Cpu7) {
     sim::deform_eq7(asset_, force_, state.breath.dv_ml, cpu_positions_);
   } else {
     eq1_->deform(sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml, cpu_positions_);
@@ -176,49 +151,33 @@ void Runtime::deform_on_cpu(const FrameState& state) {
 }
 
 render::FrameInputs Runtime::frame_inputs(const FrameState& state, const FrameViews& views) const {
-  const config::RenderSettings& r = settings_.render;
   render::FrameInputs in;
   in.lungs = lung_frames_;
   in.eyes = views.span();
-  in.model = to_glm(lung_to_world(pose_isometry(state.patient), registration_));
-  in.mode = r.mode == config::RenderMode::Mesh ? render::DrawMode::Mesh : render::DrawMode::Points;
+  in.model = to_glm(lung_to_world(pose_isometry(state.patient), config_.registration));
+  in.mode = config_.mode;
   in.source = source_;
-  in.strategy = r.stereo_strategy == config::StereoStrategy::PerEye ? render::StereoStrategy::PerEye
-                                                                    : render::StereoStrategy::DeformOnce;
-  in.overlay_rest = r.overlay_rest;
-  in.point_size_px = static_cast<float>(r.point_size_px);
-  in.level_of_detail = r.lod;
-  in.background = to_glm(r.background);
+  in.strategy = config_.stereo_strategy;
+  in.overlay_rest = config_.overlay_rest;
+  in.point_size_px = config_.point_size_px;
+  in.level_of_detail = config_.level_of_detail;
+  in.background = config_.background;
   return in;
 }
 
-/// Side-by-side views are drawn in one call (through the lens pass when there is one); views with their own
-/// targets one by one.
+/// Side-by-side views are drawn in one call, views with their own targets one by one; then the output finishes
+/// the scene (an output with a lens pass warps it) before the status line goes on top.
 Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& views) {
   render::Renderer& renderer = parts_.scene->renderer();
   render::LungDrawable& drawable = parts_.scene->drawable();
-  if (!views.shared_target) {
-    render::FrameInputs one = in;
-    for (std::size_t i = 0; i < views.count; ++i) {
-      parts_.output->bind_target(i);
-      one.eyes = std::span<const render::EyeView>(&views.eyes[i], 1);
-      if (Status drawn = renderer.draw(drawable, one, &last_draw_); !drawn) return drawn.with_context("draw: ");
-    }
-    return ok();
+  render::FrameInputs one = in;
+  const std::size_t calls = views.shared_target ? 1 : views.count;
+  for (std::size_t i = 0; i < calls; ++i) {
+    parts_.output->bind_target(i);
+    if (!views.shared_target) one.eyes = std::span<const render::EyeView>(&views.eyes[i], 1);
+    if (Status drawn = renderer.draw(drawable, one, &last_draw_); !drawn) return drawn.with_context("draw: ");
   }
-  if (lens_scene_) {
-    lens_scene_->bind();
-  } else {
-    parts_.output->bind_target(0);
-  }
-  if (Status drawn = renderer.draw(drawable, in, &last_draw_); !drawn) return drawn.with_context("draw: ");
-  if (!lens_) return ok();
-  parts_.output->bind_target(0);
-  const auto centres = std::span<const std::array<float, 2>>(lens_centres_.data(), views.count);
-  if (Status warped = lens_->apply(*lens_scene_, views.span(), centres, lens_params_); !warped) {
-    return warped.with_context("lens distortion: ");
-  }
-  return ok();
+  return parts_.output->finish_scene(views);
 }
 
 /// The on-screen line: frame rate, pose age, source state, dV; re-rasterised four times a second.
@@ -255,8 +214,8 @@ Status Runtime::present_and_record(const FrameState& state) {
 nlohmann::ordered_json Runtime::stats_json(double wall_s) const {
   nlohmann::ordered_json j = stats_.to_json();
   j["nodes"] = asset_.vertex_count();
-  j["view"] = config::to_string(settings_.hmd.view);
-  j["deform"] = config::to_string(settings_.render.deform);
+  j["view"] = config_.stereo ? "stereo" : "mono";
+  j["deform"] = to_string(config_.deform);
   j["asset"] = parts_.scene->name();
   nlohmann::json parts = nlohmann::json::object();
   parts_.poses->add_stats(parts, wall_s);

@@ -1,8 +1,8 @@
 /// @file runtime.h
-/// @brief The lungar Runtime: create / frame / finish. Its frame is DESIGN.md's "One frame", step by step:
-/// breathe -> force SH -> head views -> deform and draw -> present and record. What it reads and where it draws
-/// plug in behind small interfaces (FrameOutput, PoseSource, BreathingClock, FrameListener), so a new output or
-/// pose source is a new implementation, never a branch in the frame.
+/// @brief The lungar Runtime: create, then frame after frame. Its frame is docs/design.md's "One frame", step by
+/// step: breathe -> force SH -> head views -> deform and draw -> present and record. What it reads and where it
+/// draws plug in behind small interfaces (FrameOutput, PoseSource, BreathingClock, FrameListener), and what it is
+/// told comes in a small RuntimeConfig: a new output or pose source is a new implementation, not a new branch.
 /// @ingroup platform
 #pragma once
 
@@ -19,16 +19,14 @@
 
 #include "config/base/clock.h"
 #include "config/base/result.h"
-#include "config/settings.h"
 #include "platform/runtime/breathing_clock.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/frame_output.h"
 #include "platform/runtime/frame_stats.h"
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/pose_source.h"
-#include "render/frame_target.h"
+#include "platform/runtime/runtime_config.h"
 #include "render/hud_line.h"
-#include "render/lens_distortion.h"
 #include "render/renderer.h"
 #include "sim/deform/deform_eq1.h"
 
@@ -47,9 +45,9 @@ struct RuntimeParts {
 
 class Runtime {
  public:
-  /// Checks that the parts fit the settings (CPU eq. 1 needs transfer rows, mesh mode needs triangles) and sizes
+  /// Checks that the parts fit the config (CPU eq. 1 needs transfer rows, mesh mode needs triangles) and sizes
   /// every per-frame buffer once.
-  static Result<std::unique_ptr<Runtime>> create(const config::Settings& settings, RuntimeParts parts);
+  static Result<std::unique_ptr<Runtime>> create(const RuntimeConfig& config, RuntimeParts parts);
 
   /// One frame, presented and recorded in the stats.
   Status frame();
@@ -57,7 +55,8 @@ class Runtime {
   Status final_frame(const std::string& png_path);
   /// False once the output was closed or a finite pose source has delivered everything (after the first frame).
   bool keep_running();
-  /// The stats JSON of the frames so far (DESIGN.md keys), every part adding its own; `wall_s` is the run's length.
+  /// The stats JSON of the frames so far (docs/design.md, Contracts), every part adding its own; `wall_s` is the run's
+  /// length.
   nlohmann::ordered_json stats_json(double wall_s) const;
   /// One human line for the console.
   std::string summary(double wall_s) const;
@@ -70,41 +69,34 @@ class Runtime {
   const render::FrameStats& last_draw() const { return last_draw_; }
 
  private:
-  Runtime(const config::Settings& settings, RuntimeParts parts);
-  Status prepare_lens();
+  Runtime(const RuntimeConfig& config, RuntimeParts parts);
   Status draw_frame(const std::string* snapshot_png);
 
-  // DESIGN.md's "One frame"
-  sim::BreathingSample breathe(std::int64_t now_ns) const;                        // 1.
-  void force_sh(std::int64_t now_ns, FrameState& state);                          // 2.
-  const FrameViews& head_views(std::int64_t now_ns, std::int64_t display_ns);     // 3.
-  Status deform_and_draw(const FrameState& state, const FrameViews& views);       // 4.
-  Status present_and_record(const FrameState& state);                             // 5.
+  // docs/design.md, "One frame"
+  sim::BreathingSample breathe(std::int64_t now_ns) const;                     // 1.
+  void force_sh(std::int64_t now_ns, FrameState& state);                       // 2.
+  const FrameViews& head_views(std::int64_t now_ns, std::int64_t display_ns);  // 3.
+  Status deform_and_draw(const FrameState& state, const FrameViews& views);    // 4.
+  Status present_and_record(const FrameState& state);                          // 5.
 
   void deform_on_cpu(const FrameState& state);
   render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
   Status draw_views(const render::FrameInputs& in, const FrameViews& views);
   void draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views);
 
-  const config::Settings settings_;
+  const RuntimeConfig config_;
   RuntimeParts parts_;
   const sim::BakedAsset& asset_;
-  Eigen::Isometry3d registration_ = Eigen::Isometry3d::Identity();  ///< lung model -> patient sensor
   std::int64_t max_ahead_ns_ = 0;
 
   // Per-frame buffers, sized once.
-  std::vector<float> force_;           ///< f_lm of every lung, lung-major
-  std::vector<float> cpu_positions_;   ///< --deform cpu7 | cpu1
+  std::vector<float> force_;          ///< f_lm of every lung, lung-major
+  std::vector<float> cpu_positions_;  ///< --deform cpu7 | cpu1
   std::optional<sim::Eq1Deformer> eq1_;
   std::vector<render::LungFrame> lung_frames_;
   render::PositionSource source_ = render::PositionSource::Shader;
 
-  // Overlays: the status line, and the lens pass drawing the scene through an intermediate target.
-  std::optional<render::HudLine> hud_;
-  std::optional<render::FrameTarget> lens_scene_;
-  std::optional<render::LensDistortion> lens_;
-  render::LensParams lens_params_;
-  std::array<std::array<float, 2>, 2> lens_centres_{};
+  std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene
 
   drivers::PoseSample last_patient_, last_head_, measured_head_;
   double frame_estimate_ms_ = 16.0;

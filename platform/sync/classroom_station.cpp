@@ -6,7 +6,7 @@ namespace lungar::platform::sync {
 
 std::string default_cyclonedds_xml() { return std::string(LUNGAR_CYCLONEDDS_DIR) + "/classroom-lan.xml"; }
 
-SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+SyncOptions to_sync_options(const SyncSettings& s, std::function<void(const std::string&)> log,
                             std::int64_t clock_skew_ns) {
   SyncOptions o;
   o.role = s.role;
@@ -20,7 +20,7 @@ SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(co
   return o;
 }
 
-Result<ClassroomStation> ClassroomStation::open(const config::SyncSettings& s,
+Result<ClassroomStation> ClassroomStation::open(const SyncSettings& s,
                                                 std::function<void(const std::string&)> log,
                                                 std::int64_t clock_skew_ns) {
   ClassroomStation station;

@@ -1,6 +1,6 @@
 /// @file classroom_station.h
 /// @brief The station the config's [sync] asks for: none (off), the instructor or a trainee, opened from
-/// config::SyncSettings; one place for what the runtime asks of either (state, report, a fatal refusal).
+/// SyncSettings; one place for what the runtime asks of either (state, report, a fatal refusal).
 /// @ingroup platform
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "config/settings.h"
+#include "platform/sync/sync_settings.h"
 #include "platform/sync/instructor.h"
 #include "platform/sync/trainee.h"
 
@@ -19,14 +19,14 @@ namespace lungar::platform::sync {
 std::string default_cyclonedds_xml();
 
 /// SyncOptions from the config ([sync]); `log` receives the station's lines.
-SyncOptions to_sync_options(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+SyncOptions to_sync_options(const SyncSettings& s, std::function<void(const std::string&)> log,
                             std::int64_t clock_skew_ns = 0);
 
 class ClassroomStation {
  public:
   /// Off: a station that is neither. Else the instructor (refused, with one line naming the other, when the
   /// classroom has one) or a trainee. `clock_skew_ns`: tests pretend this station's clock is off.
-  static Result<ClassroomStation> open(const config::SyncSettings& s, std::function<void(const std::string&)> log,
+  static Result<ClassroomStation> open(const SyncSettings& s, std::function<void(const std::string&)> log,
                                        std::int64_t clock_skew_ns = 0);
 
   SyncRole role() const;

@@ -10,13 +10,9 @@
 #include <vector>
 
 #include "config/base/enum_names.h"
-#include "config/settings.h"
+#include "platform/sync/sync_settings.h"
 
 namespace lungar::platform::sync {
-
-/// off: alone; instructor: publishes the shared state; trainee: follows it with its own head tracker.
-using config::SyncRole;
-using config::kSyncRoleNames;
 
 /// off: no sync; in_sync: following (a trainee) or followed (the instructor); lost: a trainee that hears no
 /// instructor (yet, or any more) and goes on breathing on the last shared time base.
@@ -24,7 +20,6 @@ enum class SyncState : std::uint8_t { Off, InSync, Lost };
 inline constexpr EnumNames<SyncState, 3> kSyncStateNames{
     {{{SyncState::Off, "off"}, {SyncState::InSync, "in_sync"}, {SyncState::Lost, "lost"}}}};
 
-using config::to_string;
 inline const char* to_string(SyncState s) { return kSyncStateNames.name(s); }
 
 struct SyncOptions {

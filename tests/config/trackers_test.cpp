@@ -10,16 +10,15 @@
 
 using lungar::config::Endian;
 using lungar::config::FieldType;
-using lungar::config::load_settings;
-using lungar::config::load_settings_from_string;
+using lungar::config::load_tracker_settings;
+using lungar::config::load_tracker_settings_from_string;
 using lungar::config::OrientationKind;
 using lungar::config::parse_signed_axes;
-using lungar::config::Settings;
 
 namespace {
 
 std::string error_of(const std::string& toml) {
-  auto r = load_settings_from_string(toml, "bad.toml");
+  auto r = load_tracker_settings_from_string(toml, "bad.toml");
   EXPECT_FALSE(r) << "expected an error for:\n" << toml;
   return r.error();
 }
@@ -27,9 +26,9 @@ std::string error_of(const std::string& toml) {
 }  // namespace
 
 TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
-  auto r = load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
+  auto r = load_tracker_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
   ASSERT_TRUE(r) << r.error();
-  const auto& t = r->trackers;
+  const auto& t = *r;
   const lungar::config::TrackerSettings d;
   EXPECT_EQ(t.report.report_id, d.report.report_id);
   EXPECT_EQ(t.report.length, d.report.length);
@@ -49,7 +48,7 @@ TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
 }
 
 TEST(Trackers, AFixedOffsetBigEndianEulerLayoutLoads) {
-  auto r = load_settings_from_string(R"(
+  auto r = load_tracker_settings_from_string(R"(
 [trackers]
 axis_remap = "x,-z,y"
 [trackers.report]
@@ -72,13 +71,13 @@ offset = 24
 )",
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
-  const auto& p = r->trackers.report;
+  const auto& p = r->report;
   EXPECT_EQ(p.endian, Endian::Big);
   EXPECT_EQ(p.report_id, -1);
   EXPECT_EQ(p.position_type, FieldType::F32);
   EXPECT_EQ(p.orientation, OrientationKind::Euler);
   EXPECT_EQ(p.orientation_components, "z,y,x");  // the Euler default when only `orientation` changed
-  EXPECT_EQ(r->trackers.patient.offset, 24);
+  EXPECT_EQ(r->patient.offset, 24);
 }
 
 TEST(Trackers, SignedAxesParse) {
@@ -153,7 +152,7 @@ TEST(Trackers, WorkspaceAndToleranceAreChecked) {
 }
 
 TEST(Trackers, AnOrientationOnlyReportTakesEachRolesFixedPosition) {
-  auto r = load_settings_from_string(R"(
+  auto r = load_tracker_settings_from_string(R"(
 [trackers.report]
 length = 16
 station_offset = -1
@@ -169,18 +168,18 @@ enabled = false
 )",
                                      "imu.toml");
   ASSERT_TRUE(r) << r.error();
-  EXPECT_EQ(r->trackers.report.position_type, FieldType::None);
-  EXPECT_EQ(r->trackers.head.fixed_position_mm, (std::array<double, 3>{10.0, -700.0, 1300.0}));
+  EXPECT_EQ(r->report.position_type, FieldType::None);
+  EXPECT_EQ(r->head.fixed_position_mm, (std::array<double, 3>{10.0, -700.0, 1300.0}));
   EXPECT_EQ(error_of("[trackers.head]\nfixed_position_mm = [1.0, 2.0]\n"),
             "bad.toml:2: key 'trackers.head.fixed_position_mm': expected an array of 3 numbers in [-100000, 100000] "
             "mm, got an array of 2");
 }
 
 TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
-  auto r = load_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
+  auto r = load_tracker_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
-  const auto& reports = r->trackers.hid.init_feature_reports;
+  const auto& reports = r->hid.init_feature_reports;
   ASSERT_EQ(reports.size(), 2u);
   EXPECT_EQ(reports[0], (std::vector<std::uint8_t>{0x02, 0x01}));
   EXPECT_EQ(reports[1], (std::vector<std::uint8_t>{0x05, 0xFF, 0x0A}));
@@ -199,7 +198,7 @@ TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
 }
 
 TEST(Trackers, IgtlTableNamesTheServerAndTheDeviceOfEachRole) {
-  auto r = load_settings_from_string(R"(
+  auto r = load_tracker_settings_from_string(R"(
 [trackers]
 source = "igtl"
 [trackers.igtl]
@@ -212,8 +211,8 @@ rigid_tolerance = 0.01
 )",
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
-  const auto& g = r->trackers.igtl;
-  EXPECT_EQ(r->trackers.source, lungar::config::TrackerSource::Igtl);
+  const auto& g = r->igtl;
+  EXPECT_EQ(r->source, lungar::config::TrackerSource::Igtl);
   EXPECT_EQ(g.host, "plus.lab");
   EXPECT_EQ(g.port, 18945);
   EXPECT_EQ(g.head, "");

@@ -229,9 +229,9 @@ TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
 // Replay honours an orientation-only layout: every sample of a synthesized IMU log sits at the head's fixed
 // position and turns as the trajectory did.
 TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
-  auto loaded = config::load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
+  auto loaded = config::load_tracker_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
   ASSERT_TRUE(loaded) << loaded.error();
-  config::TrackerSettings t = loaded->trackers;
+  config::TrackerSettings t = *loaded;
   t.mock_trajectory = "head_orbit";
   const auto layout = make_layout(t);
   ASSERT_TRUE(layout) << layout.error();

@@ -11,7 +11,7 @@
 #include "drivers/decode/layout_toml.h"
 #include "drivers/decode/report_layout.h"
 #include "drivers/trk/trk_writer.h"
-#include "platform/registration/calibrate_command.h"
+#include "platform/app/calibrate_command.h"
 
 using namespace lungar;
 

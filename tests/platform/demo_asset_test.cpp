@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "platform/runtime/demo_asset.h"
+#include "platform/app/demo_asset.h"
 
 namespace lungar::platform {
 namespace {

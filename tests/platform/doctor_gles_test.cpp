@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "platform/doctor/checks.h"
-#include "platform/doctor/doctor.h"
+#include "platform/app/doctor/checks.h"
+#include "platform/app/doctor/doctor.h"
 #include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
@@ -51,5 +51,6 @@ TEST(DoctorGles, AHeadlessMockSetUpHasNoFailureAndABrokenConfigFailsOnlyItsCheck
   checks = run_checks(profile.string(), env);
   EXPECT_EQ(checks[0].name, "config");
   EXPECT_EQ(checks[0].verdict, Verdict::Fail) << format_check(checks[0]);
-  for (std::size_t k = 1; k < checks.size(); ++k) EXPECT_NE(checks[k].verdict, Verdict::Fail) << format_check(checks[k]);
+  for (std::size_t k = 1; k < checks.size(); ++k)
+    EXPECT_NE(checks[k].verdict, Verdict::Fail) << format_check(checks[k]);
 }

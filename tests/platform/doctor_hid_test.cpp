@@ -14,7 +14,7 @@
 #include <fstream>
 #include <string>
 
-#include "platform/doctor/checks.h"
+#include "platform/app/doctor/checks.h"
 #include "tests/scratch_dir.h"
 #include "umockdev_tracker.h"
 
@@ -48,7 +48,8 @@ Check check_unprivileged(const lungar::config::TrackerSettings& t, const DoctorE
   ::close(fds[0]);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return failed("test", "child failed: " + std::to_string(status), "");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return failed("test", "child failed: " + std::to_string(status), "");
   const std::size_t a = in.find('\n'), b = in.find('\n', a + 1);
   return Check{"tracker", static_cast<Verdict>(std::stoi(in.substr(0, a))), in.substr(a + 1, b - a - 1),
                in.substr(b + 1)};

@@ -12,8 +12,9 @@
 
 #include "config/config_paths.h"
 #include "drivers/igtl/tcp_socket.h"
-#include "platform/doctor/checks.h"
-#include "platform/runtime/demo_asset.h"
+#include "platform/app/demo_asset.h"
+#include "platform/app/doctor/checks.h"
+#include "platform/app/settings_load.h"
 #include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;
@@ -67,12 +68,12 @@ TEST_F(Doctor, ConfigCheckNamesTheFileUsedAndFailsOnABadOneNamingTheKey) {
   fs::create_directories(user.parent_path());
   std::ofstream(user) << "[render]\npoint_size_px = 5.0\n";
   auto choice = lungar::config::choose_config("", env.xdg);
-  Check c = check_config(choice, lungar::config::load_chosen_settings(choice));
+  Check c = check_config(choice, lungar::platform::load_chosen_settings(choice));
   EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
   EXPECT_TRUE(contains(c.detail, user.string())) << c.detail;
 
   std::ofstream(user) << "[render]\npoint_size_px = 0\n";
-  c = check_config(choice, lungar::config::load_chosen_settings(choice));
+  c = check_config(choice, lungar::platform::load_chosen_settings(choice));
   EXPECT_EQ(c.verdict, Verdict::Fail);
   EXPECT_TRUE(contains(c.detail, user.string()) && contains(c.detail, "point_size_px")) << c.detail;
   EXPECT_TRUE(contains(c.fix, "default.toml")) << c.fix;
@@ -122,8 +123,8 @@ TEST_F(Doctor, OpenXrEnvironmentOverrideIsTheOnlyPlaceLookedAtAndAMissingLibrary
 }
 
 TEST_F(Doctor, TheOpenXrOutputNeedsAnActiveRuntimeNotAnXDisplay) {
-  lungar::config::Settings s;
-  s.display.output = lungar::config::Output::OpenXr;
+  lungar::platform::Settings s;
+  s.display.output = lungar::platform::Output::OpenXr;
   Check c = check_output(s, env);  // no DISPLAY, no runtime
   EXPECT_EQ(c.verdict, Verdict::Fail) << format_check(c);
   EXPECT_TRUE(contains(c.fix, "active_runtime.json")) << c.fix;
@@ -134,12 +135,12 @@ TEST_F(Doctor, TheOpenXrOutputNeedsAnActiveRuntimeNotAnXDisplay) {
 }
 
 TEST_F(Doctor, OutputNeedsNoDisplayHeadlessButAWindowNeedsOne) {
-  lungar::config::Settings s;
-  s.display.output = lungar::config::Output::Headless;
+  lungar::platform::Settings s;
+  s.display.output = lungar::platform::Output::Headless;
   EXPECT_EQ(check_output(s, env).verdict, Verdict::Pass);
-  s.display.output = lungar::config::Output::Auto;
+  s.display.output = lungar::platform::Output::Auto;
   EXPECT_EQ(check_output(s, env).verdict, Verdict::Pass);  // auto without DISPLAY runs headless
-  s.display.output = lungar::config::Output::Fullscreen;
+  s.display.output = lungar::platform::Output::Fullscreen;
   const Check c = check_output(s, env);
   EXPECT_EQ(c.verdict, Verdict::Fail);
   EXPECT_TRUE(contains(c.detail, "DISPLAY") && contains(c.fix, "DISPLAY")) << format_check(c);
@@ -149,8 +150,8 @@ TEST_F(Doctor, FullscreenOnAnOutputTheXServerDoesNotHaveFailsListingTheOnesItHas
   const char* display = std::getenv("DISPLAY");
   if (display == nullptr || *display == '\0') GTEST_SKIP() << "no X server (CI starts Xvfb)";
   env.display = display;
-  lungar::config::Settings s;
-  s.display.output = lungar::config::Output::Fullscreen;
+  lungar::platform::Settings s;
+  s.display.output = lungar::platform::Output::Fullscreen;
   s.display.x11_output = "NO-SUCH-OUTPUT-9";
   const Check c = check_output(s, env);
   EXPECT_EQ(c.verdict, Verdict::Fail) << format_check(c);
@@ -162,7 +163,7 @@ TEST_F(Doctor, FullscreenOnAnOutputTheXServerDoesNotHaveFailsListingTheOnesItHas
 }
 
 TEST_F(Doctor, AssetCheckLoadsTheConfiguredAssetAndNamesABrokenOne) {
-  lungar::config::Settings s;
+  lungar::platform::Settings s;
   s.sim.asset = kData + "hil_lungs.lungbake";
   Check c = check_asset(s, env);
   EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
@@ -180,7 +181,7 @@ TEST_F(Doctor, AssetCheckLoadsTheConfiguredAssetAndNamesABrokenOne) {
 
 TEST_F(Doctor, DemoAssetNotYetBakedPassesAndSaysWhereItWillGo) {
   env.xdg.cache_home = (root / "cache").string();
-  const Check c = check_asset(lungar::config::Settings{}, env);
+  const Check c = check_asset(lungar::platform::Settings{}, env);
   EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
   EXPECT_TRUE(contains(c.detail, (root / "cache/lungar").string())) << c.detail;
 }
@@ -194,7 +195,7 @@ TEST_F(Doctor, DemoAssetCachedIsFoundWhereTheRuntimeCachesTheCtLungs) {
   ASSERT_EQ(cached.filename().string().rfind("ct-", 0), 0u) << cached;
   fs::create_directories(cached.parent_path());
   fs::copy_file(kData + "hil_lungs.lungbake", cached);
-  const Check c = check_asset(lungar::config::Settings{}, env);
+  const Check c = check_asset(lungar::platform::Settings{}, env);
   EXPECT_EQ(c.verdict, Verdict::Pass) << format_check(c);
   EXPECT_TRUE(contains(c.detail, "demo lungs cached at " + cached.string())) << c.detail;
 }

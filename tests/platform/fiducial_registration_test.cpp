@@ -7,7 +7,7 @@
 #include <fstream>
 #include <random>
 
-#include "config/settings_load.h"
+#include "platform/app/settings_load.h"
 #include "platform/registration/fiducial_registration.h"
 
 using lungar::platform::Registration;
@@ -116,7 +116,7 @@ TEST(FiducialRegistration, WrittenSectionLoadsAsTheSameRegistration) {
   const lungar::Status written = lungar::platform::write_registration_toml(path, r);
   ASSERT_TRUE(written) << written.error();
   EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
-  const auto loaded = lungar::config::load_settings(path);
+  const auto loaded = lungar::platform::load_settings(path);
   ASSERT_TRUE(loaded) << loaded.error();
   const auto& q = loaded->registration.rotation_wxyz;
   const auto& t = loaded->registration.translation_mm;

@@ -43,11 +43,11 @@ constexpr int kForceShown = 4;      // force SH values per lung kept in the expe
 /// What one frame computed from one patient report.
 struct FrameRecord {
   std::int64_t t_device_ns = 0;
-  std::array<double, 4> q{};         ///< patient orientation, w x y z
-  std::array<double, 3> g{};         ///< gravity in the lung frame
-  std::vector<double> force;         ///< lungs x kForceShown
-  double disp_normal_mm = 0;         ///< sum over vertices of (p' - p) . n
-  double disp_weighted_mm = 0;       ///< sum over vertices of (p' - p) . (1, 2, 3)
+  std::array<double, 4> q{};    ///< patient orientation, w x y z
+  std::array<double, 3> g{};    ///< gravity in the lung frame
+  std::vector<double> force;    ///< lungs x kForceShown
+  double disp_normal_mm = 0;    ///< sum over vertices of (p' - p) . n
+  double disp_weighted_mm = 0;  ///< sum over vertices of (p' - p) . (1, 2, 3)
 };
 
 struct Collector {
@@ -114,7 +114,7 @@ class HardwareInTheLoop : public ::testing::Test {
     f.g = {g.x(), g.y(), g.z()};
     const std::uint32_t c = asset.coefficients();
     std::vector<float> force(asset.lungs.size() * c);
-    platform::patient_force_sh(asset, config::OrientationMode::Exact, lung_q, force);
+    platform::patient_force_sh(asset, sim::ForceMode::exact, lung_q, force);
     std::vector<render::LungFrame> lungs(asset.lungs.size());
     for (std::size_t l = 0; l < lungs.size(); ++l) {
       lungs[l].force = std::span<const float>(force.data() + l * c, c);
@@ -127,7 +127,8 @@ class HardwareInTheLoop : public ::testing::Test {
     for (std::size_t i = 0; i < asset.vertex_count() && 3 * i + 2 < xyz.size(); ++i) {
       double d[3];
       for (int a = 0; a < 3; ++a) d[a] = static_cast<double>(xyz[3 * i + a]) - asset.positions[3 * i + a];
-      f.disp_normal_mm += d[0] * asset.normals[3 * i] + d[1] * asset.normals[3 * i + 1] + d[2] * asset.normals[3 * i + 2];
+      f.disp_normal_mm +=
+          d[0] * asset.normals[3 * i] + d[1] * asset.normals[3 * i + 1] + d[2] * asset.normals[3 * i + 2];
       f.disp_weighted_mm += d[0] + 2 * d[1] + 3 * d[2];
     }
     return f;

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "platform/runtime/runtime_options.h"
+#include "platform/app/runtime_options.h"
 
 using lungar::platform::apply_overrides;
 using lungar::platform::RuntimeOptions;
@@ -33,14 +33,14 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
                    "--headless", "--asset", "a.lungbake", "--scenario", "teach.toml", "--frames", "7"},
                   o),
             "");
-  cfg::Settings s;
+  lungar::platform::Settings s;
   ASSERT_TRUE(apply_overrides(o, s).ok());
   EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Replay);
   EXPECT_EQ(s.trackers.replay_file, "logs/turn.trk");
-  EXPECT_EQ(s.hmd.view, cfg::View::Mono);
-  EXPECT_EQ(s.render.mode, cfg::RenderMode::Mesh);
-  EXPECT_EQ(s.render.deform, cfg::Deform::Cpu1);
-  EXPECT_EQ(s.display.output, cfg::Output::Headless);
+  EXPECT_EQ(s.hmd.view, lungar::platform::View::Mono);
+  EXPECT_EQ(s.render.mode, lungar::render::DrawMode::Mesh);
+  EXPECT_EQ(s.render.deform, lungar::platform::Deform::Cpu1);
+  EXPECT_EQ(s.display.output, lungar::platform::Output::Headless);
   EXPECT_EQ(s.sim.asset, "a.lungbake");
   EXPECT_EQ(s.breathing.scenario, "teach.toml");
   EXPECT_EQ(o.frames, 7);
@@ -57,25 +57,25 @@ TEST(RuntimeOptions, TheCommandLineRefusesNamesThatAreNotInTheTables) {
 TEST(RuntimeOptions, OutputOpenXr) {
   RuntimeOptions o;
   o.output = "openxr";
-  cfg::Settings s;
+  lungar::platform::Settings s;
   EXPECT_TRUE(apply_overrides(o, s));
-  EXPECT_EQ(s.display.output, cfg::Output::OpenXr);
+  EXPECT_EQ(s.display.output, lungar::platform::Output::OpenXr);
 }
 
 TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
-  cfg::Settings s;
+  lungar::platform::Settings s;
   RuntimeOptions o;
   o.tracker = "igtl:192.168.1.20:18945";
   ASSERT_TRUE(apply_overrides(o, s));
   EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Igtl);
   EXPECT_EQ(s.trackers.igtl.host, "192.168.1.20");
   EXPECT_EQ(s.trackers.igtl.port, 18945);
-  cfg::Settings d;
+  lungar::platform::Settings d;
   o.tracker = "igtl:plus.lab";  // the config's port (18944 by default)
   ASSERT_TRUE(apply_overrides(o, d));
   EXPECT_EQ(d.trackers.igtl.host, "plus.lab");
   EXPECT_EQ(d.trackers.igtl.port, 18944);
-  cfg::Settings e;
+  lungar::platform::Settings e;
   o.tracker = "igtl";  // host and port from the config
   ASSERT_TRUE(apply_overrides(o, e));
   EXPECT_EQ(e.trackers.source, cfg::TrackerSource::Igtl);
@@ -83,10 +83,11 @@ TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
 }
 
 TEST(RuntimeOptions, BadValuesAreNamed) {
-  cfg::Settings s;
+  lungar::platform::Settings s;
   RuntimeOptions o;
   o.output = "hmd";
-  EXPECT_EQ(apply_overrides(o, s).error(), "--output: expected auto, window, fullscreen, headless or openxr, got 'hmd'");
+  EXPECT_EQ(apply_overrides(o, s).error(),
+            "--output: expected auto, window, fullscreen, headless or openxr, got 'hmd'");
   o = {};
   o.tracker = "replay:";
   EXPECT_EQ(apply_overrides(o, s).error(),

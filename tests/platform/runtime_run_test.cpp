@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/runtime/run.h"
+#include "platform/app/run.h"
 
 using namespace lungar;
 
@@ -22,7 +22,7 @@ class RuntimeRun : public ::testing::Test {
           ("lungar_runtime_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(dir);
     settings.sim.asset = kData + "hil_lungs.lungbake";
-    settings.display.output = config::Output::Headless;
+    settings.display.output = platform::Output::Headless;
     options.frames = 6;
     options.snapshot_path = (dir / "shot.png").string();
     options.stats_json_path = (dir / "stats.json").string();
@@ -42,7 +42,7 @@ class RuntimeRun : public ::testing::Test {
   }
 
   std::filesystem::path dir;
-  config::Settings settings;
+  platform::Settings settings;
   platform::RuntimeOptions options;
 };
 
@@ -98,9 +98,9 @@ TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
 
 TEST_F(RuntimeRun, CpuEq7MonoMeshRuns) {
   options.deform = "cpu7";
-  settings.render.deform = config::Deform::Cpu7;
-  settings.hmd.view = config::View::Mono;
-  settings.render.mode = config::RenderMode::Mesh;
+  settings.render.deform = platform::Deform::Cpu7;
+  settings.hmd.view = platform::View::Mono;
+  settings.render.mode = render::DrawMode::Mesh;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   const auto j = stats();
   EXPECT_EQ(j["deform"], "cpu7");

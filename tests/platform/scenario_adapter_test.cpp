@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "tests/sim/breathing/breathing_measure.h"
 #include "config/scenario_load.h"
-#include "platform/scenario_adapter.h"
+#include "platform/app/scenario_adapter.h"
+#include "tests/sim/breathing/breathing_measure.h"
 
 using namespace lungar;
 using namespace lungar::sim::testing;

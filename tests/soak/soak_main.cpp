@@ -22,7 +22,7 @@
 #include "config/base/clock.h"
 #include "drivers/decode/layout_toml.h"
 #include "drivers/trk/trk_reader.h"
-#include "platform/runtime/run.h"
+#include "platform/app/run.h"
 #include "umockdev_tracker.h"
 
 namespace {
@@ -140,8 +140,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lungar-soak: %s\n", feeder.error().c_str());
     return 1;
   }
-  config::Settings s;
-  s.display.output = config::Output::Headless;
+  platform::Settings s;
+  s.display.output = platform::Output::Headless;
   s.sim.asset = o.asset;
   s.trackers = *layout;
   s.trackers.source = config::TrackerSource::Hid;

@@ -17,9 +17,10 @@
 
 #include "config/base/clock.h"
 #include "drivers/mock/mock_trajectory.h"
+#include "platform/app/open_output.h"
+#include "platform/app/run.h"
 #include "platform/openxr/xr_view_math.h"
 #include "platform/output/openxr_frame_output.h"
-#include "platform/runtime/run.h"
 #include "tests/platform/openxr/xr_test_runtime.h"
 
 namespace lungar::test {
@@ -34,7 +35,7 @@ class OpenXrRuntime : public ::testing::Test {
            ("lungar_openxr_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(dir_);
     settings_.sim.asset = kData + "hil_lungs.lungbake";
-    settings_.display.output = config::Output::OpenXr;
+    settings_.display.output = platform::Output::OpenXr;
     settings_.trackers.mock_trajectory = "static";
     options_.frames = 30;
     options_.snapshot_path = (dir_ / "shot.png").string();
@@ -43,7 +44,7 @@ class OpenXrRuntime : public ::testing::Test {
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
   std::filesystem::path dir_;
-  config::Settings settings_;
+  platform::Settings settings_;
   platform::RuntimeOptions options_;
 };
 
@@ -56,7 +57,7 @@ TEST_F(OpenXrRuntime, RunWritesTheXrStatsAndASnapshot) {
   EXPECT_EQ(j["xr_frames_submitted"], 30);  // every frame the runtime showed; none lost
   EXPECT_NE(j["xr_runtime"].get<std::string>().find("Monado"), std::string::npos) << j["xr_runtime"];
   EXPECT_DOUBLE_EQ(j["xr_predicted_display_period_ms"].get<double>(), 50.0);  // the null compositor's 20 Hz
-  EXPECT_NEAR(j["fps_median"].get<double>(), 20.0, 2.0);                       // xrWaitFrame paces the loop
+  EXPECT_NEAR(j["fps_median"].get<double>(), 20.0, 2.0);                      // xrWaitFrame paces the loop
   EXPECT_TRUE(std::filesystem::exists(options_.snapshot_path));
   EXPECT_GT(std::filesystem::file_size(options_.snapshot_path), 2000u);
 }
@@ -100,7 +101,7 @@ glm::vec3 eye_ahead(const render::EyeView& e) { return -glm::vec3(glm::inverse(e
 
 TEST_F(OpenXrRuntime, DefaultRegistrationPutsTheRuntimesHeadWhereTheDefaultViewerStands) {
   ASSERT_FALSE(use_test_runtime(SimulatedHead::Fixed).empty());  // the remote HMD stays at LOCAL's origin
-  auto out = platform::OpenXrFrameOutput::create(settings_, nullptr);
+  auto out = platform::OpenXrFrameOutput::create(settings_.display, settings_.hmd, platform::xr_world_from_space(settings_.registration), nullptr);
   ASSERT_TRUE(out) << out.error();
   // lungar's own head pose is ignored with head = "openxr": any matrix gives the same views.
   const glm::mat4 far_away = glm::translate(glm::mat4(1.f), glm::vec3(5000.f, 0.f, 0.f));
@@ -130,8 +131,8 @@ TEST_F(OpenXrRuntime, DefaultRegistrationPutsTheRuntimesHeadWhereTheDefaultViewe
 
 TEST_F(OpenXrRuntime, TrackerHeadPlacesTheRuntimesEyeOffsetsOnLungarsHead) {
   ASSERT_FALSE(use_test_runtime(SimulatedHead::Fixed).empty());
-  settings_.display.openxr.head = config::XrHead::Tracker;
-  auto out = platform::OpenXrFrameOutput::create(settings_, nullptr);
+  settings_.display.openxr.head = platform::XrHead::Tracker;
+  auto out = platform::OpenXrFrameOutput::create(settings_.display, settings_.hmd, platform::xr_world_from_space(settings_.registration), nullptr);
   ASSERT_TRUE(out) << out.error();
   const glm::mat4 head = glm::rotate(glm::translate(glm::mat4(1.f), glm::vec3(100.f, -900.f, 1200.f)),
                                      glm::radians(70.f), glm::vec3(1.f, 0.f, 0.f));
@@ -142,8 +143,7 @@ TEST_F(OpenXrRuntime, TrackerHeadPlacesTheRuntimesEyeOffsetsOnLungarsHead) {
     const glm::vec3 offset(v == 0 ? -32.f : 32.f, 0.f, 0.f);  // the remote HMD's eyes, as located
     const glm::vec3 expected(head * glm::vec4(offset, 1.f));
     EXPECT_NEAR(glm::length(eye_position(views.eyes[v]) - expected), 0.f, 1.f) << "view " << v;
-    EXPECT_NEAR(glm::length(eye_ahead(views.eyes[v]) - glm::vec3(head * glm::vec4(0.f, 0.f, -1.f, 0.f))), 0.f,
-                1e-3f);
+    EXPECT_NEAR(glm::length(eye_ahead(views.eyes[v]) - glm::vec3(head * glm::vec4(0.f, 0.f, -1.f, 0.f))), 0.f, 1e-3f);
   }
 }
 

@@ -10,10 +10,10 @@
 #define LUNGAR_ALLOCATION_COUNTERS_ONLY
 #include "../../sim/allocation_counter.h"
 #include "config/base/clock.h"
+#include "platform/app/scenario_adapter.h"
+#include "platform/app/script_breathing.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
-#include "platform/runtime/script_breathing.h"
-#include "platform/scenario_adapter.h"
 #include "platform/sync/classroom_breathing.h"
 #include "platform/sync/instructor_publisher.h"
 #include "platform/sync/trainee_poses.h"
@@ -45,13 +45,13 @@ class StillPoses final : public PoseSource {
   void stop() override {}
 };
 
-config::SyncSettings sync_settings(config::SyncRole role) {
-  config::SyncSettings s;
+platform::sync::SyncSettings sync_settings(platform::sync::SyncRole role) {
+  platform::sync::SyncSettings s;
   s.role = role;
   s.classroom = lungar::testing::test_classroom("frame-side");
   s.domain = static_cast<int>(lungar::testing::test_domain());
   s.cyclonedds_xml = lungar::testing::kLoopbackXml;
-  s.station = role == config::SyncRole::Instructor ? "instructor" : "trainee";
+  s.station = role == platform::sync::SyncRole::Instructor ? "instructor" : "trainee";
   return s;
 }
 
@@ -59,22 +59,20 @@ config::SyncSettings sync_settings(config::SyncRole role) {
 
 TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAllocating) {
   auto quiet = [](const std::string&) {};
-  auto instructor = ClassroomStation::open(sync_settings(config::SyncRole::Instructor), quiet);
+  auto instructor = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Instructor), quiet);
   ASSERT_TRUE(instructor) << instructor.error();
   auto teacher = std::make_shared<ClassroomStation>(instructor.take());
   const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
   auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
   ASSERT_TRUE(script);
   ASSERT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, t0));
-  auto trainee = ClassroomStation::open(sync_settings(config::SyncRole::Trainee), quiet);
+  auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee), quiet);
   ASSERT_TRUE(trainee) << trainee.error();
   auto learner = std::make_shared<ClassroomStation>(trainee.take());
 
   // The trainee's registration turns the model 30 degrees about y; the instructor's lung is turned about x.
-  config::RegistrationSettings reg;
-  reg.rotation_wxyz = {0.9659258262890683, 0.0, 0.25881904510252074, 0.0};
-  reg.translation_mm = {10.0, -20.0, 5.0};
-  const Eigen::Isometry3d registration = registration_isometry(reg);
+  const Eigen::Isometry3d registration =
+      registration_isometry({10.0, -20.0, 5.0}, {0.9659258262890683, 0.0, 0.25881904510252074, 0.0});
   TraineePoses poses(std::make_unique<StillPoses>(), learner, registration);
   auto own = std::make_shared<const sim::BreathingScript>(script.take());
   ClassroomBreathing breathing(std::make_unique<ScriptBreathing>(own, monotonic_ns()), learner);

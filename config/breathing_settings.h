@@ -1,0 +1,23 @@
+/// @file breathing_settings.h
+/// @brief [breathing] (and a scenario's [start]): the breathing pattern at t = 0 and the scenario that changes it,
+/// with its TOML reader (breathing_settings.cpp). Scenarios are config's own files; sim/breathing runs them.
+#pragma once
+
+#include <string>
+
+#include "config/toml_section.h"
+
+namespace lungar::config {
+
+struct BreathingSettings {
+  std::string preset = "normal";  ///< normal | emphysema | fibrosis
+  double rate_bpm = 12.0;
+  double ie_ratio = 0.5;          ///< inspiration : expiration time, 1:2 = 0.5
+  double tidal_volume_ml = 500.0;
+  std::string scenario;           ///< optional scenario TOML (relative to the config file)
+};
+
+/// Reads [breathing] over `b`; throws ConfigError naming the file, key and expectation.
+void read_breathing_settings(TomlSection s, BreathingSettings& b);
+
+}  // namespace lungar::config

@@ -1,0 +1,160 @@
+/// @file bench_frame.cpp
+/// @brief One Runtime per configuration over a shared scene, driven by the scripted clock.
+#include "platform/app/bench/bench_frame.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "platform/app/bench/scripted_inputs.h"
+#include "platform/app/bench/system_info.h"
+#include "platform/app/runtime_settings.h"
+#include "platform/output/headless_output.h"
+#include "sim/deform/deform_eq1.h"
+#include "sim/deform/deform_eq7.h"
+#include "sim/force/force_sh.h"
+#include "sim/force/gravity.h"
+
+namespace lungar::platform::bench {
+
+const char* to_string(Method m) {
+  switch (m) {
+    case Method::Gpu7:
+      return "gpu_eq7";
+    case Method::Cpu7:
+      return "cpu_eq7";
+    case Method::Cpu1:
+      return "cpu_eq1";
+    case Method::Rest:
+      return "undeformed";
+  }
+  return "?";
+}
+
+Settings bench_settings(const FrameConfig& c) {
+  Settings s;
+  s.display.output = Output::Headless;
+  s.hmd.view = c.stereo ? View::Stereo : View::Mono;
+  s.hmd.head_to_eye_mm = {0.0, 0.0, 0.0};
+  switch (c.method) {
+    case Method::Gpu7:
+      s.render.deform = Deform::Gpu;
+      break;
+    case Method::Cpu7:
+      s.render.deform = Deform::Cpu7;
+      break;
+    case Method::Cpu1:
+      s.render.deform = Deform::Cpu1;
+      break;
+    case Method::Rest:
+      s.render.deform = Deform::None;
+      break;
+  }
+  s.render.mode = c.mode;
+  s.render.stereo_strategy = c.strategy;
+  s.render.lod = c.lod;
+  s.render.point_size_px = c.point_size_px;
+  s.render.hud = false;
+  return s;
+}
+
+Result<std::unique_ptr<BenchScene>> BenchScene::create(std::shared_ptr<EglContext> context, sim::BakedAsset asset,
+                                                       std::string name) {
+  std::unique_ptr<BenchScene> b(new BenchScene());
+  b->context_ = std::move(context);
+  // The head looks at the middle of the pair's bounding box.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (std::size_t i = 0; i + 2 < asset.positions.size(); i += 3) {
+    const Eigen::Vector3d p(asset.positions[i], asset.positions[i + 1], asset.positions[i + 2]);
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  b->centre_ = 0.5 * (lo + hi);
+  auto scene = LungScene::create(std::move(asset), std::move(name));
+  if (!scene) return scene.with_context("");
+  b->scene_ = scene.take();
+  return b;
+}
+
+Result<std::unique_ptr<Runtime>> BenchScene::runtime_for(const FrameConfig& config) {
+  const Settings s = bench_settings(config);
+  auto output = HeadlessOutput::create(s.hmd, context_);
+  if (!output) return output.with_context("");
+  RuntimeParts parts;
+  parts.scene = scene_;
+  parts.output = output.take();
+  parts.poses = std::make_unique<ScriptedPoses>(centre_);
+  parts.breathing = std::make_unique<ScriptedBreathing>();
+  parts.clock = [this] { return now_ns_; };
+  return Runtime::create(runtime_config(s), std::move(parts));
+}
+
+Result<FrameResult> BenchScene::measure(const FrameConfig& config, const Timing& timing) {
+  auto runtime = runtime_for(config);
+  if (!runtime) return runtime.with_context("");
+  Runtime& r = **runtime;
+  FrameResult result;
+  std::string error;
+  result.stats = time_reps(
+      timing,
+      [&](long k) {
+        if (!error.empty()) return;  // an error stops the work; the timing is thrown away below
+        now_ns_ = k * kFrameStepNs;
+        if (Status st = r.frame(); !st) error = st.error();
+      },
+      &result.frames);
+  if (!error.empty()) return fail(error);
+  result.points_per_eye = r.last_draw().points_drawn[0];
+  result.load_1min = load_average_1min();
+  return result;
+}
+
+Result<PairedStats> BenchScene::measure_pair(const FrameConfig& a, const FrameConfig& b, const Timing& timing) {
+  auto ra = runtime_for(a);
+  if (!ra) return ra.with_context("");
+  auto rb = runtime_for(b);
+  if (!rb) return rb.with_context("");
+  std::string error;
+  auto frame_of = [&](Runtime& r) {
+    return [&](long k) {
+      if (!error.empty()) return;
+      now_ns_ = k * kFrameStepNs;
+      if (Status st = r.frame(); !st) error = st.error();
+    };
+  };
+  PairedStats p = time_reps_paired(timing, frame_of(**ra), frame_of(**rb));
+  if (!error.empty()) return fail(error);
+  return p;
+}
+
+RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
+  const sim::BakedAsset& a = scene_->asset();
+  std::vector<float> force(a.lungs.size() * a.coefficients()), positions(a.positions.size());
+  std::optional<sim::Eq1Deformer> eq1;
+  if (a.has_transfer_rows()) eq1.emplace(a);
+  return time_reps(timing, [&](long k) {
+    const double t = static_cast<double>(k * kFrameStepNs) * 1e-9;
+    const Eigen::Quaterniond q = scripted_turn(t);
+    const double dv = scripted_volume_ml(t);
+    switch (work) {
+      case CpuWork::ForceSh:
+        sim::force_sh(a, sim::ForceMode::exact, q, force.data());
+        break;
+      case CpuWork::Eq7:
+        sim::force_sh(a, sim::ForceMode::exact, q, force.data());
+        sim::deform_eq7(a, force, dv, positions);
+        break;
+      case CpuWork::Eq1:
+        if (eq1) eq1->deform(sim::gravity_in_lung_frame(q), dv, positions);
+        break;
+    }
+  });
+}
+
+Status BenchScene::snapshot(const FrameConfig& config, const std::string& png_path) {
+  auto runtime = runtime_for(config);
+  if (!runtime) return runtime.with_context("");
+  now_ns_ = 60 * kFrameStepNs;
+  return (*runtime)->final_frame(png_path);
+}
+
+}  // namespace lungar::platform::bench

@@ -1,0 +1,84 @@
+/// @file calibrate_command.cpp
+/// @brief Reads the fiducials, fits the registration, reports the fiducial registration error, writes the result.
+#include "platform/app/calibrate_command.h"
+
+#include <cstdio>
+
+#include "platform/app/settings_load.h"
+#include "drivers/decode/decoder.h"
+#include "drivers/decode/layout_toml.h"
+#include "drivers/decode/report_layout.h"
+#include "drivers/trk/trk_reader.h"
+
+namespace lungar::platform {
+
+namespace {
+
+/// The report layout a log was recorded with: its header's, else the config's, else the defaults.
+Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std::string& log_path,
+                                           const std::string& config_path) {
+  if (!log.header.layout_toml.empty()) {
+    return drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)");
+  }
+  if (config_path.empty()) return config::TrackerSettings{};
+  auto s = load_settings(config_path);
+  if (!s) return s.with_context("");
+  return s->trackers;
+}
+
+}  // namespace
+
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
+                                                            const std::string& config_path) {
+  auto loaded = drivers::load_trk(log_path);
+  if (!loaded) return loaded.with_context("");
+  auto trackers = log_layout(*loaded, log_path, config_path);
+  if (!trackers) return trackers.with_context("");
+  auto layout = drivers::make_layout(*trackers);
+  if (!layout) return layout.with_context(log_path + ": report layout: ");
+  std::vector<StylusSample> samples;
+  Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
+  const std::int64_t t0 = loaded->records.empty() ? 0 : loaded->records.front().t_arrival_ns;
+  for (const auto& rec : loaded->records) {
+    const drivers::DecodedReport r = drivers::decode_report(rec.report, *layout);
+    if (r.error != drivers::DecodeError::None) continue;  // malformed reports are never applied
+    for (int k = 0; k < r.count; ++k) {
+      const auto& pose = r.poses[static_cast<std::size_t>(k)];
+      const Eigen::Vector3d p = pose.position();
+      if (pose.role == drivers::Role::Patient) {
+        patient_q = pose.orientation().normalized();
+        patient_p = p;
+      } else if (pose.role == drivers::Role::Stylus) {
+        samples.push_back({static_cast<double>(rec.t_arrival_ns - t0) * 1e-9, patient_q.conjugate() * (p - patient_p)});
+      }
+    }
+  }
+  if (samples.empty()) return fail(log_path + ": expected stylus poses in the log, got none");
+  return find_dwell_points(samples);
+}
+
+int run_calibrate(const CalibrateOptions& o) {
+  auto say = [](const std::string& message) { std::fprintf(stderr, "lungar calibrate: %s\n", message.c_str()); };
+  auto model = read_points_csv(o.model_csv);
+  if (!model) return say(model.error()), 2;
+  if (o.stylus_csv.empty() == o.stylus_log.empty()) {
+    return say("expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk"), 2;
+  }
+  auto tracked =
+      o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path) : read_points_csv(o.stylus_csv);
+  if (!tracked) return say(tracked.error()), 2;
+  auto fitted = register_fiducials(*model, *tracked);
+  if (!fitted) return say(fitted.error() + " (" + (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv) + ")"), 2;
+  const Registration& r = *fitted;
+  if (Status written = write_registration_toml(o.out_path, r); !written) return say(written.error()), 1;
+  std::printf("registration from %d fiducials: RMS fiducial registration error %.3f mm (worst %.3f mm)\n", r.fiducials,
+              r.fre_rms_mm, r.fre_max_mm);
+  std::printf("  translation_mm = [%.3f, %.3f, %.3f], rotation_wxyz = [%.6f, %.6f, %.6f, %.6f]\n", r.translation_mm.x(),
+              r.translation_mm.y(), r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(),
+              r.rotation.z());
+  std::printf("written to %s (include it with --config, or copy the section into your profile)\n", o.out_path.c_str());
+  return 0;
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,220 @@
+/// @file demo_asset.cpp
+/// @brief Finds the demo's label map and lungar-bake, runs the bake once as a child process, caches the asset;
+///        the procedural pair is baked in-process.
+#include "platform/app/demo_asset.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "config/base/crc32.h"
+#include "config/config_paths.h"
+#include "sim/asset/asset_io.h"
+
+extern char** environ;
+
+namespace lungar::platform {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string cache_dir(const DemoAssetOptions& o) {
+  return o.cache_dir.empty() ? config::cache_dir(config::XdgDirs::from_environment()) : o.cache_dir;
+}
+
+/// The folder of the running executable ("" when /proc cannot say).
+fs::path exe_dir() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : self.parent_path();
+}
+
+bool is_file(const fs::path& p) {
+  std::error_code ec;
+  return !p.empty() && fs::is_regular_file(p, ec);
+}
+
+/// The shipped label map: $LUNGAR_DATA_DIR/lungs/, <exe dir>/../share/lungar/lungs/, the source tree.
+fs::path find_label_map(const DemoAssetOptions& o) {
+  std::vector<fs::path> places;
+  if (!o.data_dir.empty()) places.push_back(fs::path(o.data_dir) / "lungs");
+  if (const char* d = std::getenv("LUNGAR_DATA_DIR"); d && *d) places.push_back(fs::path(d) / "lungs");
+  if (const fs::path exe = exe_dir(); !exe.empty()) places.push_back(exe / ".." / "share" / "lungar" / "lungs");
+  places.push_back(fs::path(LUNGAR_SOURCE_DIR) / "sim" / "data" / "lungs");
+  for (const fs::path& p : places)
+    if (is_file(p / kDemoLabelMap)) return (p / kDemoLabelMap).lexically_normal();
+  return {};
+}
+
+/// lungar-bake beside the running lungar (installed), else the build tree's.
+fs::path find_bake_tool(const DemoAssetOptions& o) {
+  if (!o.bake_tool.empty()) return is_file(o.bake_tool) ? fs::path(o.bake_tool) : fs::path();
+  if (const fs::path exe = exe_dir(); is_file(exe / "lungar-bake")) return exe / "lungar-bake";
+  return is_file(LUNGAR_BAKE_TOOL) ? fs::path(LUNGAR_BAKE_TOOL) : fs::path();
+}
+
+/// Eight hex digits of the file's CRC-32: a changed map is a new cache entry ("" when unreadable).
+std::string content_key(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  if (!in.eof() && in.fail()) return "";
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08x", crc32(bytes.data(), bytes.size()));
+  return hex;
+}
+
+std::string ct_asset_path(const DemoAssetOptions& o, const fs::path& map) {
+  char name[200];
+  std::snprintf(name, sizeof name, "ct-%s-%s-n%u-L%u%s-v%u-b%u.lungbake", map.stem().c_str(), content_key(map).c_str(),
+                o.nodes, o.bands, o.transfer_rows ? "-rows" : "", sim::kAssetVersion, sim::kBakeRevision);
+  return (fs::path(cache_dir(o)) / name).string();
+}
+
+/// Runs `argv` (argv[0] a path) with the runtime's stdout and stderr, and waits for it.
+Status run_child(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  if (const int e = posix_spawn(&pid, args[0], nullptr, nullptr, args.data(), environ); e != 0)
+    return fail(argv[0] + ": cannot start it: " + std::strerror(e));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return fail(argv[0] + ": cannot wait for it: " + std::strerror(errno));
+  if (WIFSIGNALED(status)) return fail(argv[0] + ": stopped by signal " + std::to_string(WTERMSIG(status)));
+  if (WEXITSTATUS(status) != 0)
+    return fail(argv[0] + ": failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+  return ok();
+}
+
+/// The CT lungs: loaded from the cache, or baked by lungar-bake into it first.
+Result<DrawnAsset> ct_asset(const DemoAssetOptions& o, const fs::path& map, const fs::path& tool,
+                            const std::function<void(const std::string&)>& log) {
+  const std::string path = ct_asset_path(o, map);
+  const std::string name = fs::path(path).filename().string();
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    auto loaded = sim::load_asset(path);
+    if (loaded) return DrawnAsset{loaded.take(), name, true};
+    log("cached demo asset unusable (" + loaded.error() + "); baking it again");
+  }
+  log("baking the demo lungs from the CT label map " + map.string() + " with " + tool.string() +
+      " (once; about a minute; cached at " + path + ")");
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  std::vector<std::string> argv = {tool.string(),
+                                   "--labelmap",
+                                   map.string(),
+                                   "--label",
+                                   "right=2",
+                                   "--label",
+                                   "left=3",
+                                   "--nodes",
+                                   std::to_string(o.nodes),
+                                   "--bands",
+                                   std::to_string(o.bands),
+                                   "--no-evaluate",
+                                   "--out",
+                                   path};
+  if (!o.transfer_rows) argv.push_back("--no-transfer-rows");
+  if (Status s = run_child(argv); !s) return fail("demo asset: " + s.error());
+  auto loaded = sim::load_asset(path);
+  if (!loaded) return fail("demo asset: " + loaded.error());
+  return DrawnAsset{loaded.take(), name, true};
+}
+
+}  // namespace
+
+bool centre_demo_lungs(const DrawnAsset& drawn, RegistrationSettings& r) {
+  const RegistrationSettings identity;
+  if (!drawn.demo_ct || r.translation_mm != identity.translation_mm || r.rotation_wxyz != identity.rotation_wxyz ||
+      drawn.asset.positions.empty())
+    return false;
+  std::array<float, 3> lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+  for (std::size_t i = 0; i < drawn.asset.positions.size(); ++i) {
+    lo[i % 3] = std::min(lo[i % 3], drawn.asset.positions[i]);
+    hi[i % 3] = std::max(hi[i % 3], drawn.asset.positions[i]);
+  }
+  for (int k = 0; k < 3; ++k) r.translation_mm[k] = -0.5 * (static_cast<double>(lo[k]) + hi[k]);
+  return true;
+}
+
+std::string demo_asset_path(const DemoAssetOptions& o) {
+  char name[160];
+  std::snprintf(name, sizeof name, "procedural-n%u-s%llu-L%u%s-v%u-b%u.lungbake", o.nodes,
+                static_cast<unsigned long long>(o.seed), o.bands, o.transfer_rows ? "-rows" : "", sim::kAssetVersion,
+                sim::kBakeRevision);
+  return (fs::path(cache_dir(o)) / name).string();
+}
+
+std::string demo_cache_path(const DemoAssetOptions& o) {
+  if (!o.procedural) {
+    const fs::path map = find_label_map(o);
+    if (!map.empty() && !find_bake_tool(o).empty()) return ct_asset_path(o, map);
+  }
+  return demo_asset_path(o);
+}
+
+Result<DrawnAsset> load_drawn_asset(const std::string& configured_path, const DemoAssetOptions& o,
+                                    const std::function<void(const std::string&)>& log) {
+  if (!configured_path.empty()) {
+    auto loaded = sim::load_asset(configured_path);
+    if (!loaded) return fail(loaded.error());
+    return DrawnAsset{loaded.take(), configured_path};
+  }
+  if (!o.procedural) {
+    const fs::path map = find_label_map(o), tool = find_bake_tool(o);
+    if (!map.empty() && !tool.empty()) return ct_asset(o, map, tool, log);
+    log(std::string("warning: ") +
+        (map.empty() ? "no CT label map (" + std::string(kDemoLabelMap) + ") found"
+                     : "no lungar-bake found beside lungar or in the build tree") +
+        "; drawing the procedural lungs instead (set LUNGAR_DATA_DIR, or see sim/data/lungs/README.md)");
+  }
+  auto baked = load_or_bake_demo_asset(o, log);
+  if (!baked) return fail(baked.error());
+  return DrawnAsset{baked.take(), fs::path(demo_asset_path(o)).filename().string()};
+}
+
+Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
+                                                const std::function<void(const std::string&)>& log) {
+  const std::string path = demo_asset_path(o);
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    auto loaded = sim::load_asset(path);
+    if (loaded) return loaded;
+    log("cached demo asset unusable (" + loaded.error() + "); baking it again");
+  }
+  log("baking the procedural demo lungs (" + std::to_string(o.nodes) + " nodes, once; cached at " + path + ")");
+  sim::BakeOptions bake;
+  bake.bands = o.bands;
+  bake.transfer_rows = o.transfer_rows;
+  bake.evaluate = false;
+  int last_percent = -1;
+  std::string last_stage;
+  auto baked = sim::bake_procedural(o.nodes, o.seed, bake, [&](std::string_view stage, double fraction) {
+    const int percent = static_cast<int>(fraction * 100.0);
+    if (stage != last_stage || percent / 25 != last_percent / 25) {
+      last_stage = std::string(stage);
+      last_percent = percent;
+      log("  bake: " + last_stage + " " + std::to_string(percent) + " %");
+    }
+  });
+  if (!baked) return fail("procedural demo asset: " + baked.error());
+  fs::create_directories(fs::path(path).parent_path(), ec);
+  if (auto written = sim::write_asset(baked->asset, path); !written) {
+    log("could not cache the demo asset (" + written.error() + "); going on without the cache");
+  }
+  return std::move(baked->asset);
+}
+
+}  // namespace lungar::platform

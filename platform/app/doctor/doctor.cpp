@@ -1,0 +1,39 @@
+/// @file doctor.cpp
+/// @brief `lungar doctor`: the settings the runtime would use, every check against them, one line each.
+#include "platform/app/doctor/doctor.h"
+
+#include <cstdio>
+
+#include "platform/app/doctor/checks.h"
+#include "platform/app/settings_load.h"
+
+namespace lungar::platform::doctor {
+
+std::vector<Check> run_checks(const std::string& config_path, const DoctorEnv& env) {
+  const config::ConfigChoice choice = config::choose_config(config_path, env.xdg);
+  const Result<Settings> loaded = load_chosen_settings(choice);
+  // A settings file that does not parse fails its check; the others still run, on the defaults.
+  const Settings s = loaded ? *loaded : Settings{};
+  std::vector<Check> checks;
+  checks.push_back(check_config(choice, loaded));
+  checks.push_back(check_gles());
+  checks.push_back(check_output(s, env));
+  checks.push_back(check_tracker(s.trackers, env));
+  checks.push_back(check_asset(s, env));
+  checks.push_back(check_disk(env));
+  return checks;
+}
+
+int run_doctor(const std::string& config_path) {
+  const auto checks = run_checks(config_path, DoctorEnv::from_environment());
+  int failures = 0, warnings = 0;
+  for (const auto& c : checks) {
+    std::printf("%s\n", format_check(c).c_str());
+    failures += c.verdict == Verdict::Fail;
+    warnings += c.verdict == Verdict::Warn;
+  }
+  std::printf("lungar doctor: %zu checks, %d failed, %d warnings\n", checks.size(), failures, warnings);
+  return failures == 0 ? 0 : 1;
+}
+
+}  // namespace lungar::platform::doctor

@@ -1,0 +1,32 @@
+/// @file join_classroom.cpp
+/// @brief [sync] -> the station, wrapped around the Runtime's pose source and breathing clock.
+#include "platform/app/join_classroom.h"
+
+#include "platform/runtime/patient_force.h"
+#include "platform/sync/classroom_breathing.h"
+#include "platform/sync/instructor_publisher.h"
+#include "platform/sync/trainee_poses.h"
+
+namespace lungar::platform::sync {
+
+Result<std::shared_ptr<ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
+                                                         const sim::BreathingScript& script, std::int64_t t0_ns,
+                                                         RuntimeParts& parts,
+                                                         std::function<void(const std::string&)> log) {
+  auto opened = ClassroomStation::open(s.sync, std::move(log), clock_skew_ns);
+  if (!opened) return Error{opened.error()};
+  auto station = std::make_shared<ClassroomStation>(opened.take());
+  if (Instructor* instructor = station->instructor()) {
+    if (Status shared = instructor->share_breathing(script.start, script.events, t0_ns); !shared)
+      return shared.with_context("");
+    parts.listeners.push_back(std::make_shared<InstructorPublisher>(station));
+  } else if (station->trainee() != nullptr) {
+    parts.poses = std::make_unique<TraineePoses>(
+        std::move(parts.poses), station,
+        registration_isometry(s.registration.translation_mm, s.registration.rotation_wxyz));
+  }
+  parts.breathing = std::make_unique<ClassroomBreathing>(std::move(parts.breathing), station);
+  return station;
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,73 @@
+/// @file lungar_main.cpp
+/// @brief The `lungar` entry point: the runtime (no arguments: the demo), `lungar calibrate` and `lungar doctor`.
+#include <csignal>
+#include <cstdio>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "config/base/log_line.h"
+#include "config/config_paths.h"
+#include "lungar/version.h"
+#include "platform/app/calibrate_command.h"
+#include "platform/app/doctor/doctor.h"
+#include "platform/app/run.h"
+#include "platform/app/settings_load.h"
+
+namespace {
+
+void on_signal(int) { lungar::platform::g_stop_requested.store(true); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using lungar::platform::RuntimeOptions;
+  CLI::App app{
+      "lungar: breathing 3-D lungs superimposed on a patient simulator, for a head-mounted display.\n"
+      "With no arguments it runs the demo: real lungs from CT (the shipped label map, baked once by lungar-bake and "
+      "cached), the mock tracker turning the patient from upright "
+      "to supine, normal breathing, for 10 s; in a window when DISPLAY is set, headless otherwise; then a snapshot "
+      "and stats in $XDG_STATE_HOME/lungar/ (~/.local/state/lungar/) and a summary."};
+  app.set_version_flag("--version", std::string("lungar ") + LUNGAR_VERSION);
+  RuntimeOptions o;
+  lungar::platform::add_runtime_options(app, o);
+  CLI::App* doctor =
+      app.add_subcommand("doctor", "check this machine's set-up, one line each with the fix")->fallthrough();
+
+  lungar::platform::CalibrateOptions c;
+  CLI::App* calibrate = app.add_subcommand(
+      "calibrate", "register the lung model onto the patient simulator from paired fiducials (Umeyama)");
+  calibrate->add_option("--model", c.model_csv, "model fiducials, CSV of x, y, z in mm (lung frame)")->required();
+  calibrate->add_option("--stylus", c.stylus_csv, "touched fiducials, CSV of x, y, z in mm (patient-tracker frame)");
+  calibrate->add_option("--stylus-log", c.stylus_log,
+                        "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
+  calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
+  calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  if (*calibrate) return lungar::platform::run_calibrate(c);
+  if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);
+
+  const auto dirs = lungar::config::XdgDirs::from_environment();
+  const auto chosen = lungar::config::choose_config(o.config_path, dirs);
+  auto loaded = lungar::platform::load_chosen_settings(chosen);
+  if (!loaded) {
+    std::fprintf(stderr, "lungar: %s\n", loaded.error().c_str());
+    return 2;
+  }
+  lungar::log_line("lungar", chosen.describe());
+  lungar::platform::Settings settings = loaded.take();
+  o.record_requested = app.get_option("--record")->count() > 0;
+  lungar::platform::default_output_paths(o, lungar::config::state_dir(dirs));
+  if (const lungar::Status applied = lungar::platform::apply_overrides(o, settings); !applied) {
+    std::fprintf(stderr, "lungar: %s\n", applied.error().c_str());
+    return 2;
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  return lungar::platform::run_runtime(settings, o);
+}

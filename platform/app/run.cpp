@@ -1,0 +1,168 @@
+/// @file run.cpp
+/// @brief Wiring a Runtime from the settings, the frame loop's limits, and the outputs of a run.
+#include "platform/app/run.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "config/base/atomic_file.h"
+#include "config/base/clock.h"
+#include "platform/app/settings_load.h"
+#include "platform/app/demo_asset.h"
+#include "platform/app/join_classroom.h"
+#include "platform/app/log.h"
+#include "platform/app/open_output.h"
+#include "platform/app/runtime_settings.h"
+#include "platform/app/scenario_adapter.h"
+#include "platform/app/scenario_patient.h"
+#include "platform/app/script_breathing.h"
+#include "platform/app/tracker_poses.h"
+#include "platform/runtime/runtime.h"
+#include "sim/asset/asset_io.h"
+
+namespace lungar::platform {
+
+std::atomic<bool> g_stop_requested{false};
+
+namespace {
+
+constexpr double kDemoSeconds = 10.0;
+const char* const kDefaultSnapshot = "out/snapshot.png";
+const char* const kDefaultStats = "out/stats.json";
+
+/// The configured asset, or the demo's lungs baked once and cached (the CT pair, centred on the patient; the
+/// procedural one on --procedural); with the name the stats JSON reports.
+Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
+  DemoAssetOptions demo;
+  demo.transfer_rows = s.render.deform == Deform::Cpu1;
+  demo.procedural = procedural;
+  Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
+  if (!drawn) return drawn.with_context("");
+  if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
+  return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
+}
+
+/// This station's tracker, and the breathing script with the teaching scenario's turns when the mock tracker
+/// has no real patient to follow.
+Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
+                   RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
+  auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
+  if (!script) return script.with_context("");
+  auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
+  drivers::TrackerOptions topts;
+  topts.record_path = o.record_path;
+  topts.log = [](const std::string& line) { log_line(line); };
+  auto made = drivers::make_tracker(s.trackers, topts);
+  if (!made) return made.with_context("tracker: ");
+  parts.poses = std::make_unique<TrackerPoses>(made.take());
+  if (s.trackers.source == config::TrackerSource::Mock && !shared_script->orientation.turns().empty()) {
+    parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
+  }
+  parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
+  auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, t0,
+                                     parts, [](const std::string& line) { log_line(line); });
+  if (!joined) return joined.with_context("");
+  classroom = joined.take();
+  return ok();
+}
+
+/// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
+Status open_output_and_scene(Settings& s, bool procedural, RuntimeParts& parts) {
+  auto output = open_output(s, log_line);
+  if (!output) return output.with_context("");
+  parts.output = output.take();
+  log_line("output: " + parts.output->describe());
+  auto scene = load_scene(s, procedural);
+  if (!scene) return scene.with_context("");
+  parts.scene = scene.take();
+  const sim::BakedAsset& a = parts.scene->asset();
+  log_line("asset: " + parts.scene->name() + ": " + std::to_string(a.vertex_count()) + " nodes, " +
+           std::to_string(a.lungs.size()) + " lungs, " + std::to_string(a.coefficients()) + " SH coefficients");
+  return ok();
+}
+
+void log_limit(const RuntimeOptions& o, double limit_s) {
+  char limit[96];
+  if (o.frames && limit_s > 0) {
+    std::snprintf(limit, sizeof limit, "%ld frames or %.1f s", *o.frames, limit_s);
+  } else if (o.frames) {
+    std::snprintf(limit, sizeof limit, "%ld frames", *o.frames);
+  } else if (limit_s > 0) {
+    std::snprintf(limit, sizeof limit, "%.1f s", limit_s);
+  } else {
+    std::snprintf(limit, sizeof limit, "until stopped");
+  }
+  log_line(std::string("running ") + limit + " (Ctrl-C stops)");
+}
+
+/// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
+Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
+                  const sync::ClassroomStation& classroom) {
+  while (!g_stop_requested.load()) {
+    if (const std::string refused = classroom.fatal_error(); !refused.empty()) return fail(refused);
+    if (o.frames && runtime.frames() >= *o.frames) break;
+    if (limit_s > 0 && seconds_between(t0, monotonic_ns()) >= limit_s) break;
+    if (!runtime.keep_running()) {
+      log_line(runtime.poses().finished() ? "replay finished" : "output closed");
+      break;
+    }
+    if (Status drawn = runtime.frame(); !drawn) return drawn;
+  }
+  if (g_stop_requested.load()) log_line("stop requested; writing the outputs");
+  return ok();
+}
+
+/// The snapshot (a last frame, not counted) and the stats JSON; every output is written whole or not at all.
+int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool frames_ok) {
+  int exit_code = frames_ok ? 0 : 1;
+  const std::string snapshot = !o.snapshot_path.empty() ? o.snapshot_path : std::string(kDefaultSnapshot);
+  const std::string stats_path = !o.stats_json_path.empty() ? o.stats_json_path : std::string(kDefaultStats);
+  if (frames_ok) {
+    if (Status shot = runtime.final_frame(snapshot); !shot) {
+      log_line("error: " + shot.error());
+      exit_code = 1;
+    } else {
+      log_line("snapshot: " + snapshot);
+    }
+  }
+  runtime.poses().stop();
+  if (Status written = write_file_atomically(stats_path, runtime.stats_json(wall_s).dump(2) + "\n"); !written) {
+    log_line("error: stats: " + written.error());
+    exit_code = 1;
+  } else {
+    log_line("stats: " + stats_path);
+  }
+  log_line(runtime.summary(wall_s));
+  return exit_code;
+}
+
+}  // namespace
+
+int run_runtime(const Settings& configured, const RuntimeOptions& o) {
+  Settings s = configured;  // the demo's CT lungs may set the registration
+  log_line(summarize(s));
+  const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
+  RuntimeParts parts;
+  if (Status opened = open_output_and_scene(s, o.procedural, parts); !opened) {
+    log_line("error: " + opened.error());
+    return 1;
+  }
+  const std::int64_t t0 = monotonic_ns();  // breathing, the scenario and the time limit start now
+  std::shared_ptr<sync::ClassroomStation> classroom;
+  if (Status sources = add_sources(s, o, limit_s, t0, parts, classroom); !sources) {
+    log_line("error: " + sources.error());
+    return 1;
+  }
+  log_line("tracker: " + parts.poses->describe());
+  auto runtime = Runtime::create(runtime_config(s), std::move(parts));
+  if (!runtime) {
+    log_line("error: " + runtime.error());
+    return 1;
+  }
+  log_limit(o, limit_s);
+  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
+  if (!frames) log_line("error: " + frames.error());
+  return write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
+}
+
+}  // namespace lungar::platform

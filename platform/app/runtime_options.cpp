@@ -1,0 +1,150 @@
+/// @file runtime_options.cpp
+/// @brief Command-line options and their overrides on top of the config file.
+#include "platform/app/runtime_options.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "config/base/clock.h"
+
+namespace lungar::platform {
+
+namespace {
+
+template <class E, std::size_t N>
+std::vector<std::string> names_of(const EnumNames<E, N>& table) {
+  std::vector<std::string> names;
+  for (const auto& [value, name] : table.entries) names.emplace_back(name);
+  return names;
+}
+
+/// `text` (when given) as a value of `table`, into `out`.
+template <class E, std::size_t N>
+Status override_choice(const char* option, const std::string& text, const EnumNames<E, N>& table, E& out) {
+  if (text.empty()) return ok();
+  const auto value = table.parse(text);
+  if (!value) return fail(std::string(option) + ": expected " + table.expected() + ", got '" + text + "'");
+  out = *value;
+  return ok();
+}
+
+/// "igtl:HOST" or "igtl:HOST:PORT" (the config's port stands in when it is left out).
+Status override_igtl(const std::string& tracker, config::TrackerSettings& t) {
+  t.source = config::TrackerSource::Igtl;
+  const std::string rest = tracker.substr(5);
+  const std::size_t colon = rest.rfind(':');
+  const std::string host = rest.substr(0, colon);
+  if (host.empty()) return fail("--tracker: expected igtl:HOST[:PORT] with a host, got '" + tracker + "'");
+  t.igtl.host = host;
+  if (colon == std::string::npos) return ok();
+  const std::string port = rest.substr(colon + 1);
+  char* end = nullptr;
+  const long p = std::strtol(port.c_str(), &end, 10);
+  if (port.empty() || *end != '\0' || p < 1 || p > 65535) {
+    return fail("--tracker: expected a port in [1, 65535] after igtl:HOST:, got '" + port + "'");
+  }
+  t.igtl.port = static_cast<int>(p);
+  return ok();
+}
+
+Status override_tracker(const std::string& tracker, config::TrackerSettings& t) {
+  if (tracker.empty()) return ok();
+  if (tracker.rfind("replay:", 0) == 0 && tracker.size() > 7) {
+    t.source = config::TrackerSource::Replay;
+    t.replay_file = tracker.substr(7);
+    return ok();
+  }
+  if (tracker.rfind("igtl:", 0) == 0) return override_igtl(tracker, t);
+  const auto source = config::kTrackerSourceNames.parse(tracker);
+  if (!source || *source == config::TrackerSource::Replay) {
+    return fail("--tracker: expected mock, hid, igtl[:HOST[:PORT]] or replay:FILE.trk, got '" + tracker + "'");
+  }
+  t.source = *source;
+  return ok();
+}
+
+}  // namespace
+
+void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
+  app.add_option("--config", o.config_path,
+                 "settings TOML (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, else "
+                 "built-in; every key: default.toml)");
+  auto* asset = app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the demo's CT lungs, cached)");
+  app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
+      ->excludes(asset);
+  app.add_option("--scenario", o.scenario_path,
+                 "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
+  app.add_option("--tracker", o.tracker,
+                 "tracker source: mock | replay:FILE.trk | hid | igtl[:HOST[:PORT]] (OpenIGTLink, PlusServer or 3D "
+                 "Slicer; default: from the config)");
+  app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
+  app.add_option("--output", o.output,
+                 "auto | window | fullscreen | headless | openxr (a headset through its OpenXR runtime)")
+      ->check(CLI::IsMember(names_of(kOutputNames)));
+  app.add_flag("--fullscreen", o.fullscreen, "full screen on display.x11_output (the HMD), as the user unit runs it");
+  app.add_option("--frames", o.frames, "stop after N frames");
+  app.add_option("--seconds", o.seconds, "stop after S seconds (default 10 unless --frames; 0: until stopped)");
+  app.add_option("--view", o.view, "mono | stereo (default: from the config)")
+      ->check(CLI::IsMember(names_of(kViewNames)));
+  app.add_option("--mode", o.mode, "points | mesh")->check(CLI::IsMember(names_of(render::kDrawModeNames)));
+  app.add_option("--deform", o.deform,
+                 "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (the rest shape)")
+      ->check(CLI::IsMember(names_of(kDeformNames)));
+  app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default $XDG_STATE_HOME/lungar/snapshot.png)");
+  app.add_option("--stats-json", o.stats_json_path, "stats JSON (default $XDG_STATE_HOME/lungar/stats.json)");
+  app.add_option("--record", o.record_path,
+                 "record the raw tracker reports into FILE.trk (no FILE: into $XDG_STATE_HOME/lungar/recordings/)")
+      ->expected(0, 1);
+  app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
+      ->check(CLI::IsMember(names_of(sync::kSyncRoleNames)));
+  app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
+  app.add_option("--sync-domain", o.sync_domain, "the DDS domain id [0, 232] (default: sync.domain)");
+  app.add_option("--station", o.station, "this station's name in the classroom (default: host/pid)");
+  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "tests: pretend this station's clock is off by MS");
+}
+
+Status apply_overrides(const RuntimeOptions& o, Settings& s) {
+  if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
+  if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
+  if (Status out = override_choice("--output", o.output, kOutputNames, s.display.output); !out) return out;
+  if (o.fullscreen) s.display.output = Output::Fullscreen;
+  if (o.headless) s.display.output = Output::Headless;
+  if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
+  if (Status v = override_choice("--view", o.view, kViewNames, s.hmd.view); !v) return v;
+  if (Status m = override_choice("--mode", o.mode, render::kDrawModeNames, s.render.mode); !m) return m;
+  if (Status d = override_choice("--deform", o.deform, kDeformNames, s.render.deform); !d) return d;
+  if (o.frames && *o.frames <= 0) {
+    return fail("--frames: expected a positive number of frames, got " + std::to_string(*o.frames));
+  }
+  if (o.seconds && !(*o.seconds >= 0)) {
+    return fail("--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds));
+  }
+  if (Status r = override_choice("--sync", o.sync, sync::kSyncRoleNames, s.sync.role); !r) return r;
+  if (!o.classroom.empty()) s.sync.classroom = o.classroom;
+  if (o.sync_domain) {
+    if (*o.sync_domain < 0 || *o.sync_domain > 232) {
+      return fail("--sync-domain: expected a DDS domain id in [0, 232], got " + std::to_string(*o.sync_domain));
+    }
+    s.sync.domain = *o.sync_domain;
+  }
+  if (!o.station.empty()) s.sync.station = o.station;
+  return ok();
+}
+
+void default_output_paths(RuntimeOptions& o, const std::string& state_dir) {
+  if (o.snapshot_path.empty()) o.snapshot_path = state_dir + "/snapshot.png";
+  if (o.stats_json_path.empty()) o.stats_json_path = state_dir + "/stats.json";
+  if (o.record_requested && o.record_path.empty()) {
+    std::string stamp = utc_timestamp();
+    std::replace(stamp.begin(), stamp.end(), ':', '-');  // no colons: they trouble scp and other tools
+    std::error_code ec;
+    std::filesystem::create_directories(state_dir + "/recordings", ec);  // the .trk writer makes no folders
+    o.record_path = state_dir + "/recordings/" + stamp + ".trk";
+  }
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,68 @@
+/// @file settings.h
+/// @brief lungar's whole settings tree, seen here and nowhere else: each part is the type of the library that
+/// reads it ([display] and [hmd] the outputs', [trackers] the drivers', [sync] the classroom's, [breathing]
+/// config's), and the parts only the program itself uses are declared below. The values are the defaults;
+/// `config/default.toml` documents each key and its unit; settings_load.h overlays a TOML file on them.
+/// @ingroup platform
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "config/base/enum_names.h"
+#include "config/breathing_settings.h"
+#include "config/settings.h"
+#include "platform/output/output_settings.h"
+#include "platform/runtime/runtime_config.h"
+#include "platform/sync/sync_settings.h"
+#include "render/renderer.h"
+#include "sim/force/force_sh.h"
+
+namespace lungar::platform {
+
+/// [render]: how the lungs are deformed and drawn.
+struct RenderSettings {
+  render::DrawMode mode = render::DrawMode::Points;
+  double point_size_px = 5.0;
+  bool overlay_rest = false;
+  Deform deform = Deform::Gpu;
+  render::StereoStrategy stereo_strategy = render::StereoStrategy::PerEye;  ///< docs/measurements.md compares both
+  bool lod = true;
+  bool half_float = false;
+  bool hud = true;
+  std::array<double, 3> color_left = {0.90, 0.45, 0.45};
+  std::array<double, 3> color_right = {0.45, 0.60, 0.95};
+  std::array<double, 3> background = {0.0, 0.0, 0.0};
+};
+
+/// [registration]: where the lung model sits on the patient sensor, and the OpenXR space in the tracker world.
+struct RegistrationSettings {
+  std::array<double, 3> translation_mm = {0.0, 0.0, 0.0};        ///< lung model -> patient tracker
+  std::array<double, 4> rotation_wxyz = {1.0, 0.0, 0.0, 0.0};    ///< unit quaternion, model -> tracker
+  /// The OpenXR reference space's pose in the tracker world (the runtime's tracking -> the trackers'), with
+  /// display.openxr.head = "openxr". Default: LOCAL's origin (the head where the session started) at the default
+  /// viewer's eyes, 0.8 m in front of the patient and looking at it, as the window output's default view.
+  std::array<double, 3> xr_space_translation_mm = {0.0, -801.1, 1267.2};
+  std::array<double, 4> xr_space_rotation_wxyz = {0.83485, 0.55048, 0.0, 0.0};
+};
+
+/// [sim]: the baked asset and how the patient's orientation becomes the force.
+struct SimSettings {
+  std::string asset;  ///< baked asset; empty: the demo's lungs, baked once and cached
+  sim::ForceMode orientation_mode = sim::ForceMode::exact;
+};
+
+/// The whole tree. `source` names the file it came from ("<defaults>" when none).
+struct Settings {
+  DisplaySettings display;
+  HmdSettings hmd;
+  RenderSettings render;
+  config::BreathingSettings breathing;
+  config::TrackerSettings trackers;
+  RegistrationSettings registration;
+  SimSettings sim;
+  sync::SyncSettings sync;
+  std::string source = "<defaults>";
+};
+
+}  // namespace lungar::platform

@@ -1,0 +1,123 @@
+/// @file settings_load.cpp
+/// @brief The settings tree's tables, each read by its owner's reader; the keys only the program uses ([render],
+/// [registration], [sim]) are read here.
+#include "platform/app/settings_load.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "config/settings_load.h"
+#include "config/toml_section.h"
+
+namespace lungar::platform {
+
+namespace {
+
+using config::TomlSection;
+
+void read_render(TomlSection s, RenderSettings& r) {
+  s.choice("mode", r.mode, render::kDrawModeNames);
+  s.number("point_size_px", r.point_size_px, 1.0, 64.0, "pixels");
+  s.boolean("overlay_rest", r.overlay_rest);
+  s.choice("deform", r.deform, kDeformNames);
+  s.choice("stereo_strategy", r.stereo_strategy, render::kStereoStrategyNames);
+  s.boolean("lod", r.lod);
+  s.boolean("half_float", r.half_float);
+  s.boolean("hud", r.hud);
+  s.numbers("color_left", r.color_left, 0.0, 1.0, "(linear RGB)");
+  s.numbers("color_right", r.color_right, 0.0, 1.0, "(linear RGB)");
+  s.numbers("background", r.background, 0.0, 1.0, "(linear RGB)");
+  s.finish();
+}
+
+// A rigid pose: translation in mm, rotation a unit quaternion (w, x, y, z).
+void read_pose(TomlSection& s, const char* translation_key, std::array<double, 3>& t, const char* rotation_key,
+               std::array<double, 4>& q) {
+  s.numbers(translation_key, t, -1e4, 1e4, "mm");
+  s.numbers(rotation_key, q, -1.0, 1.0, "");
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (std::abs(norm - 1.0) > 1e-3) {
+    s.fail(rotation_key, "expected a unit quaternion (norm 1 within 1e-3), got norm " + std::to_string(norm));
+  }
+}
+
+void read_registration(TomlSection s, RegistrationSettings& r) {
+  read_pose(s, "translation_mm", r.translation_mm, "rotation_wxyz", r.rotation_wxyz);
+  read_pose(s, "xr_space_translation_mm", r.xr_space_translation_mm, "xr_space_rotation_wxyz",
+            r.xr_space_rotation_wxyz);
+  s.finish();
+}
+
+void read_sim(TomlSection s, SimSettings& m) {
+  s.text("asset", m.asset);
+  s.choice("orientation_mode", m.orientation_mode, sim::kForceModeNames);
+  s.finish();
+}
+
+Result<Settings> parse(const std::string& text, const std::string& name) {
+  auto parsed = config::parse_toml(text, name);
+  if (!parsed) return parsed.with_context("");
+  Settings s;
+  s.source = name;
+  try {
+    TomlSection top(&*parsed, "", name);
+    read_display_settings(top.section("display"), s.display);
+    read_hmd_settings(top.section("hmd"), s.hmd);
+    read_render(top.section("render"), s.render);
+    config::read_breathing_settings(top.section("breathing"), s.breathing);
+    config::read_tracker_settings(top.section("trackers"), s.trackers);
+    read_registration(top.section("registration"), s.registration);
+    read_sim(top.section("sim"), s.sim);
+    sync::read_sync_settings(top.section("sync"), s.sync);
+    top.finish();
+  } catch (const config::ConfigError& e) {
+    return fail(e.what());
+  }
+  return s;
+}
+
+}  // namespace
+
+Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name) {
+  return parse(toml_text, name);
+}
+
+Result<Settings> load_settings(const std::string& path) {
+  auto text = config::read_toml_file(path, "config");
+  if (!text) return text.with_context("");
+  auto r = parse(*text, path);
+  if (r) {
+    // Relative paths inside a config are relative to the config's folder.
+    const auto dir = std::filesystem::path(path).parent_path();
+    auto resolve = [&](std::string& p) {
+      if (!p.empty() && std::filesystem::path(p).is_relative()) p = (dir / p).lexically_normal().string();
+    };
+    resolve(r->breathing.scenario);
+    resolve(r->trackers.replay_file);
+    resolve(r->sim.asset);
+    resolve(r->sync.cyclonedds_xml);
+  }
+  return r;
+}
+
+Result<Settings> load_chosen_settings(const config::ConfigChoice& choice) {
+  if (choice.path.empty()) return Settings{};
+  return load_settings(choice.path);
+}
+
+std::string summarize(const Settings& s) {
+  std::ostringstream o;
+  o << "config " << s.source << ": output " << to_string(s.display.output)
+    << (s.display.output == Output::OpenXr ? std::string(" (head ") + to_string(s.display.openxr.head) + ")" : "")
+    << ", view " << to_string(s.hmd.view) << " (" << s.hmd.eye_width_px << "x" << s.hmd.eye_height_px
+    << " per eye, IPD " << s.hmd.ipd_mm << " mm)"
+    << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
+    << to_string(s.render.deform) << ", breathing " << s.breathing.preset << " " << s.breathing.rate_bpm
+    << "/min V_T " << s.breathing.tidal_volume_ml << " mL, tracker " << config::to_string(s.trackers.source)
+    << (s.trackers.source == config::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())
+    << ", orientation " << sim::to_string(s.sim.orientation_mode);
+  return o.str();
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,27 @@
+/// @file settings_load.h
+/// @brief Loading the whole settings tree from TOML: each table read by the reader of the library that owns it,
+/// relative paths made relative to the config's folder, and one clear error naming the file, line and key.
+/// @ingroup platform
+#pragma once
+
+#include <string>
+
+#include "config/base/result.h"
+#include "config/config_paths.h"
+#include "platform/app/settings.h"
+
+namespace lungar::platform {
+
+/// The defaults overlaid with `path`'s keys; relative paths inside are made relative to its folder.
+Result<Settings> load_settings(const std::string& path);
+
+/// The defaults overlaid with TOML text; `name` is what errors call it.
+Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name);
+
+/// The chosen file loaded over the defaults (or the defaults); the error names the file, the line and the key.
+Result<Settings> load_chosen_settings(const config::ConfigChoice& choice);
+
+/// One log line: output, view, mode, deform, breathing, tracker, orientation.
+std::string summarize(const Settings& s);
+
+}  // namespace lungar::platform

@@ -1,0 +1,265 @@
+// Tests of config/: the shipped profile, the overlay on defaults, and one specific error per kind of bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <array>
+#include <cctype>
+#include <string>
+
+#include "platform/app/settings_load.h"
+
+using lungar::platform::load_settings;
+using lungar::platform::load_settings_from_string;
+using lungar::platform::Settings;
+
+namespace {
+
+const std::string kDefaultToml = std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml";
+
+std::string error_of(const std::string& toml) {
+  auto r = load_settings_from_string(toml, "bad.toml");
+  EXPECT_FALSE(r) << "expected an error for:\n" << toml;
+  return r.error();
+}
+
+}  // namespace
+
+TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
+  auto r = load_settings(kDefaultToml);
+  ASSERT_TRUE(r) << r.error();
+  const Settings d;
+  const Settings& s = *r;
+  EXPECT_EQ(s.display.width_px, d.display.width_px);
+  EXPECT_EQ(s.hmd.eye_width_px, d.hmd.eye_width_px);
+  EXPECT_DOUBLE_EQ(s.hmd.ipd_mm, d.hmd.ipd_mm);
+  EXPECT_EQ(s.hmd.head_to_eye_mm, d.hmd.head_to_eye_mm);
+  EXPECT_EQ(s.hmd.lens.k1, d.hmd.lens.k1);
+  EXPECT_DOUBLE_EQ(s.render.point_size_px, d.render.point_size_px);
+  EXPECT_EQ(s.render.color_left, d.render.color_left);
+  EXPECT_EQ(s.breathing.preset, d.breathing.preset);
+  EXPECT_DOUBLE_EQ(s.breathing.tidal_volume_ml, d.breathing.tidal_volume_ml);
+  EXPECT_EQ(s.sync.role, d.sync.role);
+  EXPECT_EQ(s.sync.classroom, d.sync.classroom);
+  EXPECT_EQ(s.sync.domain, d.sync.domain);
+  EXPECT_DOUBLE_EQ(s.sync.lost_after_ms, d.sync.lost_after_ms);
+  EXPECT_DOUBLE_EQ(s.trackers.stale_ms, d.trackers.stale_ms);
+  EXPECT_EQ(s.registration.rotation_wxyz, d.registration.rotation_wxyz);
+  EXPECT_EQ(s.registration.xr_space_translation_mm, d.registration.xr_space_translation_mm);
+  EXPECT_EQ(s.registration.xr_space_rotation_wxyz, d.registration.xr_space_rotation_wxyz);
+  EXPECT_EQ(s.display.openxr.head, d.display.openxr.head);
+  EXPECT_EQ(s.display.openxr.reference_space, d.display.openxr.reference_space);
+  EXPECT_EQ(s.sim.orientation_mode, d.sim.orientation_mode);
+}
+
+TEST(Settings, EveryKeyOfTheShippedProfileIsDocumentedWithAComment) {
+  std::ifstream in(kDefaultToml);
+  ASSERT_TRUE(in) << kDefaultToml;
+  std::string line;
+  int keys = 0;
+  while (std::getline(in, line)) {
+    // A key line: optional blanks, then [a-z0-9_]+, blanks, '=' (no std::regex: GCC 12 warns inside it under ASan).
+    const std::size_t start = line.find_first_not_of(' ');
+    if (start == std::string::npos) continue;
+    std::size_t end = start;
+    while (end < line.size() && (std::islower(static_cast<unsigned char>(line[end])) ||
+                                 std::isdigit(static_cast<unsigned char>(line[end])) || line[end] == '_')) {
+      ++end;
+    }
+    const std::size_t eq = line.find_first_not_of(' ', end);
+    if (end > start && eq != std::string::npos && line[eq] == '=') {
+      ++keys;
+      EXPECT_NE(line.find('#'), std::string::npos) << "undocumented key: " << line;
+    }
+  }
+  EXPECT_GT(keys, 40);
+}
+
+TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
+  auto r = load_settings_from_string("[render]\npoint_size_px = 3\n[hmd]\nview = \"mono\"\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_DOUBLE_EQ(r->render.point_size_px, 3.0);
+  EXPECT_EQ(r->hmd.view, lungar::platform::View::Mono);
+  EXPECT_DOUBLE_EQ(r->hmd.ipd_mm, Settings{}.hmd.ipd_mm);
+  EXPECT_EQ(r->source, "x.toml");
+}
+
+TEST(Settings, OpenXrOutputAndItsHead) {
+  auto r = load_settings_from_string(
+      "[display]\noutput = \"openxr\"\n[display.openxr]\nhead = \"tracker\"\nreference_space = \"stage\"\n"
+      "[registration]\nxr_space_translation_mm = [10.0, 20.0, 30.0]\nxr_space_rotation_wxyz = [0.0, 0.0, 1.0, 0.0]\n",
+      "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->display.output, lungar::platform::Output::OpenXr);
+  EXPECT_EQ(r->display.openxr.head, lungar::platform::XrHead::Tracker);
+  EXPECT_EQ(r->display.openxr.reference_space, lungar::platform::XrReferenceSpace::Stage);
+  EXPECT_EQ(r->registration.xr_space_translation_mm, (std::array<double, 3>{10.0, 20.0, 30.0}));
+  EXPECT_EQ(r->registration.xr_space_rotation_wxyz, (std::array<double, 4>{0.0, 0.0, 1.0, 0.0}));
+}
+
+TEST(Settings, HexUsbIdsAreAccepted) {
+  auto r = load_settings_from_string("[trackers.hid]\nvendor_id = 0x1234\nproduct_id = 0xBEEF\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->trackers.hid.vendor_id, 0x1234);
+  EXPECT_EQ(r->trackers.hid.product_id, 0xBEEF);
+}
+
+TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_settings_test";
+  std::filesystem::create_directories(dir / "profiles");
+  const auto file = dir / "profiles" / "p.toml";
+  std::ofstream(file) << "[trackers]\nsource = \"replay\"\nreplay_file = \"../logs/a.trk\"\n";
+  auto r = load_settings(file.string());
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->trackers.replay_file, (dir / "logs" / "a.trk").string());
+  std::filesystem::remove_all(dir);
+}
+
+// --- bad input: each case asserts the whole message, which names the file, line, key and expectation ---
+
+TEST(BadConfig, UnknownTopLevelSection) {
+  EXPECT_EQ(error_of("[displya]\nwidth_px = 3\n"),
+            "bad.toml:1: unknown key 'displya'; expected one of: breathing, display, hmd, registration, render, sim, sync, "
+            "trackers");
+}
+
+TEST(BadConfig, UnknownKeyInSection) {
+  EXPECT_EQ(error_of("[render]\nmode = \"points\"\npointsize = 5\n"),
+            "bad.toml:3: unknown key 'render.pointsize'; expected one of: background, color_left, color_right, "
+            "deform, half_float, hud, lod, mode, overlay_rest, point_size_px, stereo_strategy");
+}
+
+TEST(BadConfig, UnknownKeyInNestedTable) {
+  EXPECT_EQ(error_of("[hmd.lens]\nenabled = true\nk3 = [0.0, 0.0, 0.0]\n"),
+            "bad.toml:3: unknown key 'hmd.lens.k3'; expected one of: enabled, k1, k2");
+}
+
+TEST(BadConfig, WrongTypeStringForNumber) {
+  EXPECT_EQ(error_of("[hmd]\nipd_mm = \"63\"\n"),
+            "bad.toml:2: key 'hmd.ipd_mm': expected a number in [40, 90] mm, got the string \"63\"");
+}
+
+TEST(BadConfig, OutOfRangeIsRejectedNotClamped) {
+  EXPECT_EQ(error_of("[render]\npoint_size_px = 0\n"),
+            "bad.toml:2: key 'render.point_size_px': expected a number in [1, 64] pixels, got the integer 0");
+}
+
+TEST(BadConfig, NegativeRate) {
+  EXPECT_EQ(error_of("[breathing]\nrate_bpm = -12.5\n"),
+            "bad.toml:2: key 'breathing.rate_bpm': expected a number in [2, 60] breaths/min, got the number -12.5");
+}
+
+TEST(BadConfig, NotANumber) {
+  EXPECT_EQ(error_of("[breathing]\ntidal_volume_ml = nan\n"),
+            "bad.toml:2: key 'breathing.tidal_volume_ml': expected a number in [50, 3000] mL, got the number nan");
+}
+
+TEST(BadConfig, FractionWhereAnIntegerIsExpected) {
+  EXPECT_EQ(error_of("[hmd]\neye_width_px = 640.5\n"),
+            "bad.toml:2: key 'hmd.eye_width_px': expected an integer in [16, 8192] pixels, got the number 640.5");
+}
+
+TEST(BadConfig, UnknownEnumValue) {
+  EXPECT_EQ(error_of("[render]\ndeform = \"cuda\"\n"),
+            "bad.toml:2: key 'render.deform': expected one of \"gpu\" | \"cpu7\" | \"cpu1\" | \"none\", got the string \"cuda\"");
+}
+
+TEST(BadConfig, UnknownPreset) {
+  EXPECT_EQ(error_of("[breathing]\npreset = \"asthma\"\n"),
+            "bad.toml:2: key 'breathing.preset': expected one of \"normal\" | \"emphysema\" | \"fibrosis\", got the "
+            "string \"asthma\"");
+}
+
+TEST(BadConfig, ArrayOfTheWrongLength) {
+  EXPECT_EQ(error_of("[hmd]\nhead_to_eye_mm = [0.0, 80.0]\n"),
+            "bad.toml:2: key 'hmd.head_to_eye_mm': expected an array of 3 numbers in [-500, 500] mm, got an array of 2");
+}
+
+TEST(BadConfig, ArrayElementOutOfRange) {
+  EXPECT_EQ(error_of("[render]\ncolor_left = [0.5, 1.5, 0.5]\n"),
+            "bad.toml:2: key 'render.color_left': expected an array of 3 numbers in [0, 1] (linear RGB), got the "
+            "number 1.5 at index 1");
+}
+
+TEST(BadConfig, SyntaxErrorNamesLineAndColumn) {
+  const std::string e = error_of("[render]\npoint_size_px = 5\nmode = \"points\n");
+  EXPECT_EQ(e.rfind("bad.toml:3:", 0), 0u) << e;
+  EXPECT_NE(e.find("TOML syntax error"), std::string::npos) << e;
+}
+
+TEST(BadConfig, FarPlaneBeforeNearPlane) {
+  EXPECT_EQ(error_of("[hmd]\nnear_mm = 100.0\nfar_mm = 50.0\n"),
+            "bad.toml:3: key 'hmd.far_mm': expected far_mm greater than near_mm (100.000000 mm)");
+}
+
+TEST(BadConfig, RegistrationRotationNotAUnitQuaternion) {
+  EXPECT_EQ(error_of("[registration]\nrotation_wxyz = [1.0, 1.0, 0.0, 0.0]\n"),
+            "bad.toml:2: key 'registration.rotation_wxyz': expected a unit quaternion (norm 1 within 1e-3), got norm "
+            "1.414214");
+}
+
+TEST(BadConfig, OpenXrHeadFromNowhere) {
+  EXPECT_EQ(error_of("[display.openxr]\nhead = \"eyes\"\n"),
+            "bad.toml:2: key 'display.openxr.head': expected one of \"openxr\" | \"tracker\", got the string \"eyes\"");
+}
+
+TEST(BadConfig, XrSpaceRotationNotAUnitQuaternion) {
+  EXPECT_EQ(error_of("[registration]\nxr_space_rotation_wxyz = [0.5, 0.5, 0.0, 0.0]\n"),
+            "bad.toml:2: key 'registration.xr_space_rotation_wxyz': expected a unit quaternion (norm 1 within 1e-3), "
+            "got norm 0.707107");
+}
+
+TEST(BadConfig, UsbIdOutOfRange) {
+  EXPECT_EQ(error_of("[trackers.hid]\nvendor_id = 0x12345\n"),
+            "bad.toml:2: key 'trackers.hid.vendor_id': expected an integer in [0, 0xFFFF] (a USB id, e.g. 0x1234), "
+            "got the integer 74565");
+}
+
+TEST(BadConfig, ReplayWithoutALog) {
+  EXPECT_EQ(error_of("[trackers]\nsource = \"replay\"\n"),
+            "bad.toml:1: key 'trackers.replay_file': expected a .trk file when source = \"replay\", got nothing");
+}
+
+TEST(BadConfig, ValueWhereASectionBelongs) {
+  EXPECT_EQ(error_of("render = 5\n"), "bad.toml:1: key 'render': expected a table, got the integer 5");
+}
+
+TEST(BadConfig, BooleanWrittenAsString) {
+  EXPECT_EQ(error_of("[render]\nlod = \"yes\"\n"),
+            "bad.toml:2: key 'render.lod': expected true or false, got the string \"yes\"");
+}
+
+TEST(BadConfig, MissingFile) {
+  auto r = load_settings("/nonexistent/lungar.toml");
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.error(), "/nonexistent/lungar.toml: cannot read the config: expected a TOML file, got no such file");
+}
+
+TEST(Settings, AClassroomStationIsConfigured) {
+  auto r = load_settings_from_string("[sync]\nrole = \"trainee\"\nclassroom = \"ward-3\"\ndomain = 17\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->sync.role, lungar::platform::sync::SyncRole::Trainee);
+  EXPECT_EQ(r->sync.classroom, "ward-3");
+  EXPECT_EQ(r->sync.domain, 17);
+}
+
+TEST(BadConfig, SyncKeysOutOfRange) {
+  EXPECT_NE(error_of("[sync]\nrole = \"teacher\"\n").find("key 'sync.role': expected one of \"off\" | "
+                                                             "\"instructor\" | \"trainee\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[sync]\ndomain = 233\n").find("key 'sync.domain'"), std::string::npos);
+  EXPECT_NE(error_of("[sync]\nclassroom = \"\"\n").find("key 'sync.classroom': expected a name"), std::string::npos);
+  EXPECT_NE(error_of("[sync]\nclassroom = \"ward*\"\n").find("key 'sync.classroom'"), std::string::npos);
+}
+
+// The shipped tracker profiles are whole configs (a profile may set [hmd] or [display] too): each loads.
+TEST(Settings, EveryShippedTrackerProfileLoadsAsAWholeConfig) {
+  const std::filesystem::path dir = std::filesystem::path(LUNGAR_SOURCE_DIR) / "config" / "trackers";
+  int n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    auto r = lungar::platform::load_settings(entry.path().string());
+    EXPECT_TRUE(r) << entry.path() << ": " << r.error();
+    ++n;
+  }
+  EXPECT_GE(n, 3);
+}

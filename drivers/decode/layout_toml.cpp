@@ -3,42 +3,21 @@
 /// round trip gives the same layout.
 #include "drivers/decode/layout_toml.h"
 
-#include <cstdio>
 #include <sstream>
 
 #include "config/settings_load.h"
+#include "config/toml_writer.h"
 
 namespace lungar::drivers {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  std::string s = buf;
-  if (s.find_first_of(".en") == std::string::npos) s += ".0";  // keep TOML floats floats
-  return s;
-}
+using config::toml_number;
+using config::toml_string;
 
-/// A TOML basic string: quotes and backslashes escaped, control characters as \uXXXX.
-std::string quoted(const std::string& v) {
-  std::string out = "\"";
-  for (char c : v) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+std::string vec(const std::array<double, 3>& v) {
+  return "[" + toml_number(v[0]) + ", " + toml_number(v[1]) + ", " + toml_number(v[2]) + "]";
 }
-
-std::string vec(const std::array<double, 3>& v) { return "[" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + "]"; }
 
 }  // namespace
 
@@ -46,10 +25,10 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
   const config::ReportSettings& r = t.report;
   std::ostringstream o;
   o << "[trackers]\n"
-    << "quat_norm_tolerance = " << num(t.quat_norm_tolerance) << "\n"
+    << "quat_norm_tolerance = " << toml_number(t.quat_norm_tolerance) << "\n"
     << "workspace_min_mm = " << vec(t.workspace_min_mm) << "\n"
     << "workspace_max_mm = " << vec(t.workspace_max_mm) << "\n"
-    << "axis_remap = " << quoted(t.axis_remap) << "\n"
+    << "axis_remap = " << toml_string(t.axis_remap) << "\n"
     << "world_offset_mm = " << vec(t.world_offset_mm) << "\n\n"
     << "[trackers.report]\n"
     << "report_id = " << r.report_id << "\n"
@@ -58,17 +37,17 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
     << "station_offset = " << r.station_offset << "\n"
     << "time_offset = " << r.time_offset << "\n"
     << "time_bits = " << r.time_bits << "\n"
-    << "time_tick_us = " << num(r.time_tick_us) << "\n"
+    << "time_tick_us = " << toml_number(r.time_tick_us) << "\n"
     << "position_offset = " << r.position_offset << "\n"
     << "position_type = \"" << to_string(r.position_type) << "\"\n"
     << "position_frac_bits = " << r.position_frac_bits << "\n"
-    << "position_scale = " << num(r.position_scale) << "\n"
+    << "position_scale = " << toml_number(r.position_scale) << "\n"
     << "position_components = \"" << r.position_components << "\"\n"
     << "orientation = \"" << to_string(r.orientation) << "\"\n"
     << "orientation_offset = " << r.orientation_offset << "\n"
     << "orientation_type = \"" << to_string(r.orientation_type) << "\"\n"
     << "orientation_frac_bits = " << r.orientation_frac_bits << "\n"
-    << "orientation_scale = " << num(r.orientation_scale) << "\n"
+    << "orientation_scale = " << toml_number(r.orientation_scale) << "\n"
     << "orientation_components = \"" << r.orientation_components << "\"\n"
     << "euler_sequence = \"" << r.euler_sequence << "\"\n";
   const std::pair<const char*, const config::SensorSettings*> sensors[] = {
@@ -79,9 +58,10 @@ std::string layout_to_toml(const config::TrackerSettings& t) {
   }
   // What an OpenIGTLink message decodes with: which device feeds which role, units, the rigidity tolerance.
   const config::IgtlSettings& g = t.igtl;
-  o << "\n[trackers.igtl]\nhost = " << quoted(g.host) << "\nport = " << g.port << "\nhead = " << quoted(g.head)
-    << "\npatient = " << quoted(g.patient) << "\nstylus = " << quoted(g.stylus) << "\nscale = " << num(g.scale)
-    << "\nrigid_tolerance = " << num(g.rigid_tolerance) << "\n";
+  o << "\n[trackers.igtl]\nhost = " << toml_string(g.host) << "\nport = " << g.port
+    << "\nhead = " << toml_string(g.head) << "\npatient = " << toml_string(g.patient)
+    << "\nstylus = " << toml_string(g.stylus) << "\nscale = " << toml_number(g.scale)
+    << "\nrigid_tolerance = " << toml_number(g.rigid_tolerance) << "\n";
   return o.str();
 }
 

@@ -19,7 +19,7 @@ namespace {
 constexpr std::int64_t kMs = 1'000'000;
 constexpr std::int64_t kMaxBackoffNs = 4000 * kMs;
 
-class HidDevice final : public TrackerSource {
+class HidDevice final : public TrackerDevice {
  public:
   explicit HidDevice(const config::TrackerSettings& s)
       : hid_(s.hid), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)),
@@ -160,7 +160,7 @@ class HidDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> hid_create(const config::TrackerSettings& settings) {
+std::unique_ptr<TrackerDevice> hid_create(const config::TrackerSettings& settings) {
   return std::make_unique<HidDevice>(settings);
 }
 

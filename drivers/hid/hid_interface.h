@@ -9,7 +9,7 @@
 #include <string>
 
 #include "config/settings.h"
-#include "drivers/tracker/tracker_source.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
@@ -25,6 +25,6 @@ struct HidFound {
 std::optional<HidFound> hid_probe(const config::HidSettings& hid);
 
 /// A source for the configured device. It never fails to start: an absent device is "disconnected".
-std::unique_ptr<TrackerSource> hid_create(const config::TrackerSettings& settings);
+std::unique_ptr<TrackerDevice> hid_create(const config::TrackerSettings& settings);
 
 }  // namespace lungar::drivers

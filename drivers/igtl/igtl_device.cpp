@@ -20,7 +20,7 @@ constexpr int kPollMs = 10;  ///< longest wait on the socket, so that stop and s
 /// Bodies of types lungar does not read (images from Slicer) are skipped; beyond this the stream is garbage.
 constexpr std::uint64_t kMaxSkip = 1ull << 30;
 
-class IgtlDevice final : public TrackerSource {
+class IgtlDevice final : public TrackerDevice {
  public:
   explicit IgtlDevice(const config::TrackerSettings& s)
       : igtl_(s.igtl), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)) {}
@@ -135,7 +135,7 @@ class IgtlDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> igtl_create(const config::TrackerSettings& settings) {
+std::unique_ptr<TrackerDevice> igtl_create(const config::TrackerSettings& settings) {
   return std::make_unique<IgtlDevice>(settings);
 }
 

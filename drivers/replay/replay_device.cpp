@@ -10,7 +10,7 @@ namespace lungar::drivers {
 
 namespace {
 
-class ReplayDevice final : public TrackerSource {
+class ReplayDevice final : public TrackerDevice {
  public:
   ReplayDevice(TrkLog log, std::string path, bool realtime, bool loop)
       : log_(std::move(log)), path_(std::move(path)), realtime_(realtime), loop_(loop) {}
@@ -68,7 +68,7 @@ class ReplayDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop) {
+std::unique_ptr<TrackerDevice> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop) {
   return std::make_unique<ReplayDevice>(std::move(log), path, realtime, loop);
 }
 

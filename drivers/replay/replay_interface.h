@@ -7,13 +7,13 @@
 #include <string>
 
 #include "config/settings.h"
-#include "drivers/tracker/tracker_source.h"
+#include "drivers/tracker/tracker_device.h"
 #include "drivers/trk/trk_reader.h"
 
 namespace lungar::drivers {
 
 /// A source that feeds `log`'s records in order. `realtime`: keep the recorded spacing of arrival times;
 /// otherwise as fast as the pipeline takes them. `loop`: start again at the end (else finish and go stale).
-std::unique_ptr<TrackerSource> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop);
+std::unique_ptr<TrackerDevice> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop);
 
 }  // namespace lungar::drivers

@@ -31,9 +31,9 @@ struct Tracker::Thread {
   std::jthread thread;
 };
 
-Tracker::Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source)
-    : core_(std::move(core)), source_(std::move(source)), thread_(std::make_unique<Thread>()) {
-  thread_->thread = std::jthread([this](std::stop_token stop) { source_->run(*core_, stop); });
+Tracker::Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerDevice> device)
+    : core_(std::move(core)), device_(std::move(device)), thread_(std::make_unique<Thread>()) {
+  thread_->thread = std::jthread([this](std::stop_token stop) { device_->run(*core_, stop); });
 }
 
 Tracker::~Tracker() { stop(); }
@@ -55,14 +55,14 @@ PoseSample Tracker::predicted(Role role, std::int64_t t_ns, std::int64_t max_ahe
 TrackerStats Tracker::stats() const { return core_->stats(); }
 TrackerState Tracker::state() const { return core_->state(); }
 bool Tracker::finished() const { return core_->finished(); }
-std::string Tracker::describe() const { return source_->describe(); }
+std::string Tracker::describe() const { return device_->describe(); }
 
 Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
   Result<ReportLayout> layout = make_layout(settings);
   if (!layout) return layout.with_context("tracker report layout: ");
   auto igtl_layout = make_igtl_layout(settings);
   if (!igtl_layout) return igtl_layout.with_context("tracker: ");
-  std::unique_ptr<TrackerSource> source;
+  std::unique_ptr<TrackerDevice> source;
   bool layout_differs = false;
   switch (settings.source) {
     case config::TrackerSource::Mock:

@@ -57,11 +57,12 @@ struct TrackerOptions {
 };
 
 class TrackerCore;
-class TrackerSource;
+class TrackerDevice;
 
 class Tracker {
  public:
-  Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source);
+  /// Starts `device`'s thread feeding `core`.
+  Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerDevice> device);
   ~Tracker();  ///< stops and joins the thread
   Tracker(const Tracker&) = delete;
   Tracker& operator=(const Tracker&) = delete;
@@ -83,7 +84,7 @@ class Tracker {
 
  private:
   std::unique_ptr<TrackerCore> core_;
-  std::unique_ptr<TrackerSource> source_;
+  std::unique_ptr<TrackerDevice> device_;
   struct Thread;
   std::unique_ptr<Thread> thread_;
 };

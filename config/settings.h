@@ -6,13 +6,10 @@
 #pragma once
 
 #include <array>
-#include <cstdint>
-#include <optional>
 #include <string>
-#include <string_view>
-#include <vector>
 
 #include "config/base/enum_names.h"
+#include "drivers/tracker/tracker_config.h"  // [trackers]: the drivers own the tracker's settings
 
 namespace lungar::config {
 
@@ -29,7 +26,6 @@ enum class RenderMode { Points, Mesh };
 enum class Deform { Gpu, Cpu7, Cpu1, None };
 /// Stereo strategy: deform in each eye's draw (the paper), or once into a buffer by transform feedback.
 enum class StereoStrategy { PerEye, DeformOnce };
-enum class TrackerSource { Mock, Hid, Replay, Igtl };
 /// Orientation -> force SH: exact linear combination of baked vectors, or the paper's eq. (8)-(9).
 enum class OrientationMode { Exact, PaperInterp };
 
@@ -96,93 +92,22 @@ struct BreathingSettings {
   std::string scenario;           ///< optional scenario TOML (relative to the config file)
 };
 
-struct HidSettings {
-  std::uint16_t vendor_id = 0;   ///< 0: any
-  std::uint16_t product_id = 0;  ///< 0: any
-  std::string serial;
-  std::string path;              ///< hidraw path; wins over ids when set
-  double read_timeout_ms = 10.0; ///< hid_read_timeout's wait, so the thread notices stop and staleness
-  /// Feature reports sent in order (hid_send_feature_report) each time the device is opened, report id first:
-  /// for trackers that stream nothing until told to. Parsed from hex text ("0x02 0x01") by the loader.
-  std::vector<std::vector<std::uint8_t>> init_feature_reports;
-};
-
-/// An OpenIGTLink server (PlusServer, 3D Slicer's OpenIGTLinkIF) streaming TRANSFORM, TDATA or QTDATA messages.
-struct IgtlSettings {
-  std::string host = "127.0.0.1";
-  int port = 18944;                ///< OpenIGTLink's registered port, PlusServer's and Slicer's default
-  /// The device (or tool) name that carries each role, PLUS's naming; "" = the role is not fed.
-  std::string head = "HeadToTracker";
-  std::string patient = "PatientToTracker";
-  std::string stylus = "StylusTipToTracker";
-  double scale = 1.0;              ///< mm per unit of the received positions (PLUS and Slicer send mm)
-  double rigid_tolerance = 1e-3;   ///< a rotation part whose |R^T R - I| entries exceed this is not rigid: dropped
-  double connect_timeout_ms = 1000.0;
-};
-
-/// How one number is stored in a report. None (position only): the report carries no position (an
-/// orientation-only sensor such as an HMD's IMU); each role then uses its fixed_position_mm.
-enum class FieldType { I16, I32, F32, Fixed16, Fixed32, None };
-enum class Endian { Little, Big };
-/// How a sensor's orientation is sent: a quaternion, or three Euler (Tait-Bryan) angles.
-enum class OrientationKind { Quaternion, Euler };
-
-/// One sensor inside a report; the role it feeds is the key it sits under ([trackers.head], ...).
-struct SensorSettings {
-  bool enabled = false;
-  int station = 0;  ///< value of the station byte that selects this sensor (station mode only)
-  int offset = 0;   ///< byte offset of this sensor's block (position, orientation) in the report
-  /// With position_type = "none": the position this role reports, in the tracker's axes (before axis_remap), mm.
-  std::array<double, 3> fixed_position_mm = {0.0, 0.0, 0.0};
-};
-
-/// The byte layout of one HID input report. Offsets are bytes from the start of what hid_read returns
-/// (the report id byte included when report_id >= 0); field offsets are relative to the sensor block.
-struct ReportSettings {
-  int report_id = 1;       ///< first byte of every report; -1: the device does not number its reports
-  int length = 32;         ///< bytes per report, the id byte included
-  Endian endian = Endian::Little;
-  int station_offset = 1;  ///< byte that names the sensor; -1: every sensor at its fixed offset in each report
-  int time_offset = 2;     ///< device timestamp; -1: none (arrival time stands in)
-  int time_bits = 32;      ///< unsigned 16 or 32 bits, wraps around
-  double time_tick_us = 1.0;  ///< microseconds per timestamp tick
-  int position_offset = 0;
-  FieldType position_type = FieldType::I32;
-  int position_frac_bits = 0;    ///< fixed-point types: fractional bits
-  double position_scale = 0.01;  ///< mm per unit (after the fixed-point division)
-  std::string position_components = "x,y,z";  ///< what the device sends, in order, with its signs
-  OrientationKind orientation = OrientationKind::Quaternion;
-  int orientation_offset = 12;
-  FieldType orientation_type = FieldType::Fixed16;
-  int orientation_frac_bits = 14;
-  double orientation_scale = 1.0;  ///< quaternion units, or degrees for Euler angles, per unit
-  std::string orientation_components = "w,x,y,z";  ///< quaternion components or Euler axes, in sent order
-  std::string euler_sequence = "zyx";  ///< intrinsic Tait-Bryan order: "zyx" is R = Rz(a) Ry(b) Rx(c)
-};
-
-struct TrackerSettings {
-  TrackerSource source = TrackerSource::Mock;
-  std::string mock_trajectory = "upright_to_supine";  ///< static | upright_to_supine | head_orbit
-  double mock_rate_hz = 62.5;
-  double mock_noise_mm = 0.0;       ///< Gaussian position noise of the mock, mm (1 sigma)
-  double mock_dropout = 0.0;        ///< probability that the mock drops a report
-  std::string replay_file;
-  bool replay_realtime = true;
-  bool replay_loop = false;         ///< start the log again at its end
-  double stale_ms = 100.0;        ///< a pose older than this is marked stale
-  double reopen_backoff_ms = 250.0;
-  double quat_norm_tolerance = 0.05;  ///< a decoded quaternion's |norm - 1| above this is malformed
-  std::array<double, 3> workspace_min_mm = {-3000.0, -3000.0, -3000.0};  ///< world frame
-  std::array<double, 3> workspace_max_mm = {3000.0, 3000.0, 3000.0};
-  std::string axis_remap = "x,y,z";  ///< world axes in terms of the tracker's: "x,-z,y" is world y = -tracker z
-  std::array<double, 3> world_offset_mm = {0.0, 0.0, 0.0};  ///< tracker origin in the world, mm
-  HidSettings hid;
-  IgtlSettings igtl;
-  ReportSettings report;
-  SensorSettings head{true, 1, 6, {}};
-  SensorSettings patient{true, 2, 6, {}};
-  SensorSettings stylus{false, 3, 6, {}};
-};
+/// [trackers] is the drivers' (drivers/tracker/tracker_config.h, read and written by tracker_config_toml.h).
+/// These names keep the code that still says config:: compiling until Settings leaves config/ for the
+/// application layer.
+using TrackerSettings = drivers::TrackerConfig;
+using HidSettings = drivers::HidConfig;
+using IgtlSettings = drivers::IgtlConfig;
+using ReportSettings = drivers::ReportConfig;
+using SensorSettings = drivers::SensorConfig;
+using drivers::Endian;
+using drivers::FieldType;
+using drivers::OrientationKind;
+using drivers::TrackerSource;
+using drivers::kTrackerSourceNames;
+using drivers::parse_signed_axes;
+using drivers::SignedAxis;
+using drivers::to_string;
 
 struct RegistrationSettings {
   std::array<double, 3> translation_mm = {0.0, 0.0, 0.0};        ///< lung model -> patient tracker
@@ -227,16 +152,6 @@ struct Settings {
   std::string source = "<defaults>";
 };
 
-/// One entry of a component list such as "w,-x,-y,-z": the index of its letter in the alphabet given to
-/// parse_signed_axes() and its sign (+1 or -1).
-struct SignedAxis {
-  int index = 0;
-  int sign = 1;
-};
-/// Parses a comma-separated permutation of `letters` ("x,-z,y" over "xyz"), each letter once, optionally
-/// preceded by '-'; nullopt when the text is not such a permutation.
-std::optional<std::vector<SignedAxis>> parse_signed_axes(std::string_view text, std::string_view letters);
-
 /// The names of each enumeration as TOML, the command line and logs spell them: one table each.
 inline constexpr EnumNames<Output, 5> kOutputNames{{{{Output::Auto, "auto"},
                                                       {Output::Window, "window"},
@@ -251,28 +166,8 @@ inline constexpr EnumNames<Deform, 4> kDeformNames{
     {{{Deform::Gpu, "gpu"}, {Deform::Cpu7, "cpu7"}, {Deform::Cpu1, "cpu1"}, {Deform::None, "none"}}}};
 inline constexpr EnumNames<StereoStrategy, 2> kStereoStrategyNames{
     {{{StereoStrategy::PerEye, "per_eye"}, {StereoStrategy::DeformOnce, "deform_once"}}}};
-inline constexpr EnumNames<TrackerSource, 4> kTrackerSourceNames{{{{TrackerSource::Mock, "mock"},
-                                                                   {TrackerSource::Hid, "hid"},
-                                                                   {TrackerSource::Replay, "replay"},
-                                                                   {TrackerSource::Igtl, "igtl"}}}};
 inline constexpr EnumNames<OrientationMode, 2> kOrientationModeNames{
     {{{OrientationMode::Exact, "exact"}, {OrientationMode::PaperInterp, "paper_interp"}}}};
-inline constexpr EnumNames<FieldType, 6> kFieldTypeNames{{{{FieldType::I16, "i16"},
-                                                           {FieldType::I32, "i32"},
-                                                           {FieldType::F32, "f32"},
-                                                           {FieldType::Fixed16, "fixed16"},
-                                                           {FieldType::Fixed32, "fixed32"},
-                                                           {FieldType::None, "none"}}}};
-/// The types an orientation may have: every field type but "none".
-inline constexpr EnumNames<FieldType, 5> kOrientationFieldTypeNames{{{{FieldType::I16, "i16"},
-                                                                      {FieldType::I32, "i32"},
-                                                                      {FieldType::F32, "f32"},
-                                                                      {FieldType::Fixed16, "fixed16"},
-                                                                      {FieldType::Fixed32, "fixed32"}}}};
-inline constexpr EnumNames<Endian, 2> kEndianNames{{{{Endian::Little, "little"}, {Endian::Big, "big"}}}};
-inline constexpr EnumNames<OrientationKind, 2> kOrientationKindNames{
-    {{{OrientationKind::Quaternion, "quaternion"}, {OrientationKind::Euler, "euler"}}}};
-
 inline const char* to_string(Output v) { return kOutputNames.name(v); }
 inline const char* to_string(XrHead v) { return kXrHeadNames.name(v); }
 inline const char* to_string(XrSpace v) { return kXrSpaceNames.name(v); }
@@ -280,11 +175,7 @@ inline const char* to_string(View v) { return kViewNames.name(v); }
 inline const char* to_string(RenderMode v) { return kRenderModeNames.name(v); }
 inline const char* to_string(Deform v) { return kDeformNames.name(v); }
 inline const char* to_string(StereoStrategy v) { return kStereoStrategyNames.name(v); }
-inline const char* to_string(TrackerSource v) { return kTrackerSourceNames.name(v); }
 inline const char* to_string(OrientationMode v) { return kOrientationModeNames.name(v); }
-inline const char* to_string(FieldType v) { return kFieldTypeNames.name(v); }
-inline const char* to_string(Endian v) { return kEndianNames.name(v); }
-inline const char* to_string(OrientationKind v) { return kOrientationKindNames.name(v); }
 inline const char* to_string(SyncRole v) { return kSyncRoleNames.name(v); }
 
 }  // namespace lungar::config

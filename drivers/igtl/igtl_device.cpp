@@ -22,7 +22,7 @@ constexpr std::uint64_t kMaxSkip = 1ull << 30;
 
 class IgtlDevice final : public TrackerDevice {
  public:
-  explicit IgtlDevice(const config::TrackerSettings& s)
+  explicit IgtlDevice(const TrackerConfig& s)
       : igtl_(s.igtl), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
@@ -125,7 +125,7 @@ class IgtlDevice final : public TrackerDevice {
     next_attempt = monotonic_ns() + backoff;
   }
 
-  config::IgtlSettings igtl_;
+  IgtlConfig igtl_;
   std::int64_t backoff0_ns_;
   TcpSocket sock_;
   std::array<std::uint8_t, kIgtlHeaderBytes + kIgtlMaxBody> buf_{};
@@ -135,7 +135,7 @@ class IgtlDevice final : public TrackerDevice {
 
 }  // namespace
 
-std::unique_ptr<TrackerDevice> igtl_create(const config::TrackerSettings& settings) {
+std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings) {
   return std::make_unique<IgtlDevice>(settings);
 }
 

@@ -11,12 +11,12 @@
 
 #include <memory>
 
-#include "config/settings.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
 /// A source for [trackers.igtl]'s server. It never fails to start: an absent server is "disconnected".
-std::unique_ptr<TrackerDevice> igtl_create(const config::TrackerSettings& settings);
+std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings);
 
 }  // namespace lungar::drivers

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "config/settings.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_device.h"
 #include "drivers/trk/trk_reader.h"
 

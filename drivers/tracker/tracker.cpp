@@ -7,12 +7,12 @@
 #include <mutex>
 #include <thread>
 
-#include "drivers/decode/layout_toml.h"
 #include "drivers/hid/hid_interface.h"
 #include "drivers/igtl/igtl_interface.h"
 #include "drivers/mock/mock_interface.h"
 #include "drivers/mock/mock_trajectory.h"
 #include "drivers/replay/replay_interface.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/tracker/tracker_core.h"
 
 namespace lungar::drivers {
@@ -57,7 +57,29 @@ TrackerState Tracker::state() const { return core_->state(); }
 bool Tracker::finished() const { return core_->finished(); }
 std::string Tracker::describe() const { return device_->describe(); }
 
-Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
+namespace {
+
+/// Whether `a` and `b` decode the same bytes to the same poses: the report layout, the sensors, the world frame,
+/// the OpenIGTLink names and units; not the source, how it is reached, or its timing.
+bool decodes_alike(const TrackerConfig& a, const TrackerConfig& b) {
+  return a.report == b.report && a.head == b.head && a.patient == b.patient && a.stylus == b.stylus &&
+         a.axis_remap == b.axis_remap && a.world_offset_mm == b.world_offset_mm &&
+         a.workspace_min_mm == b.workspace_min_mm && a.workspace_max_mm == b.workspace_max_mm &&
+         a.quat_norm_tolerance == b.quat_norm_tolerance && a.igtl.head == b.igtl.head &&
+         a.igtl.patient == b.igtl.patient && a.igtl.stylus == b.igtl.stylus && a.igtl.scale == b.igtl.scale &&
+         a.igtl.rigid_tolerance == b.igtl.rigid_tolerance;
+}
+
+/// Whether a log's header names a layout other than the config's (a header that does not load counts as one).
+bool recorded_with_another_layout(const TrkLog& log, const TrackerConfig& settings) {
+  if (log.header.layout_toml.empty()) return false;
+  auto recorded = tracker_config_from_toml(log.header.layout_toml, settings.replay_file + " (header layout)");
+  return !recorded || !decodes_alike(*recorded, settings);
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, const TrackerOptions& options) {
   Result<ReportLayout> layout = make_layout(settings);
   if (!layout) return layout.with_context("tracker report layout: ");
   auto igtl_layout = make_igtl_layout(settings);
@@ -65,32 +87,32 @@ Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& set
   std::unique_ptr<TrackerDevice> source;
   bool layout_differs = false;
   switch (settings.source) {
-    case config::TrackerSource::Mock:
+    case TrackerSource::Mock:
       if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
         return fail("trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
                     settings.mock_trajectory + "\"");
       }
       source = mock_create(settings, *layout);
       break;
-    case config::TrackerSource::Replay: {
+    case TrackerSource::Replay: {
       Result<TrkLog> log = load_trk(settings.replay_file);
       if (!log) return fail(log.error());
       // The bytes are decoded with the configured layout, as the HID source would; a log made with another
       // layout says so in its header, and the mismatch is worth a line.
-      layout_differs = !log->header.layout_toml.empty() && log->header.layout_toml != layout_to_toml(settings);
+      layout_differs = recorded_with_another_layout(*log, settings);
       source = replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop);
       break;
     }
-    case config::TrackerSource::Hid: {
+    case TrackerSource::Hid: {
       static std::once_flag init;  // hid_init is not thread-safe; once per process
       std::call_once(init, [] { hid_init(); });
       source = hid_create(settings);
       break;
     }
-    case config::TrackerSource::Igtl: source = igtl_create(settings); break;
+    case TrackerSource::Igtl: source = igtl_create(settings); break;
   }
   TrackerOptions opts = options;
-  opts.record_layout_toml = layout_to_toml(settings);
+  opts.record_layout_toml = tracker_config_to_toml(settings);
   auto core = std::make_unique<TrackerCore>(*layout, *igtl_layout, settings, opts);
   if (!options.record_path.empty()) {
     Status recording = core->start_recording(options.record_path, source->trk_description(), source->trk_source());

@@ -16,10 +16,10 @@
 
 #include "config/base/clock.h"
 #include "config/base/result.h"
-#include "config/settings.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/pose/pose_history.h"
 #include "drivers/pose/pose_sample.h"
+#include "drivers/tracker/tracker_config.h"
 
 namespace lungar::drivers {
 
@@ -52,7 +52,7 @@ struct TrackerOptions {
   std::function<void(const std::string& line)> log;
   /// Called on the tracker thread for every accepted sample (tests, recording of poses); must not block.
   std::function<void(const PoseSample&)> on_sample;
-  /// TOML of the [trackers...] layout tables for the .trk header (make_tracker fills it from the settings).
+  /// The [trackers] TOML for the .trk header (make_tracker() fills it: tracker_config_to_toml()).
   std::string record_layout_toml;
 };
 
@@ -93,7 +93,7 @@ class Tracker {
 /// that is not plugged in, or an OpenIGTLink server that is not up, is not an error: it starts disconnected and
 /// connects when the device or server appears. An error is one line naming what is wrong (layout, replay file,
 /// record file).
-Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings,
+Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings,
                                               const TrackerOptions& options = {});
 
 }  // namespace lungar::drivers

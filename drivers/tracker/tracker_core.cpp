@@ -19,7 +19,7 @@ void default_log(const std::string& line) { log_line("lungar", "drivers: " + lin
 }  // namespace
 
 TrackerCore::TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout,
-                         const config::TrackerSettings& settings, TrackerOptions options)
+                         const TrackerConfig& settings, TrackerOptions options)
     : layout_(layout),
       igtl_layout_(igtl_layout),
       stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)),

@@ -19,7 +19,7 @@ namespace lungar::drivers {
 
 class TrackerCore {
  public:
-  TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout, const config::TrackerSettings& settings,
+  TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout, const TrackerConfig& settings,
               TrackerOptions options);
 
   /// Opens the --record log with the device's description in its header.

@@ -6,8 +6,8 @@
 
 #include "config/settings_load.h"
 #include "drivers/decode/decoder.h"
-#include "drivers/decode/layout_toml.h"
 #include "drivers/decode/report_layout.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 
 namespace lungar::platform {
@@ -18,7 +18,7 @@ namespace {
 Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std::string& log_path,
                                           const std::string& config_path) {
   if (!log.header.layout_toml.empty()) {
-    return drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)");
+    return drivers::tracker_config_from_toml(log.header.layout_toml, log_path + " (header layout)");
   }
   if (config_path.empty()) return config::TrackerSettings{};
   auto s = config::load_settings(config_path);

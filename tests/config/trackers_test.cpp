@@ -8,13 +8,13 @@
 
 #include "config/settings_load.h"
 
-using lungar::config::Endian;
-using lungar::config::FieldType;
 using lungar::config::load_settings;
 using lungar::config::load_settings_from_string;
-using lungar::config::OrientationKind;
-using lungar::config::parse_signed_axes;
 using lungar::config::Settings;
+using lungar::drivers::Endian;
+using lungar::drivers::FieldType;
+using lungar::drivers::OrientationKind;
+using lungar::drivers::parse_signed_axes;
 
 namespace {
 
@@ -30,7 +30,7 @@ TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
   auto r = load_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
   ASSERT_TRUE(r) << r.error();
   const auto& t = r->trackers;
-  const lungar::config::TrackerSettings d;
+  const lungar::drivers::TrackerConfig d;
   EXPECT_EQ(t.report.report_id, d.report.report_id);
   EXPECT_EQ(t.report.length, d.report.length);
   EXPECT_EQ(t.report.station_offset, d.report.station_offset);
@@ -213,14 +213,14 @@ rigid_tolerance = 0.01
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
   const auto& g = r->trackers.igtl;
-  EXPECT_EQ(r->trackers.source, lungar::config::TrackerSource::Igtl);
+  EXPECT_EQ(r->trackers.source, lungar::drivers::TrackerSource::Igtl);
   EXPECT_EQ(g.host, "plus.lab");
   EXPECT_EQ(g.port, 18945);
   EXPECT_EQ(g.head, "");
   EXPECT_EQ(g.patient, "ReferenceToTracker");
   EXPECT_EQ(g.stylus, "StylusTipToTracker");  // the default, PLUS's naming
   EXPECT_DOUBLE_EQ(g.scale, 1000.0);
-  EXPECT_EQ(lungar::config::TrackerSettings{}.igtl.port, 18944);
+  EXPECT_EQ(lungar::drivers::TrackerConfig{}.igtl.port, 18944);
   EXPECT_EQ(error_of("[trackers.igtl]\nport = 0\n"),
             "bad.toml:2: key 'trackers.igtl.port': expected an integer in [1, 65535] (TCP port), got the integer 0");
   EXPECT_EQ(error_of("[trackers.igtl]\npatient = \"ThisNameIsLongerThan20\"\n"),

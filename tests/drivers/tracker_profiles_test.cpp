@@ -21,7 +21,7 @@ using namespace lungar::drivers;
 namespace {
 
 struct Profile {
-  config::TrackerSettings settings;
+  TrackerConfig settings;
   ReportLayout layout;
 };
 
@@ -31,7 +31,7 @@ Profile profile(const std::string& name, std::uint16_t vendor_id, std::uint16_t 
   EXPECT_TRUE(r) << r.error();
   Profile p;
   if (r) p.settings = r->trackers;
-  EXPECT_EQ(p.settings.source, config::TrackerSource::Hid);
+  EXPECT_EQ(p.settings.source, TrackerSource::Hid);
   EXPECT_EQ(p.settings.hid.vendor_id, vendor_id);
   EXPECT_EQ(p.settings.hid.product_id, product_id);
   auto l = make_layout(p.settings);

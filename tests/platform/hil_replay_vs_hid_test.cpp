@@ -17,8 +17,8 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/decode/layout_toml.h"
 #include "drivers/tracker/tracker.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/gl_math.h"
@@ -89,7 +89,7 @@ class HardwareInTheLoop : public ::testing::Test {
     auto log = drivers::load_trk(kLog);
     ASSERT_TRUE(log) << log.error();
     records = log->records.size();
-    auto t = drivers::layout_from_toml(log->header.layout_toml, kLog);
+    auto t = drivers::tracker_config_from_toml(log->header.layout_toml, kLog);
     ASSERT_TRUE(t) << t.error();
     trackers = *t;
     auto ctx = platform::EglContext::headless();

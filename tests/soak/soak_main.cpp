@@ -20,7 +20,7 @@
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
-#include "drivers/decode/layout_toml.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/runtime/run.h"
 #include "umockdev_tracker.h"
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lungar-soak: %s\n", log ? (o.log + ": no records").c_str() : log.error().c_str());
     return 2;
   }
-  auto layout = drivers::layout_from_toml(log->header.layout_toml, o.log);
+  auto layout = drivers::tracker_config_from_toml(log->header.layout_toml, o.log);
   if (!layout) {
     std::fprintf(stderr, "lungar-soak: %s\n", layout.error().c_str());
     return 2;
@@ -145,6 +145,7 @@ int main(int argc, char** argv) {
   s.sim.asset = o.asset;
   s.trackers = *layout;
   s.trackers.source = config::TrackerSource::Hid;
+  s.trackers.hid = {};  // the emulated device below, not whichever the log's header names
   s.trackers.hid.vendor_id = 0x1234;
   s.trackers.hid.product_id = 0x5678;
   platform::RuntimeOptions ro;

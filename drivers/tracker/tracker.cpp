@@ -82,7 +82,7 @@ bool recorded_with_another_layout(const TrkLog& log, const TrackerConfig& settin
 Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, const TrackerOptions& options) {
   Result<ReportLayout> layout = make_layout(settings);
   if (!layout) return layout.with_context("tracker report layout: ");
-  auto igtl_layout = make_igtl_layout(settings);
+  auto igtl_layout = make_igtl_layout(settings);  // for replay too: a log may hold OpenIGTLink messages
   if (!igtl_layout) return igtl_layout.with_context("tracker: ");
   std::unique_ptr<TrackerDevice> source;
   bool layout_differs = false;
@@ -97,10 +97,14 @@ Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, con
     case TrackerSource::Replay: {
       Result<TrkLog> log = load_trk(settings.replay_file);
       if (!log) return fail(log.error());
-      // The bytes are decoded with the configured layout, as the HID source would; a log made with another
+      // The bytes are decoded with the configured layout, as the live device would; a log made with another
       // layout says so in its header, and the mismatch is worth a line.
       layout_differs = recorded_with_another_layout(*log, settings);
-      source = replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop);
+      RecordDecoder igtl{TrkSource::Igtl, [l = *igtl_layout](std::span<const std::uint8_t> message) {
+                           return decode_igtl_message(message, l);
+                         }};
+      source = replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop,
+                             {std::move(igtl)});
       break;
     }
     case TrackerSource::Hid: {
@@ -109,11 +113,11 @@ Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, con
       source = hid_create(settings);
       break;
     }
-    case TrackerSource::Igtl: source = igtl_create(settings); break;
+    case TrackerSource::Igtl: source = igtl_create(settings, *igtl_layout); break;
   }
   TrackerOptions opts = options;
   opts.record_layout_toml = tracker_config_to_toml(settings);
-  auto core = std::make_unique<TrackerCore>(*layout, *igtl_layout, settings, opts);
+  auto core = std::make_unique<TrackerCore>(*layout, settings, opts);
   if (!options.record_path.empty()) {
     Status recording = core->start_recording(options.record_path, source->trk_description(), source->trk_source());
     if (!recording) return fail(recording.error());

@@ -16,8 +16,8 @@ class TrackerCore;
 class TrackerDevice {
  public:
   virtual ~TrackerDevice() = default;
-  /// The thread: read reports and pass each to core.feed() until `stop` is requested. Allocates nothing per
-  /// report. Sets the connection state on `core`.
+  /// The thread: read reports and pass each to core.feed() (or, decoded here, to core.feed_decoded()) until
+  /// `stop` is requested. Allocates nothing per report. Sets the connection state on `core`.
   virtual void run(TrackerCore& core, std::stop_token stop) = 0;
   /// One line for logs and the .trk header's description ("key=value" lines for the latter).
   virtual std::string describe() const = 0;

@@ -1,11 +1,11 @@
 /// @file tracker.h
-/// @brief The tracker API the frame loop uses: make a tracker from config, read the latest pose per role
-/// without locks, a short history for prediction, counters and the connection state.
+/// @brief The tracker API the frame loop uses: read the latest pose per role without locks, a short history for
+/// prediction, counters and the connection state.
 /// @ingroup drivers
 ///
-/// make_tracker() starts one thread that reads reports (HID, mock, replay or OpenIGTLink messages), decodes and
-/// validates them with
-/// the configured layout, and publishes accepted poses; malformed reports are counted and never published.
+/// A Tracker runs one device's thread (HID, mock, replay, OpenIGTLink: make_tracker() in
+/// drivers/tracker_factory/ picks it from the config), which hands reports to the TrackerCore pipeline: decoded,
+/// validated, accepted poses published; malformed reports are counted and never published.
 #pragma once
 
 #include <array>
@@ -19,7 +19,6 @@
 #include "drivers/decode/decoder.h"
 #include "drivers/pose/pose_history.h"
 #include "drivers/pose/pose_sample.h"
-#include "drivers/tracker/tracker_config.h"
 
 namespace lungar::drivers {
 
@@ -88,12 +87,5 @@ class Tracker {
   struct Thread;
   std::unique_ptr<Thread> thread_;
 };
-
-/// Builds the source named by settings.source (mock | hid | replay | igtl) and starts its thread. A HID tracker
-/// that is not plugged in, or an OpenIGTLink server that is not up, is not an error: it starts disconnected and
-/// connects when the device or server appears. An error is one line naming what is wrong (layout, replay file,
-/// record file).
-Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings,
-                                              const TrackerOptions& options = {});
 
 }  // namespace lungar::drivers

@@ -15,6 +15,7 @@
 #include "platform/runtime/script_breathing.h"
 #include "platform/runtime/tracker_poses.h"
 #include "config/settings_load.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/scenario_adapter.h"
 #include "platform/sync/join_classroom.h"
 #include "sim/asset/asset_io.h"

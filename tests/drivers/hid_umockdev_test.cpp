@@ -15,7 +15,7 @@
 
 #include "drivers/decode/encoder.h"
 #include "drivers/hid/hid_interface.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "test_data.h"
 #include "tracker_test_support.h"

@@ -19,7 +19,7 @@
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_messages.h"
 #include "drivers/igtl/tcp_socket.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "tracker_test_support.h"
 

@@ -13,8 +13,8 @@
 
 #include "config/settings_load.h"
 #include "drivers/mock/mock_reports.h"
-#include "drivers/tracker/tracker.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 #include "test_data.h"

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 
 namespace lungar::testing {
 

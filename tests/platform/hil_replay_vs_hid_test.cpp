@@ -17,8 +17,8 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/tracker/tracker.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/gl_math.h"

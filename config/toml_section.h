@@ -40,7 +40,7 @@ class TomlSection {
   void texts(std::string_view key, std::vector<std::string>& out);
   /// A string that must be one of `choices`.
   void choice(std::string_view key, std::string& out, std::initializer_list<std::string_view> choices);
-  /// A string that must be one of the names in `names` (config/settings.h's tables).
+  /// A string that must be one of the names in `names` (each owner's table, config/base/enum_names.h).
   template <typename E, std::size_t N>
   void choice(std::string_view key, E& out, const EnumNames<E, N>& names);
   /// A fixed-length array of numbers, each within [lo, hi].

@@ -42,12 +42,12 @@ double read_field(const std::uint8_t* p, const FieldFormat& f, bool big) {
   const std::uint32_t u = read_uint(p, f.bytes(), big);
   double raw = 0;
   switch (f.type) {
-    case config::FieldType::I16:
-    case config::FieldType::Fixed16: raw = static_cast<std::int16_t>(static_cast<std::uint16_t>(u)); break;
-    case config::FieldType::I32:
-    case config::FieldType::Fixed32: raw = static_cast<std::int32_t>(u); break;
-    case config::FieldType::F32: raw = std::bit_cast<float>(u); break;
-    case config::FieldType::None: break;  // never read (FieldFormat::present())
+    case FieldType::I16:
+    case FieldType::Fixed16: raw = static_cast<std::int16_t>(static_cast<std::uint16_t>(u)); break;
+    case FieldType::I32:
+    case FieldType::Fixed32: raw = static_cast<std::int32_t>(u); break;
+    case FieldType::F32: raw = std::bit_cast<float>(u); break;
+    case FieldType::None: break;  // never read (FieldFormat::present())
   }
   return std::ldexp(raw, -f.frac_bits) * f.scale;
 }

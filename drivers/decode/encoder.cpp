@@ -21,26 +21,26 @@ void write_uint(std::uint8_t* p, std::uint32_t v, int bytes, bool big) {
 void write_field(std::uint8_t* p, double value, const FieldFormat& f, bool big) {
   double raw = std::ldexp(value / f.scale, f.frac_bits);
   // Out-of-range conversions are undefined behaviour: NaN becomes 0 for integers, floats saturate to infinity.
-  if (std::isnan(raw) && f.type != config::FieldType::F32) raw = 0;
-  if (f.type == config::FieldType::F32 && std::abs(raw) > std::numeric_limits<float>::max()) {
+  if (std::isnan(raw) && f.type != FieldType::F32) raw = 0;
+  if (f.type == FieldType::F32 && std::abs(raw) > std::numeric_limits<float>::max()) {
     raw = std::copysign(std::numeric_limits<double>::infinity(), raw);
   }
   std::uint32_t u = 0;
   switch (f.type) {
-    case config::FieldType::I16:
-    case config::FieldType::Fixed16: {
+    case FieldType::I16:
+    case FieldType::Fixed16: {
       const double c = std::clamp(std::round(raw), -32768.0, 32767.0);
       u = static_cast<std::uint16_t>(static_cast<std::int16_t>(c));
       break;
     }
-    case config::FieldType::I32:
-    case config::FieldType::Fixed32: {
+    case FieldType::I32:
+    case FieldType::Fixed32: {
       const double c = std::clamp(std::round(raw), -2147483648.0, 2147483647.0);
       u = static_cast<std::uint32_t>(static_cast<std::int32_t>(c));
       break;
     }
-    case config::FieldType::F32: u = std::bit_cast<std::uint32_t>(static_cast<float>(raw)); break;
-    case config::FieldType::None: return;  // no field to write
+    case FieldType::F32: u = std::bit_cast<std::uint32_t>(static_cast<float>(raw)); break;
+    case FieldType::None: return;  // no field to write
   }
   write_uint(p, u, f.bytes(), big);
 }

@@ -1,5 +1,5 @@
 /// @file report_layout.cpp
-/// @brief config::TrackerSettings -> ReportLayout: parses component lists, builds the axis remap, checks bounds.
+/// @brief TrackerConfig -> ReportLayout: parses component lists, builds the axis remap, checks bounds.
 #include "drivers/decode/report_layout.h"
 
 #include <algorithm>
@@ -7,15 +7,15 @@
 namespace lungar::drivers {
 
 int FieldFormat::bytes() const {
-  if (type == config::FieldType::None) return 0;
-  return (type == config::FieldType::I16 || type == config::FieldType::Fixed16) ? 2 : 4;
+  if (type == FieldType::None) return 0;
+  return (type == FieldType::I16 || type == FieldType::Fixed16) ? 2 : 4;
 }
 
 namespace {
 
 template <std::size_t N>
 bool components(const std::string& text, std::string_view letters, std::array<Component, N>& out) {
-  auto axes = config::parse_signed_axes(text, letters);
+  auto axes = parse_signed_axes(text, letters);
   if (!axes || axes->size() > N) return false;
   for (std::size_t k = 0; k < axes->size(); ++k) out[k] = {(*axes)[k].index, (*axes)[k].sign};
   return true;
@@ -25,8 +25,8 @@ Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]};
 
 /// Checks that the station byte, the time and each enabled sensor's fields lie inside the report, and adds the
 /// sensors to `l`; an error reads "trackers.<key>: what is wrong".
-Status place_fields(const config::TrackerSettings& t, ReportLayout& l) {
-  const config::ReportSettings& r = t.report;
+Status place_fields(const TrackerConfig& t, ReportLayout& l) {
+  const ReportConfig& r = t.report;
   const int first = r.report_id >= 0 ? 1 : 0;
   auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
   if (r.station_offset >= 0 && !inside(r.station_offset, 1)) {
@@ -35,7 +35,7 @@ Status place_fields(const config::TrackerSettings& t, ReportLayout& l) {
   if (r.time_offset >= 0 && !inside(r.time_offset, r.time_bits / 8)) {
     return fail("trackers.report.time_offset: expected the timestamp inside the report");
   }
-  const std::pair<Role, const config::SensorSettings*> sensors[] = {
+  const std::pair<Role, const SensorConfig*> sensors[] = {
       {Role::Head, &t.head}, {Role::Patient, &t.patient}, {Role::Stylus, &t.stylus}};
   for (const auto& [role, s] : sensors) {
     if (!s->enabled) continue;
@@ -60,7 +60,7 @@ Status place_fields(const config::TrackerSettings& t, ReportLayout& l) {
 
 }  // namespace
 
-Result<WorldFrame> make_world_frame(const config::TrackerSettings& t) {
+Result<WorldFrame> make_world_frame(const TrackerConfig& t) {
   WorldFrame w;
   std::array<Component, 3> remap{};
   if (!components(t.axis_remap, "xyz", remap)) {
@@ -78,22 +78,22 @@ Result<WorldFrame> make_world_frame(const config::TrackerSettings& t) {
   return w;
 }
 
-Result<ReportLayout> make_layout(const config::TrackerSettings& t) {
-  const config::ReportSettings& r = t.report;
+Result<ReportLayout> make_layout(const TrackerConfig& t) {
+  const ReportConfig& r = t.report;
   auto fail = [](const std::string& key, const std::string& what) {
     return lungar::fail("trackers." + key + ": " + what);
   };
   ReportLayout l;
   l.report_id = r.report_id;
   l.length = r.length;
-  l.big_endian = r.endian == config::Endian::Big;
+  l.big_endian = r.endian == Endian::Big;
   l.station_offset = r.station_offset;
   l.time_offset = r.time_offset;
   l.time_bits = r.time_bits;
   l.time_tick_ns = r.time_tick_us * 1000.0;
   l.position_offset = r.position_offset;
   l.position = {r.position_type, r.position_frac_bits, r.position_scale};
-  l.euler = r.orientation == config::OrientationKind::Euler;
+  l.euler = r.orientation == OrientationKind::Euler;
   l.orientation_offset = r.orientation_offset;
   l.orientation = {r.orientation_type, r.orientation_frac_bits, r.orientation_scale};
 
@@ -102,7 +102,7 @@ Result<ReportLayout> make_layout(const config::TrackerSettings& t) {
   if (r.time_bits != 16 && r.time_bits != 32) return fail("report.time_bits", "expected 16 or 32");
   if (!(r.time_tick_us > 0)) return fail("report.time_tick_us", "expected a positive tick");
   if (r.position_scale == 0 || r.orientation_scale == 0) return fail("report", "expected non-zero scales");
-  if (r.orientation_type == config::FieldType::None) {
+  if (r.orientation_type == FieldType::None) {
     return fail("report.orientation_type", "expected a field type: only the position may be \"none\"");
   }
   if (r.position_frac_bits < 0 || r.position_frac_bits > 31 || r.orientation_frac_bits < 0 ||

@@ -1,5 +1,5 @@
 /// @file report_layout.h
-/// @brief The report layout in the form the decoder uses, converted once from config::TrackerSettings.
+/// @brief The report layout in the form the decoder uses, converted once from TrackerConfig.
 /// @ingroup drivers
 #pragma once
 
@@ -11,18 +11,18 @@
 #include <Eigen/Geometry>
 
 #include "config/base/result.h"
-#include "config/settings.h"
 #include "drivers/pose/pose_sample.h"
+#include "drivers/tracker/tracker_config.h"
 
 namespace lungar::drivers {
 
 /// How one number is read: type, fixed-point bits and scale. value = raw / 2^frac_bits * scale.
 struct FieldFormat {
-  config::FieldType type = config::FieldType::I16;
+  FieldType type = FieldType::I16;
   int frac_bits = 0;
   double scale = 1.0;
   int bytes() const;  ///< 2 or 4; 0 for FieldType::None (no field in the report)
-  bool present() const { return type != config::FieldType::None; }
+  bool present() const { return type != FieldType::None; }
 };
 
 /// One component the device sends: which axis (x,y,z = 0..2; quaternion w,x,y,z = 0..3) and its sign.
@@ -72,10 +72,10 @@ struct ReportLayout {
 
 /// The world frame of the [trackers] keys (axis_remap, world_offset_mm, workspace, quat_norm_tolerance); an
 /// error names the key. make_layout() uses it; other decoders (OpenIGTLink) too.
-Result<WorldFrame> make_world_frame(const config::TrackerSettings& t);
+Result<WorldFrame> make_world_frame(const TrackerConfig& t);
 
 /// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings); an error
 /// reads "trackers.<key>: expected ..., got ...".
-Result<ReportLayout> make_layout(const config::TrackerSettings& t);
+Result<ReportLayout> make_layout(const TrackerConfig& t);
 
 }  // namespace lungar::drivers

@@ -43,11 +43,11 @@ std::string signed_perm(const char* perm, std::uint8_t signs) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 12) return 0;
   const std::uint8_t* c = data;
-  config::TrackerSettings t;
-  config::ReportSettings& r = t.report;
-  const config::FieldType types[] = {config::FieldType::I16, config::FieldType::I32, config::FieldType::F32,
-                                     config::FieldType::Fixed16, config::FieldType::Fixed32};
-  r.endian = c[0] & 1 ? config::Endian::Big : config::Endian::Little;
+  drivers::TrackerConfig t;
+  drivers::ReportConfig& r = t.report;
+  const drivers::FieldType types[] = {drivers::FieldType::I16, drivers::FieldType::I32, drivers::FieldType::F32,
+                                     drivers::FieldType::Fixed16, drivers::FieldType::Fixed32};
+  r.endian = c[0] & 1 ? drivers::Endian::Big : drivers::Endian::Little;
   r.report_id = (c[0] & 2) ? -1 : c[1];
   r.position_type = types[(c[0] >> 2) % 5];
   r.orientation_type = types[(c[0] >> 5) % 5];
@@ -59,14 +59,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   r.time_bits = c[6] & 0x80 ? 16 : 32;
   r.position_offset = c[7] % 40;
   r.orientation_offset = c[8] % 40;
-  r.orientation = c[9] & 1 ? config::OrientationKind::Euler : config::OrientationKind::Quaternion;
+  r.orientation = c[9] & 1 ? drivers::OrientationKind::Euler : drivers::OrientationKind::Quaternion;
   r.position_components = signed_perm(kPerms3[(c[9] >> 1) % 6], c[10]);
-  r.orientation_components = r.orientation == config::OrientationKind::Euler
+  r.orientation_components = r.orientation == drivers::OrientationKind::Euler
                                  ? signed_perm(kPerms3[(c[9] >> 4) % 6], c[10] >> 3)
                                  : signed_perm(kPerms4[(c[9] >> 4) % 4], c[10] >> 3);
   r.euler_sequence = kSeqs[c[11] % 7];
   r.position_scale = (c[11] & 0x80) ? 0.01 : 1.0;
-  r.orientation_scale = (r.orientation_type == config::FieldType::I16) ? 1.0 / 16384 : 1.0;
+  r.orientation_scale = (r.orientation_type == drivers::FieldType::I16) ? 1.0 / 16384 : 1.0;
   t.axis_remap = signed_perm(kPerms3[(c[11] >> 3) % 6], c[7] >> 5);
   t.head = {true, c[1] & 3, c[2] % 48, {}};
   t.patient = {(c[3] & 0x40) != 0, (c[1] >> 2) & 3, c[8] % 48, {}};

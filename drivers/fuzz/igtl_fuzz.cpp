@@ -59,7 +59,7 @@ void check(const drivers::DecodedReport& d, const drivers::IgtlLayout& l) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   const std::uint8_t c = data[0];
-  config::TrackerSettings t;
+  drivers::TrackerConfig t;
   t.axis_remap = kRemaps[c & 3];
   t.igtl.scale = (c & 4) ? 1000.0 : 1.0;
   t.igtl.head = kNames[(c >> 3) & 3];

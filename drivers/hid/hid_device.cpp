@@ -19,9 +19,9 @@ namespace {
 constexpr std::int64_t kMs = 1'000'000;
 constexpr std::int64_t kMaxBackoffNs = 4000 * kMs;
 
-class HidDevice final : public TrackerSource {
+class HidDevice final : public TrackerDevice {
  public:
-  explicit HidDevice(const config::TrackerSettings& s)
+  explicit HidDevice(const TrackerConfig& s)
       : hid_(s.hid), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)),
         read_timeout_ms_(std::max(1, static_cast<int>(s.hid.read_timeout_ms))) {}
 
@@ -99,8 +99,8 @@ class HidDevice final : public TrackerSource {
   TrkSource trk_source() const override { return TrkSource::Hid; }
 
  private:
-  config::HidSettings probe_settings() const {
-    config::HidSettings s = hid_;
+  HidConfig probe_settings() const {
+    HidConfig s = hid_;
     s.path = found_.path;  // the very node that was open
     return s;
   }
@@ -150,7 +150,7 @@ class HidDevice final : public TrackerSource {
     dev_ = nullptr;
   }
 
-  config::HidSettings hid_;
+  HidConfig hid_;
   std::int64_t backoff0_ns_;
   int read_timeout_ms_;
   hid_device* dev_ = nullptr;
@@ -160,7 +160,7 @@ class HidDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> hid_create(const config::TrackerSettings& settings) {
+std::unique_ptr<TrackerDevice> hid_create(const TrackerConfig& settings) {
   return std::make_unique<HidDevice>(settings);
 }
 

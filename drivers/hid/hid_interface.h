@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "config/settings.h"
-#include "drivers/tracker/tracker_source.h"
+#include "drivers/tracker/tracker_config.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
@@ -22,9 +22,9 @@ struct HidFound {
 
 /// The first HID device matching the settings (path wins; else vendor/product ids, 0 = any, and serial, "" =
 /// any), from hid_enumerate(); nullopt when none is plugged in. Call hid_init() first (make_tracker does).
-std::optional<HidFound> hid_probe(const config::HidSettings& hid);
+std::optional<HidFound> hid_probe(const HidConfig& hid);
 
 /// A source for the configured device. It never fails to start: an absent device is "disconnected".
-std::unique_ptr<TrackerSource> hid_create(const config::TrackerSettings& settings);
+std::unique_ptr<TrackerDevice> hid_create(const TrackerConfig& settings);
 
 }  // namespace lungar::drivers

@@ -19,7 +19,7 @@ std::string narrow(const wchar_t* w) {
 
 }  // namespace
 
-std::optional<HidFound> hid_probe(const config::HidSettings& hid) {
+std::optional<HidFound> hid_probe(const HidConfig& hid) {
   // Strings come from the enumeration: under umockdev (and some kernels) they cannot be read from an open handle.
   hid_device_info* list = hid_enumerate(hid.vendor_id, hid.product_id);
   std::optional<HidFound> found;

@@ -150,7 +150,7 @@ DecodeError decode_body(Kind kind, const igtl_header& h, std::uint8_t* body, std
 
 }  // namespace
 
-Result<IgtlLayout> make_igtl_layout(const config::TrackerSettings& t) {
+Result<IgtlLayout> make_igtl_layout(const TrackerConfig& t) {
   IgtlLayout l;
   const std::pair<const char*, const std::string*> names[] = {
       {"head", &t.igtl.head}, {"patient", &t.igtl.patient}, {"stylus", &t.igtl.stylus}};

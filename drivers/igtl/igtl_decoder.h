@@ -15,8 +15,8 @@
 #include <span>
 
 #include "config/base/result.h"
-#include "config/settings.h"
 #include "drivers/decode/decoder.h"
+#include "drivers/tracker/tracker_config.h"
 
 namespace lungar::drivers {
 
@@ -33,7 +33,7 @@ struct IgtlLayout {
   double rigid_tolerance = 1e-3;  ///< max |R^T R - I| entry of an accepted rotation
   WorldFrame world;
 };
-Result<IgtlLayout> make_igtl_layout(const config::TrackerSettings& t);
+Result<IgtlLayout> make_igtl_layout(const TrackerConfig& t);
 
 /// What the reader needs from a header before it reads the body.
 struct IgtlHeaderInfo {

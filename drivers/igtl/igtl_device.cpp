@@ -1,5 +1,6 @@
 /// @file igtl_device.cpp
-/// @brief The OpenIGTLink reader thread: connect with back-off, read header then body, feed whole messages.
+/// @brief The OpenIGTLink reader thread: connect with back-off, read header then body, decode whole messages and
+/// hand their poses, with the bytes, to the pipeline.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,10 +21,10 @@ constexpr int kPollMs = 10;  ///< longest wait on the socket, so that stop and s
 /// Bodies of types lungar does not read (images from Slicer) are skipped; beyond this the stream is garbage.
 constexpr std::uint64_t kMaxSkip = 1ull << 30;
 
-class IgtlDevice final : public TrackerSource {
+class IgtlDevice final : public TrackerDevice {
  public:
-  explicit IgtlDevice(const config::TrackerSettings& s)
-      : igtl_(s.igtl), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)) {}
+  IgtlDevice(const TrackerConfig& s, const IgtlLayout& layout)
+      : igtl_(s.igtl), layout_(layout), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     std::int64_t backoff = backoff0_ns_, next_attempt = 0;
@@ -89,7 +90,7 @@ class IgtlDevice final : public TrackerSource {
     const long n = sock_.read_some(buf_.data() + have_, need_ - have_, kPollMs);
     const std::int64_t t = monotonic_ns();
     if (n < 0) {
-      if (have_ > 0) core.feed_igtl(std::span<const std::uint8_t>(buf_.data(), have_), t);  // cut short
+      if (have_ > 0) feed(core, t);  // cut short
       core.log(-1, "igtl: %s:%d closed the connection; reconnecting", igtl_.host.c_str(), igtl_.port);
       return false;
     }
@@ -106,16 +107,23 @@ class IgtlDevice final : public TrackerSource {
       // body is skipped unread.
       skip_ = info.body_size;
       if (skip_ > kMaxSkip) {
-        core.feed_igtl(std::span<const std::uint8_t>(buf_.data(), have_), t);
+        feed(core, t);
         core.log(-1, "igtl: a header announces %llu bytes: not an OpenIGTLink stream; reconnecting",
                  static_cast<unsigned long long>(skip_));
         return false;
       }
     }
-    core.feed_igtl(std::span<const std::uint8_t>(buf_.data(), have_), t);
+    feed(core, t);
     have_ = 0;
     need_ = kIgtlHeaderBytes;
     return true;
+  }
+
+  /// What arrived of the message (all of it, or its header, or the part before the connection closed): decoded
+  /// here, recorded as TrkSource::Igtl so that replay decodes it the same way.
+  void feed(TrackerCore& core, std::int64_t t_arrival_ns) {
+    const std::span<const std::uint8_t> message(buf_.data(), have_);
+    core.feed_decoded(TrkSource::Igtl, message, decode_igtl_message(message, layout_), t_arrival_ns);
   }
 
   void lose(TrackerCore& core, std::int64_t& next_attempt, std::int64_t& backoff) {
@@ -125,7 +133,8 @@ class IgtlDevice final : public TrackerSource {
     next_attempt = monotonic_ns() + backoff;
   }
 
-  config::IgtlSettings igtl_;
+  IgtlConfig igtl_;
+  IgtlLayout layout_;
   std::int64_t backoff0_ns_;
   TcpSocket sock_;
   std::array<std::uint8_t, kIgtlHeaderBytes + kIgtlMaxBody> buf_{};
@@ -135,8 +144,8 @@ class IgtlDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> igtl_create(const config::TrackerSettings& settings) {
-  return std::make_unique<IgtlDevice>(settings);
+std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings, const IgtlLayout& layout) {
+  return std::make_unique<IgtlDevice>(settings, layout);
 }
 
 }  // namespace lungar::drivers

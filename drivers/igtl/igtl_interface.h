@@ -5,18 +5,20 @@
 ///
 /// disconnected -> opening (connected, no pose yet) -> streaming -> stale (no pose within stale_ms) -> ...; a
 /// closed connection goes back to disconnected and is reopened with back-off (reopen_backoff_ms, doubling up to
-/// 4 s), without a restart. Each message is recorded whole (TrkSource::Igtl) and decoded by
-/// decode_igtl_message() (igtl_decoder.h).
+/// 4 s), without a restart. Each message is decoded here by decode_igtl_message() (igtl_decoder.h) and recorded
+/// whole (TrkSource::Igtl), so that replay decodes it with the same function.
 #pragma once
 
 #include <memory>
 
-#include "config/settings.h"
-#include "drivers/tracker/tracker_source.h"
+#include "drivers/igtl/igtl_decoder.h"
+#include "drivers/tracker/tracker_config.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
-/// A source for [trackers.igtl]'s server. It never fails to start: an absent server is "disconnected".
-std::unique_ptr<TrackerSource> igtl_create(const config::TrackerSettings& settings);
+/// A device for [trackers.igtl]'s server, decoding with `layout` (make_igtl_layout(settings)). It never fails to
+/// start: an absent server is "disconnected".
+std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings, const IgtlLayout& layout);
 
 }  // namespace lungar::drivers

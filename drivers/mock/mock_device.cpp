@@ -11,9 +11,9 @@ namespace lungar::drivers {
 
 namespace {
 
-class MockDevice final : public TrackerSource {
+class MockDevice final : public TrackerDevice {
  public:
-  MockDevice(const config::TrackerSettings& s, const ReportLayout& l) : reports_(s, l) {}
+  MockDevice(const TrackerConfig& s, const ReportLayout& l) : reports_(s, l) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     using clock = std::chrono::steady_clock;
@@ -42,7 +42,7 @@ class MockDevice final : public TrackerSource {
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> mock_create(const config::TrackerSettings& settings, const ReportLayout& layout) {
+std::unique_ptr<TrackerDevice> mock_create(const TrackerConfig& settings, const ReportLayout& layout) {
   return std::make_unique<MockDevice>(settings, layout);
 }
 

@@ -6,14 +6,14 @@
 
 #include <memory>
 
-#include "config/settings.h"
 #include "drivers/decode/report_layout.h"
-#include "drivers/tracker/tracker_source.h"
+#include "drivers/tracker/tracker_config.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
 /// A source producing mock_rate_hz reports per sensor (one report each with a station byte, else one report
 /// for all), with optional Gaussian position noise and dropouts. Precondition: the trajectory name is valid.
-std::unique_ptr<TrackerSource> mock_create(const config::TrackerSettings& settings, const ReportLayout& layout);
+std::unique_ptr<TrackerDevice> mock_create(const TrackerConfig& settings, const ReportLayout& layout);
 
 }  // namespace lungar::drivers

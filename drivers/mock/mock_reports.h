@@ -9,9 +9,9 @@
 #include <span>
 #include <string>
 
-#include "config/settings.h"
 #include "drivers/decode/encoder.h"
 #include "drivers/mock/mock_trajectory.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/trk/trk_format.h"
 
 namespace lungar::drivers {
@@ -19,7 +19,7 @@ namespace lungar::drivers {
 class MockReports {
  public:
   /// Precondition: settings.mock_trajectory is a known trajectory.
-  MockReports(const config::TrackerSettings& settings, const ReportLayout& layout)
+  MockReports(const TrackerConfig& settings, const ReportLayout& layout)
       : trajectory_(settings.mock_trajectory), rate_hz_(settings.mock_rate_hz), noise_mm_(settings.mock_noise_mm),
         dropout_(settings.mock_dropout), layout_(layout), noise_(0.0, noise_mm_ > 0 ? noise_mm_ : 1.0) {}
 

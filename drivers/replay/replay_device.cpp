@@ -10,10 +10,14 @@ namespace lungar::drivers {
 
 namespace {
 
-class ReplayDevice final : public TrackerSource {
+class ReplayDevice final : public TrackerDevice {
  public:
-  ReplayDevice(TrkLog log, std::string path, bool realtime, bool loop)
-      : log_(std::move(log)), path_(std::move(path)), realtime_(realtime), loop_(loop) {}
+  ReplayDevice(TrkLog log, std::string path, bool realtime, bool loop, std::vector<RecordDecoder> decoders)
+      : log_(std::move(log)),
+        path_(std::move(path)),
+        realtime_(realtime),
+        loop_(loop),
+        decoders_(std::move(decoders)) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     using clock = std::chrono::steady_clock;
@@ -39,11 +43,7 @@ class ReplayDevice final : public TrackerSource {
             core.tick(monotonic_ns());
           }
         }
-        if (r.source == TrkSource::Igtl) {  // an OpenIGTLink message: the same decoder as the live source
-          core.feed_igtl(r.report, monotonic_ns());
-        } else {
-          core.feed(r.report, monotonic_ns());
-        }
+        feed(core, r);
       }
     }
     core.set_finished();
@@ -61,15 +61,28 @@ class ReplayDevice final : public TrackerSource {
   TrkSource trk_source() const override { return TrkSource::Replay; }
 
  private:
+  /// A record of a device with its own protocol (an OpenIGTLink message): the same decoder as live.
+  void feed(TrackerCore& core, const TrkRecord& r) const {
+    for (const RecordDecoder& d : decoders_) {
+      if (d.source == r.source) {
+        core.feed_decoded(r.source, r.report, d.decode(r.report), monotonic_ns());
+        return;
+      }
+    }
+    core.feed(r.report, monotonic_ns());
+  }
+
   TrkLog log_;
   std::string path_;
   bool realtime_, loop_;
+  std::vector<RecordDecoder> decoders_;
 };
 
 }  // namespace
 
-std::unique_ptr<TrackerSource> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop) {
-  return std::make_unique<ReplayDevice>(std::move(log), path, realtime, loop);
+std::unique_ptr<TrackerDevice> replay_create(TrkLog log, const std::string& path, bool realtime, bool loop,
+                                             std::vector<RecordDecoder> decoders) {
+  return std::make_unique<ReplayDevice>(std::move(log), path, realtime, loop, std::move(decoders));
 }
 
 }  // namespace lungar::drivers

@@ -11,12 +11,11 @@
 #include <map>
 #include <string>
 
-#include "config/settings_load.h"
 #include "drivers/decode/decoder.h"
-#include "drivers/decode/layout_toml.h"
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_serve.h"
 #include "drivers/mock/mock_reports.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 #include "config/base/log_line.h"
@@ -32,16 +31,13 @@ int die(const std::string& line) {
   return 1;
 }
 
-/// Tracker settings from --config when given, else from the log's own header.
-Result<config::TrackerSettings> settings_for(const TrkLog& log, const std::string& file,
-                                             const std::string& config_path) {
-  if (!config_path.empty()) {
-    return config::load_tracker_settings(config_path);
-  }
+/// Tracker settings from --config's [trackers] when given, else from the log's own header.
+Result<TrackerConfig> settings_for(const TrkLog& log, const std::string& file, const std::string& config_path) {
+  if (!config_path.empty()) return tracker_config_from_file(config_path);
   if (log.header.layout_toml.empty()) {
     return fail(file + ": the log does not describe its report layout: expected --config FILE.toml");
   }
-  return layout_from_toml(log.header.layout_toml, file + " (header layout)");
+  return tracker_config_from_toml(log.header.layout_toml, file + " (header layout)");
 }
 
 int info(const std::string& file) {
@@ -149,9 +145,9 @@ int cut(const std::string& file, const std::string& out, double from_s, double t
 
 int synth(const std::string& out, const std::string& config_path, const std::string& trajectory, double seconds,
           double rate_hz, double noise_mm, double dropout) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   if (!config_path.empty()) {
-    auto r = config::load_tracker_settings(config_path);
+    auto r = tracker_config_from_file(config_path);
     if (!r) return die(r.error());
     t = *r;
   }
@@ -168,7 +164,7 @@ int synth(const std::string& out, const std::string& config_path, const std::str
   h.description = "source=synth\ntrajectory=" + t.mock_trajectory + "\nrate_hz=" + std::to_string(t.mock_rate_hz) +
                   "\nseconds=" + std::to_string(seconds) + "\nnoise_mm=" + std::to_string(noise_mm) +
                   "\ndropout=" + std::to_string(dropout) + "\n";
-  h.layout_toml = layout_to_toml(t);
+  h.layout_toml = tracker_config_to_toml(t);
   TrkWriter w;
   if (Status s = w.open(out, h, TrkWriter::Mode::Atomic); !s) return die(s.error());
   MockReports reports(t, *layout);

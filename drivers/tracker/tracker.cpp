@@ -1,19 +1,11 @@
 /// @file tracker.cpp
-/// @brief make_tracker(): layout, source, optional recording, and the thread that runs the source.
+/// @brief The Tracker: the thread that runs a device into the pipeline, and what the frame loop reads.
 #include "drivers/tracker/tracker.h"
 
-#include <hidapi/hidapi.h>
-
-#include <mutex>
 #include <thread>
 
-#include "drivers/decode/layout_toml.h"
-#include "drivers/hid/hid_interface.h"
-#include "drivers/igtl/igtl_interface.h"
-#include "drivers/mock/mock_interface.h"
-#include "drivers/mock/mock_trajectory.h"
-#include "drivers/replay/replay_interface.h"
 #include "drivers/tracker/tracker_core.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
@@ -31,9 +23,9 @@ struct Tracker::Thread {
   std::jthread thread;
 };
 
-Tracker::Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source)
-    : core_(std::move(core)), source_(std::move(source)), thread_(std::make_unique<Thread>()) {
-  thread_->thread = std::jthread([this](std::stop_token stop) { source_->run(*core_, stop); });
+Tracker::Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerDevice> device)
+    : core_(std::move(core)), device_(std::move(device)), thread_(std::make_unique<Thread>()) {
+  thread_->thread = std::jthread([this](std::stop_token stop) { device_->run(*core_, stop); });
 }
 
 Tracker::~Tracker() { stop(); }
@@ -55,54 +47,6 @@ PoseSample Tracker::predicted(Role role, std::int64_t t_ns, std::int64_t max_ahe
 TrackerStats Tracker::stats() const { return core_->stats(); }
 TrackerState Tracker::state() const { return core_->state(); }
 bool Tracker::finished() const { return core_->finished(); }
-std::string Tracker::describe() const { return source_->describe(); }
-
-Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings, const TrackerOptions& options) {
-  Result<ReportLayout> layout = make_layout(settings);
-  if (!layout) return layout.with_context("tracker report layout: ");
-  auto igtl_layout = make_igtl_layout(settings);
-  if (!igtl_layout) return igtl_layout.with_context("tracker: ");
-  std::unique_ptr<TrackerSource> source;
-  bool layout_differs = false;
-  switch (settings.source) {
-    case config::TrackerSource::Mock:
-      if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
-        return fail("trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
-                    settings.mock_trajectory + "\"");
-      }
-      source = mock_create(settings, *layout);
-      break;
-    case config::TrackerSource::Replay: {
-      Result<TrkLog> log = load_trk(settings.replay_file);
-      if (!log) return fail(log.error());
-      // The bytes are decoded with the configured layout, as the HID source would; a log made with another
-      // layout says so in its header, and the mismatch is worth a line.
-      layout_differs = !log->header.layout_toml.empty() && log->header.layout_toml != layout_to_toml(settings);
-      source = replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop);
-      break;
-    }
-    case config::TrackerSource::Hid: {
-      static std::once_flag init;  // hid_init is not thread-safe; once per process
-      std::call_once(init, [] { hid_init(); });
-      source = hid_create(settings);
-      break;
-    }
-    case config::TrackerSource::Igtl: source = igtl_create(settings); break;
-  }
-  TrackerOptions opts = options;
-  opts.record_layout_toml = layout_to_toml(settings);
-  auto core = std::make_unique<TrackerCore>(*layout, *igtl_layout, settings, opts);
-  if (!options.record_path.empty()) {
-    Status recording = core->start_recording(options.record_path, source->trk_description(), source->trk_source());
-    if (!recording) return fail(recording.error());
-  }
-  core->log(-1, "tracker: %s", source->describe().c_str());
-  if (layout_differs) {
-    core->log(-1, "replay %s: the log was recorded with another report layout than the config's; decoding with "
-                  "the config's (lungar-trk dump uses the log's own)",
-              settings.replay_file.c_str());
-  }
-  return std::make_unique<Tracker>(std::move(core), std::move(source));
-}
+std::string Tracker::describe() const { return device_->describe(); }
 
 }  // namespace lungar::drivers

@@ -1,11 +1,11 @@
 /// @file tracker.h
-/// @brief The tracker API the frame loop uses: make a tracker from config, read the latest pose per role
-/// without locks, a short history for prediction, counters and the connection state.
+/// @brief The tracker API the frame loop uses: read the latest pose per role without locks, a short history for
+/// prediction, counters and the connection state.
 /// @ingroup drivers
 ///
-/// make_tracker() starts one thread that reads reports (HID, mock, replay or OpenIGTLink messages), decodes and
-/// validates them with
-/// the configured layout, and publishes accepted poses; malformed reports are counted and never published.
+/// A Tracker runs one device's thread (HID, mock, replay, OpenIGTLink: make_tracker() in
+/// drivers/tracker_factory/ picks it from the config), which hands reports to the TrackerCore pipeline: decoded,
+/// validated, accepted poses published; malformed reports are counted and never published.
 #pragma once
 
 #include <array>
@@ -16,7 +16,6 @@
 
 #include "config/base/clock.h"
 #include "config/base/result.h"
-#include "config/settings.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/pose/pose_history.h"
 #include "drivers/pose/pose_sample.h"
@@ -52,16 +51,17 @@ struct TrackerOptions {
   std::function<void(const std::string& line)> log;
   /// Called on the tracker thread for every accepted sample (tests, recording of poses); must not block.
   std::function<void(const PoseSample&)> on_sample;
-  /// TOML of the [trackers...] layout tables for the .trk header (make_tracker fills it from the settings).
+  /// The [trackers] TOML for the .trk header (make_tracker() fills it: tracker_config_to_toml()).
   std::string record_layout_toml;
 };
 
 class TrackerCore;
-class TrackerSource;
+class TrackerDevice;
 
 class Tracker {
  public:
-  Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerSource> source);
+  /// Starts `device`'s thread feeding `core`.
+  Tracker(std::unique_ptr<TrackerCore> core, std::unique_ptr<TrackerDevice> device);
   ~Tracker();  ///< stops and joins the thread
   Tracker(const Tracker&) = delete;
   Tracker& operator=(const Tracker&) = delete;
@@ -83,16 +83,9 @@ class Tracker {
 
  private:
   std::unique_ptr<TrackerCore> core_;
-  std::unique_ptr<TrackerSource> source_;
+  std::unique_ptr<TrackerDevice> device_;
   struct Thread;
   std::unique_ptr<Thread> thread_;
 };
-
-/// Builds the source named by settings.source (mock | hid | replay | igtl) and starts its thread. A HID tracker
-/// that is not plugged in, or an OpenIGTLink server that is not up, is not an error: it starts disconnected and
-/// connects when the device or server appears. An error is one line naming what is wrong (layout, replay file,
-/// record file).
-Result<std::unique_ptr<Tracker>> make_tracker(const config::TrackerSettings& settings,
-                                              const TrackerOptions& options = {});
 
 }  // namespace lungar::drivers

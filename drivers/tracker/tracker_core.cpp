@@ -18,10 +18,8 @@ void default_log(const std::string& line) { log_line("lungar", "drivers: " + lin
 
 }  // namespace
 
-TrackerCore::TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout,
-                         const config::TrackerSettings& settings, TrackerOptions options)
+TrackerCore::TrackerCore(const ReportLayout& layout, const TrackerConfig& settings, TrackerOptions options)
     : layout_(layout),
-      igtl_layout_(igtl_layout),
       stale_ns_(static_cast<std::int64_t>(settings.stale_ms * 1e6)),
       options_(std::move(options)) {
   if (!options_.log) options_.log = default_log;
@@ -67,9 +65,10 @@ DecodeError TrackerCore::feed(std::span<const std::uint8_t> report, std::int64_t
   return accept(decode_report(report, layout_), report.size(), t_arrival_ns);
 }
 
-DecodeError TrackerCore::feed_igtl(std::span<const std::uint8_t> message, std::int64_t t_arrival_ns) {
-  record(TrkSource::Igtl, message, t_arrival_ns);  // the record's source says how to decode it again
-  return accept(decode_igtl_message(message, igtl_layout_), message.size(), t_arrival_ns);
+DecodeError TrackerCore::feed_decoded(TrkSource source, std::span<const std::uint8_t> bytes,
+                                      const DecodedReport& decoded, std::int64_t t_arrival_ns) {
+  record(source, bytes, t_arrival_ns);  // the record's source says how to decode it again
+  return accept(decoded, bytes.size(), t_arrival_ns);
 }
 
 void TrackerCore::record(TrkSource source, std::span<const std::uint8_t> bytes, std::int64_t t_arrival_ns) {
@@ -105,8 +104,7 @@ DecodeError TrackerCore::accept(const DecodedReport& d, std::size_t bytes, std::
   }
   if (d.ignored > 0 && ignored_.fetch_add(static_cast<std::uint64_t>(d.ignored), std::memory_order_relaxed) == 0) {
     // Once: a server that also streams other tools (a probe, a needle) is normal, not worth a line a second.
-    log(-1, "igtl: device '%s' feeds no role (trackers.igtl.head | patient | stylus name the devices); data of "
-            "unconfigured devices is ignored",
+    log(-1, "device '%s' feeds no role (no role of [trackers] names it); data of devices no role names is ignored",
         d.ignored_name.data());
   }
   if (d.count == 0) {  // nothing for any role (only ignored devices): no pose, no change of state

@@ -1,6 +1,9 @@
 /// @file tracker_core.h
-/// @brief The pipeline every source feeds: raw report -> record -> decode -> validate -> publish, with counters.
+/// @brief The pipeline every device feeds: raw report -> record -> decode -> validate -> publish, with counters.
 /// @ingroup drivers
+///
+/// It knows no device: reports in the configured layout ([trackers.report]) it decodes itself; a device with a
+/// protocol of its own (OpenIGTLink) decodes its messages and hands over the poses with the bytes to record.
 #pragma once
 
 #include <array>
@@ -10,7 +13,6 @@
 #include <string>
 
 #include "drivers/decode/decoder.h"
-#include "drivers/igtl/igtl_decoder.h"
 #include "drivers/pose/mailbox.h"
 #include "drivers/tracker/tracker.h"
 #include "drivers/trk/trk_writer.h"
@@ -19,8 +21,7 @@ namespace lungar::drivers {
 
 class TrackerCore {
  public:
-  TrackerCore(const ReportLayout& layout, const IgtlLayout& igtl_layout, const config::TrackerSettings& settings,
-              TrackerOptions options);
+  TrackerCore(const ReportLayout& layout, const TrackerConfig& settings, TrackerOptions options);
 
   /// Opens the --record log with the device's description in its header.
   Status start_recording(const std::string& path, const std::string& description, TrkSource source);
@@ -28,8 +29,10 @@ class TrackerCore {
   /// One raw report read at `t_arrival_ns` (monotonic). Records it, decodes it, and publishes its poses or
   /// counts why not. Allocates nothing (unless a callback or the rate-limited log does).
   DecodeError feed(std::span<const std::uint8_t> report, std::int64_t t_arrival_ns);
-  /// The same for one OpenIGTLink message (header + body, or what arrived of it), recorded as TrkSource::Igtl.
-  DecodeError feed_igtl(std::span<const std::uint8_t> message, std::int64_t t_arrival_ns);
+  /// The same for bytes a device decoded itself (an OpenIGTLink message, or what arrived of it): recorded as
+  /// `source`, the value replay knows their decoder by, then `decoded` is validated and published as feed() does.
+  DecodeError feed_decoded(TrkSource source, std::span<const std::uint8_t> bytes, const DecodedReport& decoded,
+                           std::int64_t t_arrival_ns);
 
   /// Between reads: streaming -> stale after stale_ms without an accepted report; the rate decays to 0.
   void tick(std::int64_t now_ns);
@@ -51,7 +54,6 @@ class TrackerCore {
   TrackerState state() const { return state_.load(std::memory_order_acquire); }
   bool finished() const { return finished_.load(std::memory_order_acquire); }
   const ReportLayout& layout() const { return layout_; }
-  const IgtlLayout& igtl_layout() const { return igtl_layout_; }
   std::int64_t stale_ns() const { return stale_ns_; }
   TrkSource record_source = TrkSource::Hid;
 
@@ -60,7 +62,6 @@ class TrackerCore {
   DecodeError accept(const DecodedReport& d, std::size_t bytes, std::int64_t t_arrival_ns);
 
   const ReportLayout layout_;
-  const IgtlLayout igtl_layout_;
   const std::int64_t stale_ns_;
   TrackerOptions options_;
   TrkWriter recorder_;

@@ -6,8 +6,8 @@
 
 #include "platform/app/settings_load.h"
 #include "drivers/decode/decoder.h"
-#include "drivers/decode/layout_toml.h"
 #include "drivers/decode/report_layout.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 
 namespace lungar::platform {
@@ -15,12 +15,12 @@ namespace lungar::platform {
 namespace {
 
 /// The report layout a log was recorded with: its header's, else the config's, else the defaults.
-Result<config::TrackerSettings> log_layout(const drivers::TrkLog& log, const std::string& log_path,
+Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std::string& log_path,
                                            const std::string& config_path) {
   if (!log.header.layout_toml.empty()) {
-    return drivers::layout_from_toml(log.header.layout_toml, log_path + " (header layout)");
+    return drivers::tracker_config_from_toml(log.header.layout_toml, log_path + " (header layout)");
   }
-  if (config_path.empty()) return config::TrackerSettings{};
+  if (config_path.empty()) return drivers::TrackerConfig{};
   auto s = load_settings(config_path);
   if (!s) return s.with_context("");
   return s->trackers;

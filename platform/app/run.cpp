@@ -16,6 +16,7 @@
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
 #include "platform/app/script_breathing.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/runtime.h"
 #include "sim/asset/asset_io.h"
@@ -55,7 +56,7 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
-  if (s.trackers.source == config::TrackerSource::Mock && !shared_script->orientation.turns().empty()) {
+  if (s.trackers.source == drivers::TrackerSource::Mock && !shared_script->orientation.turns().empty()) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
   parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);

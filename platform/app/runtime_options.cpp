@@ -33,8 +33,8 @@ Status override_choice(const char* option, const std::string& text, const EnumNa
 }
 
 /// "igtl:HOST" or "igtl:HOST:PORT" (the config's port stands in when it is left out).
-Status override_igtl(const std::string& tracker, config::TrackerSettings& t) {
-  t.source = config::TrackerSource::Igtl;
+Status override_igtl(const std::string& tracker, drivers::TrackerConfig& t) {
+  t.source = drivers::TrackerSource::Igtl;
   const std::string rest = tracker.substr(5);
   const std::size_t colon = rest.rfind(':');
   const std::string host = rest.substr(0, colon);
@@ -51,16 +51,16 @@ Status override_igtl(const std::string& tracker, config::TrackerSettings& t) {
   return ok();
 }
 
-Status override_tracker(const std::string& tracker, config::TrackerSettings& t) {
+Status override_tracker(const std::string& tracker, drivers::TrackerConfig& t) {
   if (tracker.empty()) return ok();
   if (tracker.rfind("replay:", 0) == 0 && tracker.size() > 7) {
-    t.source = config::TrackerSource::Replay;
+    t.source = drivers::TrackerSource::Replay;
     t.replay_file = tracker.substr(7);
     return ok();
   }
   if (tracker.rfind("igtl:", 0) == 0) return override_igtl(tracker, t);
-  const auto source = config::kTrackerSourceNames.parse(tracker);
-  if (!source || *source == config::TrackerSource::Replay) {
+  const auto source = drivers::kTrackerSourceNames.parse(tracker);
+  if (!source || *source == drivers::TrackerSource::Replay) {
     return fail("--tracker: expected mock, hid, igtl[:HOST[:PORT]] or replay:FILE.trk, got '" + tracker + "'");
   }
   t.source = *source;

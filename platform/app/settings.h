@@ -11,7 +11,7 @@
 
 #include "config/base/enum_names.h"
 #include "config/breathing_settings.h"
-#include "config/settings.h"
+#include "drivers/tracker/tracker_config.h"
 #include "platform/output/output_settings.h"
 #include "platform/runtime/runtime_config.h"
 #include "platform/sync/sync_settings.h"
@@ -58,7 +58,7 @@ struct Settings {
   HmdSettings hmd;
   RenderSettings render;
   config::BreathingSettings breathing;
-  config::TrackerSettings trackers;
+  drivers::TrackerConfig trackers;
   RegistrationSettings registration;
   SimSettings sim;
   sync::SyncSettings sync;

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "config/settings_load.h"
 #include "config/toml_section.h"
+#include "drivers/tracker/tracker_config_toml.h"
 
 namespace lungar::platform {
 
@@ -66,7 +66,8 @@ Result<Settings> parse(const std::string& text, const std::string& name) {
     read_hmd_settings(top.section("hmd"), s.hmd);
     read_render(top.section("render"), s.render);
     config::read_breathing_settings(top.section("breathing"), s.breathing);
-    config::read_tracker_settings(top.section("trackers"), s.trackers);
+    TomlSection trackers = top.section("trackers");
+    drivers::visit(trackers, s.trackers);
     read_registration(top.section("registration"), s.registration);
     read_sim(top.section("sim"), s.sim);
     sync::read_sync_settings(top.section("sync"), s.sync);
@@ -114,8 +115,8 @@ std::string summarize(const Settings& s) {
     << " per eye, IPD " << s.hmd.ipd_mm << " mm)"
     << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
     << to_string(s.render.deform) << ", breathing " << s.breathing.preset << " " << s.breathing.rate_bpm
-    << "/min V_T " << s.breathing.tidal_volume_ml << " mL, tracker " << config::to_string(s.trackers.source)
-    << (s.trackers.source == config::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())
+    << "/min V_T " << s.breathing.tidal_volume_ml << " mL, tracker " << drivers::to_string(s.trackers.source)
+    << (s.trackers.source == drivers::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())
     << ", orientation " << sim::to_string(s.sim.orientation_mode);
   return o.str();
 }

@@ -20,7 +20,7 @@ enum class Mode {
   Ventilator,   ///< square applied pressure; alveolar pressure follows it with a first-order lag
 };
 
-/// What a user sets. Ranges are those of config/settings_load.cpp.
+/// What a user sets. Ranges are those of config/breathing_settings.cpp.
 struct BreathingParams {
   Preset preset = Preset::Normal;
   double rate_bpm = 12.0;          ///< breaths per minute, [2, 60]

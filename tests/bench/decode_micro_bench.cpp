@@ -26,7 +26,7 @@ struct Reports {
 
 const Reports& reports() {
   static const Reports r = [] {
-    lungar::config::TrackerSettings settings;
+    lungar::drivers::TrackerConfig settings;
     const auto made = make_layout(settings);
     if (!made) {
       std::fprintf(stderr, "decode micro bench: %s\n", made.error().c_str());

@@ -43,7 +43,7 @@ Bytes head_report() {
   return r;
 }
 
-ReportLayout layout_of(const config::TrackerSettings& t) {
+ReportLayout layout_of(const TrackerConfig& t) {
   auto r = make_layout(t);
   EXPECT_TRUE(r) << r.error();
   return r ? *r : ReportLayout{};
@@ -72,7 +72,7 @@ void expect_same_pose(const PoseSample& got, const PoseSample& want, double pos_
 }  // namespace
 
 TEST(Decode, DefaultLayoutByHand) {
-  const config::TrackerSettings t;  // 32 bytes: id 1, station, u32 time, 3 x i32 0.01 mm, 4 x Q2.14 w,x,y,z
+  const TrackerConfig t;  // 32 bytes: id 1, station, u32 time, 3 x i32 0.01 mm, 4 x Q2.14 w,x,y,z
   const ReportLayout l = layout_of(t);
   Bytes r(32);
   r.u8(0, 1);
@@ -92,24 +92,24 @@ TEST(Decode, DefaultLayoutByHand) {
 }
 
 TEST(Decode, EveryFieldTypeInBothEndiannesses) {
-  const config::FieldType types[] = {config::FieldType::I16, config::FieldType::I32, config::FieldType::F32,
-                                     config::FieldType::Fixed16, config::FieldType::Fixed32};
+  const FieldType types[] = {FieldType::I16, FieldType::I32, FieldType::F32,
+                                     FieldType::Fixed16, FieldType::Fixed32};
   for (bool big : {false, true}) {
-    for (config::FieldType pt : types) {
-      for (config::FieldType ot : types) {
+    for (FieldType pt : types) {
+      for (FieldType ot : types) {
         SCOPED_TRACE(std::string(to_string(pt)) + " / " + to_string(ot) + (big ? " big" : " little"));
-        config::TrackerSettings t;
-        t.report.endian = big ? config::Endian::Big : config::Endian::Little;
+        TrackerConfig t;
+        t.report.endian = big ? Endian::Big : Endian::Little;
         t.report.position_type = pt;
         // Ranges that hold 1234 mm: i16 in 0.1 mm, Q11.4 in mm, i32 in 0.01 mm, Q23.8 in 0.01 mm, f32 in mm.
-        t.report.position_frac_bits = pt == config::FieldType::Fixed16 ? 4 : pt == config::FieldType::Fixed32 ? 8 : 0;
-        t.report.position_scale = pt == config::FieldType::I16 ? 0.1
-                                  : (pt == config::FieldType::F32 || pt == config::FieldType::Fixed16) ? 1.0
+        t.report.position_frac_bits = pt == FieldType::Fixed16 ? 4 : pt == FieldType::Fixed32 ? 8 : 0;
+        t.report.position_scale = pt == FieldType::I16 ? 0.1
+                                  : (pt == FieldType::F32 || pt == FieldType::Fixed16) ? 1.0
                                                                                                       : 0.01;
         t.report.orientation_type = ot;
-        t.report.orientation_frac_bits = ot == config::FieldType::Fixed16 ? 14 : ot == config::FieldType::Fixed32 ? 30 : 0;
+        t.report.orientation_frac_bits = ot == FieldType::Fixed16 ? 14 : ot == FieldType::Fixed32 ? 30 : 0;
         t.report.orientation_scale =
-            ot == config::FieldType::I16 ? 1.0 / 16384 : ot == config::FieldType::I32 ? 1.0 / (1 << 30) : 1.0;
+            ot == FieldType::I16 ? 1.0 / 16384 : ot == FieldType::I32 ? 1.0 / (1 << 30) : 1.0;
         t.report.length = 48;
         t.report.orientation_offset = 12;
         const ReportLayout l = layout_of(t);
@@ -120,19 +120,19 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
         Bytes r(48);
         r.u8(0, 1);
         r.u8(1, 1);
-        auto put = [&](std::size_t at, config::FieldType type, int frac, double scale, double value) {
+        auto put = [&](std::size_t at, FieldType type, int frac, double scale, double value) {
           const double raw = std::ldexp(value / scale, frac);
           switch (type) {
-            case config::FieldType::I16:
-            case config::FieldType::Fixed16:
+            case FieldType::I16:
+            case FieldType::Fixed16:
               r.u16(at, static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(raw))), big);
               return 2;
-            case config::FieldType::I32:
-            case config::FieldType::Fixed32:
+            case FieldType::I32:
+            case FieldType::Fixed32:
               r.u32(at, static_cast<std::uint32_t>(static_cast<std::int32_t>(std::llround(raw))), big);
               return 4;
-            case config::FieldType::F32: r.f32(at, static_cast<float>(raw), big); return 4;
-            case config::FieldType::None: return 0;
+            case FieldType::F32: r.f32(at, static_cast<float>(raw), big); return 4;
+            case FieldType::None: return 0;
           }
           return 0;
         };
@@ -144,8 +144,8 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
         ASSERT_EQ(d.error, DecodeError::None) << to_string(d.error);
         ASSERT_EQ(d.count, 1);
         // Half a unit of the type's resolution, plus rounding: 0.05 mm (i16), 1/32 mm (Q11.4), 0.005 mm (i32).
-        const double pos_tol = pt == config::FieldType::I16 ? 0.0501 : pt == config::FieldType::Fixed16 ? 0.0313 : 0.005;
-        const double rot_tol = ot == config::FieldType::I16 || ot == config::FieldType::Fixed16 ? kRotTolRad : 1e-6;
+        const double pos_tol = pt == FieldType::I16 ? 0.0501 : pt == FieldType::Fixed16 ? 0.0313 : 0.005;
+        const double rot_tol = ot == FieldType::I16 || ot == FieldType::Fixed16 ? kRotTolRad : 1e-6;
         expect_same_pose(d.poses[0], pose(Role::Head, Eigen::Vector3d(pos.data()), q), pos_tol, rot_tol);
       }
     }
@@ -153,7 +153,7 @@ TEST(Decode, EveryFieldTypeInBothEndiannesses) {
 }
 
 TEST(Decode, QuaternionOrderAndSignsFollowTheComponentList) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.report.orientation_components = "x,y,z,w";
   t.report.position_components = "-y,x,z";  // the device sends -y first, then x, then z
   const ReportLayout l = layout_of(t);
@@ -177,10 +177,10 @@ TEST(Decode, EulerSequencesMatchTheirRotationProducts) {
   const char* sequences[] = {"zyx", "xyz", "yxz", "zxy", "xzy", "yzx"};
   for (const char* seq : sequences) {
     SCOPED_TRACE(seq);
-    config::TrackerSettings t;
-    t.report.orientation = config::OrientationKind::Euler;
+    TrackerConfig t;
+    t.report.orientation = OrientationKind::Euler;
     t.report.orientation_components = "z,y,-x";  // angles about z, y, then minus the angle about x
-    t.report.orientation_type = config::FieldType::F32;
+    t.report.orientation_type = FieldType::F32;
     t.report.orientation_frac_bits = 0;
     t.report.euler_sequence = seq;
     const ReportLayout l = layout_of(t);
@@ -203,8 +203,8 @@ TEST(Decode, EulerSequencesMatchTheirRotationProducts) {
 TEST(Decode, AxisRemapIsAChangeOfBasisEvenForAMirror) {
   for (const char* remap : {"x,-z,y", "-x,y,z", "y,x,z", "z,x,y"}) {
     SCOPED_TRACE(remap);
-    config::TrackerSettings ident;
-    config::TrackerSettings t;
+    TrackerConfig ident;
+    TrackerConfig t;
     t.axis_remap = remap;
     t.world_offset_mm = {10, 20, 30};
     const ReportLayout li = layout_of(ident), lr = layout_of(t);
@@ -214,7 +214,7 @@ TEST(Decode, AxisRemapIsAChangeOfBasisEvenForAMirror) {
     const DecodedReport d = decode_report(buf, lr);
     ASSERT_EQ(d.error, DecodeError::None);
     // Expected: p' = M p + offset; R' = M R M^T.
-    const auto axes = *config::parse_signed_axes(remap, "xyz");
+    const auto axes = *parse_signed_axes(remap, "xyz");
     Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
     for (int i = 0; i < 3; ++i) m(i, axes[i].index) = axes[i].sign;
     const Eigen::Matrix3d want = m * device.orientation().toRotationMatrix() * m.transpose();
@@ -228,7 +228,7 @@ TEST(Decode, AxisRemapIsAChangeOfBasisEvenForAMirror) {
 }
 
 TEST(Decode, FixedOffsetSensorsShareOneUnnumberedReport) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.report.report_id = -1;
   t.report.station_offset = -1;
   t.report.time_offset = 48;
@@ -250,11 +250,11 @@ TEST(Decode, FixedOffsetSensorsShareOneUnnumberedReport) {
 }
 
 TEST(Decode, EncoderRoundTripsThroughEveryConvention) {
-  config::TrackerSettings t;
-  t.report.endian = config::Endian::Big;
-  t.report.orientation = config::OrientationKind::Euler;
+  TrackerConfig t;
+  t.report.endian = Endian::Big;
+  t.report.orientation = OrientationKind::Euler;
   t.report.orientation_components = "y,-x,z";
-  t.report.orientation_type = config::FieldType::Fixed32;
+  t.report.orientation_type = FieldType::Fixed32;
   t.report.orientation_frac_bits = 16;
   t.report.euler_sequence = "yxz";
   t.axis_remap = "-y,x,z";
@@ -271,7 +271,7 @@ TEST(Decode, EncoderRoundTripsThroughEveryConvention) {
 }
 
 TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
-  const config::TrackerSettings t;
+  const TrackerConfig t;
   const ReportLayout l = layout_of(t);
   std::array<std::uint8_t, 32> good{};
   const PoseSample p = pose(Role::Head, {1, 2, 3}, Eigen::Quaterniond::Identity());
@@ -300,8 +300,8 @@ TEST(Decode, MalformedReportsAreRejectedWithTheirReason) {
   bad[17] = 0x7F;  // z = 21 km
   EXPECT_EQ(decode_report(bad, l).error, DecodeError::OutsideWorkspace);
 
-  config::TrackerSettings f = t;
-  f.report.position_type = config::FieldType::F32;
+  TrackerConfig f = t;
+  f.report.position_type = FieldType::F32;
   f.report.position_scale = 1.0;
   const ReportLayout lf = layout_of(f);
   std::array<std::uint8_t, 32> fb{};
@@ -333,7 +333,7 @@ TEST(Decode, DeviceClockUnwrapsAndRejectsBackwardsTime) {
 }
 
 TEST(Decode, LayoutErrorsNameTheKey) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.report.length = 20;
   EXPECT_EQ(make_layout(t).error(), "trackers.head.offset: expected the sensor's fields inside the report");
   t = {};
@@ -356,11 +356,11 @@ TEST(Decode, EachQuaternionComponentSignAndOrderIsUndone) {
   for (const char* list : {"-w,x,y,z", "w,-x,y,z", "w,x,-y,z", "w,x,y,-z", "w,-x,-y,-z", "x,y,z,w", "z,w,y,x",
                            "y,-x,w,z"}) {
     SCOPED_TRACE(list);
-    config::TrackerSettings t;
+    TrackerConfig t;
     t.report.orientation_components = list;
     const ReportLayout l = layout_of(t);
     Bytes r = head_report();
-    const auto axes = *config::parse_signed_axes(list, "wxyz");
+    const auto axes = *parse_signed_axes(list, "wxyz");
     for (int k = 0; k < 4; ++k) {  // what such a device puts on the wire: each component times its sign
       r.u16(18 + 2 * k, static_cast<std::uint16_t>(std::lround(axes[k].sign * wxyz[axes[k].index] * 16384)), false);
     }
@@ -374,12 +374,12 @@ TEST(Decode, EachPositionComponentSignAndOrderIsUndone) {
   const double xyz[3] = {123.0, -456.0, 789.0};
   for (const char* list : {"-x,y,z", "x,-y,z", "x,y,-z", "z,x,y", "y,-z,x"}) {
     SCOPED_TRACE(list);
-    config::TrackerSettings t;
+    TrackerConfig t;
     t.report.position_components = list;
     const ReportLayout l = layout_of(t);
     Bytes r = head_report();
     r.u16(18, 16384, false);  // identity quaternion
-    const auto axes = *config::parse_signed_axes(list, "xyz");
+    const auto axes = *parse_signed_axes(list, "xyz");
     for (int k = 0; k < 3; ++k) {
       r.u32(6 + 4 * k, static_cast<std::uint32_t>(std::lround(axes[k].sign * xyz[axes[k].index] * 100)), false);
     }
@@ -395,8 +395,8 @@ TEST(Decode, DeviceTimeWidthByteOrderAndTickAreTheLayouts) {
   for (bool big : {false, true}) {
     for (int bits : {16, 32}) {
       SCOPED_TRACE(std::to_string(bits) + (big ? " big" : " little"));
-      config::TrackerSettings t;
-      t.report.endian = big ? config::Endian::Big : config::Endian::Little;
+      TrackerConfig t;
+      t.report.endian = big ? Endian::Big : Endian::Little;
       t.report.time_bits = bits;
       t.report.time_tick_us = 250.0;
       const ReportLayout l = layout_of(t);
@@ -416,7 +416,7 @@ TEST(Decode, DeviceTimeWidthByteOrderAndTickAreTheLayouts) {
 TEST(Decode, EqualRotationsComeOutWithOneSign) {
   // q and -q are the same rotation; a device may send either. Both decode to the same numbers (w >= 0), so
   // that equal poses compare equal (replay against live, the HIL test).
-  const config::TrackerSettings t;
+  const TrackerConfig t;
   const ReportLayout l = layout_of(t);
   const Eigen::Quaterniond q = about(0, 2.5);  // w = cos(1.25) > 0
   Bytes plus(32), minus(32);
@@ -437,7 +437,7 @@ TEST(Decode, EqualRotationsComeOutWithOneSign) {
 }
 
 TEST(Decode, WorkspaceBoundsBothWays) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.workspace_min_mm = {-100, -100, 500};
   t.workspace_max_mm = {100, 100, 1500};
   const ReportLayout l = layout_of(t);
@@ -455,12 +455,12 @@ TEST(Decode, WorkspaceBoundsBothWays) {
 // An orientation-only sensor (an HMD's IMU): no position bytes at all; each role takes its fixed position, in
 // the tracker's axes, through the same axis remap and world offset as a measured one.
 TEST(Decode, PositionNoneTakesEachRolesFixedPositionThroughTheRemap) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.report.report_id = -1;
   t.report.length = 16;
   t.report.station_offset = -1;
   t.report.time_offset = -1;
-  t.report.position_type = config::FieldType::None;
+  t.report.position_type = FieldType::None;
   t.report.position_offset = 0;
   t.report.orientation_offset = 0;
   t.head = {true, 0, 0, {10.0, 20.0, 1300.0}};
@@ -497,10 +497,10 @@ TEST(Decode, PositionNoneTakesEachRolesFixedPositionThroughTheRemap) {
 
 TEST(Decode, EncodedEulerAnglesAreTaitBryanAsDevicesSendThem) {
   // Devices send yaw and roll in [-180, 180] and the middle angle in [-90, 90]; the encoder (mock, synth) too.
-  config::TrackerSettings t;
-  t.report.orientation = config::OrientationKind::Euler;
+  TrackerConfig t;
+  t.report.orientation = OrientationKind::Euler;
   t.report.orientation_components = "z,y,x";
-  t.report.orientation_type = config::FieldType::F32;
+  t.report.orientation_type = FieldType::F32;
   t.report.orientation_frac_bits = 0;
   const ReportLayout l = layout_of(t);
   for (double a = -3.0; a <= 3.0; a += 0.5) {
@@ -517,7 +517,7 @@ TEST(Decode, EncodedEulerAnglesAreTaitBryanAsDevicesSendThem) {
 }
 
 TEST(Decode, FieldOffsetsInsideTheSensorBlockAreTheLayouts) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.report.length = 48;
   t.report.position_offset = 14;  // position after the orientation, inside the sensor's block
   t.report.orientation_offset = 2;

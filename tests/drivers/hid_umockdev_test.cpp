@@ -15,7 +15,7 @@
 
 #include "drivers/decode/encoder.h"
 #include "drivers/hid/hid_interface.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "test_data.h"
 #include "tracker_test_support.h"
@@ -27,9 +27,9 @@ using namespace lungar::testing;
 
 namespace {
 
-config::TrackerSettings hid_settings() {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Hid;
+TrackerConfig hid_settings() {
+  TrackerConfig t;
+  t.source = TrackerSource::Hid;
   t.hid.vendor_id = 0x1234;
   t.hid.product_id = 0x5678;
   t.reopen_backoff_ms = 20;  // tests wait for reconnects; keep the back-off short
@@ -49,7 +49,7 @@ class HidUmockdev : public ::testing::Test {
 }  // namespace
 
 TEST_F(HidUmockdev, ProberFindsTheEmulatedDeviceByIdsAndSerial) {
-  config::HidSettings h;
+  HidConfig h;
   h.vendor_id = 0x1234;
   h.product_id = 0x5678;
   h.serial = "SN0001";
@@ -225,7 +225,7 @@ TEST_F(HidUmockdev, DeliveredRateAndJitterAt16ms) {
 // A tracker that streams nothing until told to: the configured feature reports reach the device, in order, on
 // the first open and again on every re-open (a replugged device has forgotten them).
 TEST_F(HidUmockdev, InitFeatureReportsAreSentInOrderOnEveryOpen) {
-  config::TrackerSettings s = hid_settings();
+  TrackerConfig s = hid_settings();
   s.hid.init_feature_reports = {{0x02, 0x01}, {0x05, 0x00, 0x10, 0xFF}};
   Collector c;
   auto made = make_tracker(s, collecting(c));
@@ -251,7 +251,7 @@ TEST(HidUmockdevRefusing, ARefusedInitReportIsOneErrorNamingItsIndexAndNoOpen) {
   lungar::testing::UmockdevTrackerSpec spec;
   spec.refuse_feature_reports = true;
   ASSERT_TRUE(device.plug(spec)) << device.error();
-  config::TrackerSettings s = hid_settings();
+  TrackerConfig s = hid_settings();
   s.hid.init_feature_reports = {{0x02, 0x01}};
   std::mutex m;
   std::vector<std::string> lines;

@@ -41,7 +41,7 @@ void expect_pose(const PoseSample& got, Role role, const Sent& want, double scal
   EXPECT_NEAR(got.orientation().norm(), 1.0, 1e-12);
 }
 
-IgtlLayout layout(const config::TrackerSettings& t = {}) {
+IgtlLayout layout(const TrackerConfig& t = {}) {
   auto l = make_igtl_layout(t);
   EXPECT_TRUE(l) << l.error();
   return l ? *l : IgtlLayout{};
@@ -95,7 +95,7 @@ TEST(IgtlDecode, TdataAndQtdataCarrySeveralToolsEachToItsRole) {
 }
 
 TEST(IgtlDecode, ConfiguredNamesScaleAndAxisRemapApply) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.igtl.patient = "Reference";
   t.igtl.scale = 1000.0;  // a sender in metres
   t.axis_remap = "x,-z,y";
@@ -158,7 +158,7 @@ TEST(IgtlDecode, RigidityToleranceIsTheConfiguredOne) {
   nearly.topLeftCorner<3, 3>() *= 1.0004;  // |R^T R - I| ~ 8e-4
   EXPECT_EQ(decode_igtl_message(igtl_transform_message("PatientToTracker", nearly, {}), layout()).error,
             DecodeError::None);
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.igtl.rigid_tolerance = 5e-4;
   EXPECT_EQ(decode_igtl_message(igtl_transform_message("PatientToTracker", nearly, {}), layout(t)).error,
             DecodeError::NotRigid);
@@ -176,7 +176,7 @@ TEST(IgtlDecode, HeaderInfoSaysWhichBodiesAreWorthReading) {
 }
 
 TEST(IgtlDecode, LayoutErrorsNameTheKey) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.igtl.head = "ThisNameIsLongerThan20";
   EXPECT_EQ(make_igtl_layout(t).error(),
             "trackers.igtl.head: expected at most 20 characters, got \"ThisNameIsLongerThan20\"");

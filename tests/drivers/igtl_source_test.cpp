@@ -19,7 +19,7 @@
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_messages.h"
 #include "drivers/igtl/tcp_socket.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "tracker_test_support.h"
 
@@ -48,9 +48,9 @@ struct TestServer {
   }
 };
 
-config::TrackerSettings igtl_settings(int port) {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Igtl;
+TrackerConfig igtl_settings(int port) {
+  TrackerConfig t;
+  t.source = TrackerSource::Igtl;
   t.igtl.host = "127.0.0.1";
   t.igtl.port = port;
   t.reopen_backoff_ms = 20;  // tests wait for reconnects; keep the back-off short

@@ -1,5 +1,6 @@
-// Tests of drivers/mock: the upright -> supine turn as DESIGN.md defines it, and the mock's reports decoding
-// back to the trajectory through the configured layout (the code path shared with synth and replay).
+// Tests of drivers/mock: the upright -> supine turn in the frames of docs/design.md (The mathematics), and the
+// mock's reports decoding back to the trajectory through the configured layout (the code path shared with synth
+// and replay).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,7 +41,7 @@ TEST(MockTrajectory, HeadLooksAtThePatient) {
 }
 
 TEST(MockReports, DecodeBackToTheTrajectory) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.stylus.enabled = true;
   const ReportLayout l = *make_layout(t);
   MockReports reports(t, l);
@@ -61,7 +62,7 @@ TEST(MockReports, DecodeBackToTheTrajectory) {
 }
 
 TEST(MockReports, DropoutDropsAboutTheConfiguredShare) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.mock_dropout = 0.25;
   const ReportLayout l = *make_layout(t);
   MockReports reports(t, l);

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "config/settings_load.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/decode/decoder.h"
 
 using namespace lungar;
@@ -21,17 +21,17 @@ using namespace lungar::drivers;
 namespace {
 
 struct Profile {
-  config::TrackerSettings settings;
+  TrackerConfig settings;
   ReportLayout layout;
 };
 
 /// The shipped profile `name`, checked to be a HID tracker with the USB ids its driver gives.
 Profile profile(const std::string& name, std::uint16_t vendor_id, std::uint16_t product_id) {
-  auto r = config::load_tracker_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/" + name);
+  auto r = drivers::tracker_config_from_file(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/" + name);
   EXPECT_TRUE(r) << r.error();
   Profile p;
   if (r) p.settings = *r;
-  EXPECT_EQ(p.settings.source, config::TrackerSource::Hid);
+  EXPECT_EQ(p.settings.source, TrackerSource::Hid);
   EXPECT_EQ(p.settings.hid.vendor_id, vendor_id);
   EXPECT_EQ(p.settings.hid.product_id, product_id);
   auto l = make_layout(p.settings);
@@ -136,7 +136,7 @@ TEST(TrackerProfiles, EveryShippedProfileLoadsAndCitesItsDriver) {
   int n = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     SCOPED_TRACE(entry.path().string());
-    auto r = config::load_tracker_settings(entry.path().string());
+    auto r = drivers::tracker_config_from_file(entry.path().string());
     ASSERT_TRUE(r) << r.error();
     std::ifstream in(entry.path());
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -2,6 +2,7 @@
 // poses, mock streaming with recording to .trk, staleness, and errors for bad settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -10,10 +11,10 @@
 #include <thread>
 #include <vector>
 
-#include "config/settings_load.h"
-#include "drivers/decode/layout_toml.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/mock/mock_reports.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 #include "test_data.h"
@@ -58,8 +59,8 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
   ASSERT_EQ(expected.size(), 750u);
   Collector collected;
   TrackerOptions o = collecting(collected);
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Replay;
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
   t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
   t.replay_realtime = false;
   auto made = make_tracker(t, o);
@@ -84,8 +85,8 @@ TEST(Tracker, ReplayOfTheCommittedRecordingMatchesItsExpectedPoses) {
 }
 
 TEST(Tracker, NoisyRecordingWithDropoutsReplaysWithoutMalformedReports) {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Replay;
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
   t.replay_file = lungar::testing::tracker_data("head_orbit_noisy.trk");
   t.replay_realtime = false;
   auto made = make_tracker(t, quiet());
@@ -102,7 +103,7 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   const auto dir = std::filesystem::temp_directory_path() / ("lungar_tracker_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string rec = (dir / "mock.trk").string();
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.mock_rate_hz = 200;  // many reports quickly
   t.stale_ms = 50;
   TrackerOptions o = quiet();
@@ -142,8 +143,8 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
 }
 
 TEST(Tracker, BadSettingsAreOneLineErrors) {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Replay;
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
   t.replay_file = "/nonexistent/x.trk";
   EXPECT_EQ(make_tracker(t, quiet()).error(),
             "/nonexistent/x.trk: cannot open the tracker log: expected a readable .trk file");
@@ -162,8 +163,8 @@ TEST(Tracker, BadSettingsAreOneLineErrors) {
 }
 
 TEST(Tracker, AnAbsentHidDeviceIsDisconnectedNotAnError) {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Hid;
+  TrackerConfig t;
+  t.source = TrackerSource::Hid;
   t.hid.vendor_id = 0xDEAD;  // no such device on this machine
   t.hid.product_id = 0xBEEF;
   t.reopen_backoff_ms = 5;
@@ -179,8 +180,8 @@ TEST(Tracker, AnAbsentHidDeviceIsDisconnectedNotAnError) {
 }
 
 TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
-  config::TrackerSettings t;
-  t.source = config::TrackerSource::Replay;
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
   t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
   t.replay_realtime = false;
   t.replay_loop = true;
@@ -203,10 +204,39 @@ TEST(Tracker, ALoopingReplayContinuesDeviceTimeAcrossTheLoop) {
   for (std::size_t k = 1; k < times.size(); ++k) ASSERT_GE(times[k], times[k - 1]) << k;
 }
 
+// A replayed log says so when its header names another report layout than the config's: the committed log's
+// header (written by an older writer, a subset of the keys) names the default layout, and the source it was made
+// with is no difference.
+TEST(Tracker, AReplayedLogMadeWithAnotherLayoutSaysSo) {
+  for (const bool another : {false, true}) {
+    SCOPED_TRACE(another);
+    TrackerConfig t;
+    t.source = TrackerSource::Replay;
+    t.replay_file = lungar::testing::tracker_data("upright_to_supine.trk");
+    t.replay_realtime = false;
+    if (another) t.report.position_scale = 0.1;
+    std::mutex m;
+    std::vector<std::string> lines;
+    TrackerOptions o = quiet();
+    o.log = [&](const std::string& line) {
+      std::lock_guard lock(m);
+      lines.push_back(line);
+    };
+    auto made = make_tracker(t, o);
+    ASSERT_TRUE(made) << made.error();
+    (*made)->stop();
+    std::lock_guard lock(m);
+    const auto said = std::count_if(lines.begin(), lines.end(), [](const std::string& l) {
+      return l.find("the log was recorded with another report layout than the config's") != std::string::npos;
+    });
+    EXPECT_EQ(said, another ? 1 : 0) << ::testing::PrintToString(lines);
+  }
+}
+
 // Device time is counted in the layout's tick (time_tick_us), not a fixed microsecond: the mock stamps its
 // reports k / rate seconds apart in ticks of 10 us, and the samples come out k / rate seconds apart.
 TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
-  config::TrackerSettings t;
+  TrackerConfig t;
   t.mock_rate_hz = 250;
   t.report.time_tick_us = 10.0;
   std::mutex m;
@@ -229,16 +259,16 @@ TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
 // Replay honours an orientation-only layout: every sample of a synthesized IMU log sits at the head's fixed
 // position and turns as the trajectory did.
 TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
-  auto loaded = config::load_tracker_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
+  auto loaded = drivers::tracker_config_from_file(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
   ASSERT_TRUE(loaded) << loaded.error();
-  config::TrackerSettings t = *loaded;
+  TrackerConfig t = *loaded;
   t.mock_trajectory = "head_orbit";
   const auto layout = make_layout(t);
   ASSERT_TRUE(layout) << layout.error();
   const auto path = std::filesystem::temp_directory_path() / ("lungar_imu_" + std::to_string(::getpid()) + ".trk");
   TrkWriter w;
   TrkHeader h;
-  h.layout_toml = layout_to_toml(t);
+  h.layout_toml = tracker_config_to_toml(t);
   ASSERT_EQ(w.open(path.string(), h, TrkWriter::Mode::Atomic).error(), "");
   MockReports reports(t, *layout);
   for (std::int64_t k = 0; k < 50; ++k) {
@@ -247,8 +277,8 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
     });
   }
   ASSERT_EQ(w.commit().error(), "");
-  config::TrackerSettings rs = t;
-  rs.source = config::TrackerSource::Replay;
+  TrackerConfig rs = t;
+  rs.source = TrackerSource::Replay;
   rs.replay_file = path.string();
   rs.replay_realtime = false;
   Collector collected;

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 
 namespace lungar::testing {
 
@@ -64,8 +64,8 @@ inline drivers::TrackerOptions collecting(Collector& c) {
 
 /// Every sample of `file` replayed as fast as possible through make_tracker(), as a live run would publish them.
 inline std::vector<drivers::PoseSample> replay_all(const std::string& file) {
-  config::TrackerSettings rs;
-  rs.source = config::TrackerSource::Replay;
+  drivers::TrackerConfig rs;
+  rs.source = drivers::TrackerSource::Replay;
   rs.replay_file = file;
   rs.replay_realtime = false;
   Collector replayed;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "config/base/crc32.h"
-#include "drivers/decode/layout_toml.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 
@@ -32,7 +32,7 @@ std::vector<std::uint8_t> read_file(const fs::path& p) {
 TrkHeader header() {
   TrkHeader h;
   h.description = "source=hid\nvendor_id=0x1234\nserial=SN0001\n";
-  h.layout_toml = layout_to_toml(config::TrackerSettings{});
+  h.layout_toml = tracker_config_to_toml(TrackerConfig{});
   return h;
 }
 
@@ -149,14 +149,14 @@ TEST(Trk, WriterErrorsNameTheFile) {
 }
 
 TEST(LayoutToml, RoundTripsTheLayout) {
-  config::TrackerSettings t;
-  t.report.endian = config::Endian::Big;
-  t.report.orientation = config::OrientationKind::Euler;
+  TrackerConfig t;
+  t.report.endian = Endian::Big;
+  t.report.orientation = OrientationKind::Euler;
   t.report.orientation_components = "z,-y,x";
   t.report.position_scale = 0.1234567890123;
   t.axis_remap = "x,-z,y";
   t.stylus.enabled = true;
-  auto back = layout_from_toml(layout_to_toml(t), "t");
+  auto back = tracker_config_from_toml(tracker_config_to_toml(t), "t");
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->report.endian, t.report.endian);
   EXPECT_EQ(back->report.orientation, t.report.orientation);
@@ -164,6 +164,6 @@ TEST(LayoutToml, RoundTripsTheLayout) {
   EXPECT_DOUBLE_EQ(back->report.position_scale, t.report.position_scale);
   EXPECT_EQ(back->axis_remap, t.axis_remap);
   EXPECT_TRUE(back->stylus.enabled);
-  EXPECT_EQ(layout_from_toml("[trackers.report]\nlength = \"x\"\n", "h").error(),
+  EXPECT_EQ(tracker_config_from_toml("[trackers.report]\nlength = \"x\"\n", "h").error(),
             "h:2: key 'trackers.report.length': expected an integer in [1, 1024] bytes, got the string \"x\"");
 }

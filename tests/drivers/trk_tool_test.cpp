@@ -6,9 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "config/settings.h"
-#include "drivers/decode/layout_toml.h"
 #include "drivers/igtl/igtl_messages.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
 
@@ -105,7 +104,7 @@ TEST(TrkTool, DumpDecodesOpenIgtlinkRecordsAsMessages) {
   d::TrkWriter w;
   d::TrkHeader h;
   h.description = "source=igtl\n";
-  h.layout_toml = d::layout_to_toml(lungar::config::TrackerSettings{});
+  h.layout_toml = d::tracker_config_to_toml(d::TrackerConfig{});
   ASSERT_EQ(w.open(a, h, d::TrkWriter::Mode::Atomic).error(), "");
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.topRightCorner<3, 1>() = Eigen::Vector3d(10, -20, 1000);

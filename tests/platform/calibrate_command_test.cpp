@@ -8,15 +8,15 @@
 #include <random>
 
 #include "drivers/decode/encoder.h"
-#include "drivers/decode/layout_toml.h"
 #include "drivers/decode/report_layout.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_writer.h"
 #include "platform/app/calibrate_command.h"
 
 using namespace lungar;
 
 TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
-  config::TrackerSettings t;
+  drivers::TrackerConfig t;
   t.stylus.enabled = true;
   auto layout = drivers::make_layout(t);
   ASSERT_TRUE(layout) << layout.error();
@@ -35,7 +35,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   drivers::TrkWriter writer;
   drivers::TrkHeader header;
   header.description = "source=test";
-  header.layout_toml = drivers::layout_to_toml(t);
+  header.layout_toml = drivers::tracker_config_to_toml(t);
   ASSERT_EQ(writer.open(log_path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
 
   std::mt19937 rng(5);

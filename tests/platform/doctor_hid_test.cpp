@@ -27,7 +27,7 @@ namespace {
 constexpr uid_t kNobody = 65534;
 
 /// check_tracker() in a child that is not root; its verdict and line come back through a pipe.
-Check check_unprivileged(const lungar::config::TrackerSettings& t, const DoctorEnv& env) {
+Check check_unprivileged(const lungar::drivers::TrackerConfig& t, const DoctorEnv& env) {
   int fds[2];
   if (::pipe(fds) != 0) return failed("test", "pipe", "");
   const pid_t pid = ::fork();
@@ -61,7 +61,7 @@ class DoctorHid : public ::testing::Test {
     if (!UmockdevTracker::available()) GTEST_SKIP() << "not under umockdev-wrapper";
     fs::permissions(rules.path(), fs::perms(0755));
     env.udev_rule_dirs = {rules.path().string()};
-    tracker.source = lungar::config::TrackerSource::Hid;
+    tracker.source = lungar::drivers::TrackerSource::Hid;
     tracker.hid.vendor_id = 0x1234;
     tracker.hid.product_id = 0x5678;
   }
@@ -86,7 +86,7 @@ class DoctorHid : public ::testing::Test {
 
   lungar::testing::ScratchDir rules{"lungar_doctor_rules"};
   DoctorEnv env;
-  lungar::config::TrackerSettings tracker;
+  lungar::drivers::TrackerConfig tracker;
   UmockdevTracker device;
 };
 

@@ -214,8 +214,8 @@ TEST_F(Doctor, DiskFailsBelowTheMinimumNamingTheStateFolder) {
 TEST_F(Doctor, IgtlTrackerCheckConnectsToTheServer) {
   auto listener = lungar::drivers::TcpListener::listen("127.0.0.1", 0);  // a server on a port the OS picks
   ASSERT_TRUE(listener) << listener.error();
-  lungar::config::TrackerSettings t;
-  t.source = lungar::config::TrackerSource::Igtl;
+  lungar::drivers::TrackerConfig t;
+  t.source = lungar::drivers::TrackerSource::Igtl;
   t.igtl.port = listener->port();
   EXPECT_EQ(check_tracker(t, env).verdict, Verdict::Pass);
   listener->close();  // PlusServer is not running
@@ -226,8 +226,8 @@ TEST_F(Doctor, IgtlTrackerCheckConnectsToTheServer) {
 }
 
 TEST_F(Doctor, ReplayTrackerCheckParsesTheLog) {
-  lungar::config::TrackerSettings t;
-  t.source = lungar::config::TrackerSource::Replay;
+  lungar::drivers::TrackerConfig t;
+  t.source = lungar::drivers::TrackerSource::Replay;
   t.replay_file = kData + "upright_to_supine.trk";
   EXPECT_EQ(check_tracker(t, env).verdict, Verdict::Pass);
   t.replay_file = (root / "missing.trk").string();

@@ -17,8 +17,8 @@
 #include <thread>
 #include <vector>
 
-#include "drivers/decode/layout_toml.h"
-#include "drivers/tracker/tracker.h"
+#include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/gl_math.h"
@@ -89,7 +89,7 @@ class HardwareInTheLoop : public ::testing::Test {
     auto log = drivers::load_trk(kLog);
     ASSERT_TRUE(log) << log.error();
     records = log->records.size();
-    auto t = drivers::layout_from_toml(log->header.layout_toml, kLog);
+    auto t = drivers::tracker_config_from_toml(log->header.layout_toml, kLog);
     ASSERT_TRUE(t) << t.error();
     trackers = *t;
     auto ctx = platform::EglContext::headless();
@@ -142,7 +142,7 @@ class HardwareInTheLoop : public ::testing::Test {
 
   sim::BakedAsset asset;
   std::size_t records = 0;
-  config::TrackerSettings trackers;
+  drivers::TrackerConfig trackers;
   std::unique_ptr<platform::EglContext> context;
   std::optional<render::LungDrawable> drawable;
   std::optional<render::Renderer> renderer;
@@ -203,8 +203,8 @@ TEST_F(HardwareInTheLoop, ReplayAndEmulatedHidGiveTheSameFramesAsTheCommittedOut
   if (!lungar::testing::UmockdevTracker::available()) GTEST_SKIP() << "not under umockdev-wrapper";
 
   // (a) replay, as fast as possible
-  config::TrackerSettings rs = trackers;
-  rs.source = config::TrackerSource::Replay;
+  drivers::TrackerConfig rs = trackers;
+  rs.source = drivers::TrackerSource::Replay;
   rs.replay_file = kLog;
   rs.replay_realtime = false;
   Collector via_replay;
@@ -219,8 +219,8 @@ TEST_F(HardwareInTheLoop, ReplayAndEmulatedHidGiveTheSameFramesAsTheCommittedOut
   spec.report_id = trackers.report.report_id;
   spec.length = trackers.report.length;
   ASSERT_TRUE(device.plug(spec)) << device.error();
-  config::TrackerSettings hs = trackers;
-  hs.source = config::TrackerSource::Hid;
+  drivers::TrackerConfig hs = trackers;
+  hs.source = drivers::TrackerSource::Hid;
   hs.hid.vendor_id = spec.vendor_id;
   hs.hid.product_id = spec.product_id;
   Collector via_hid;

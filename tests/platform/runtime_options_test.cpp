@@ -8,7 +8,6 @@
 
 using lungar::platform::apply_overrides;
 using lungar::platform::RuntimeOptions;
-namespace cfg = lungar::config;
 
 namespace {
 
@@ -35,7 +34,7 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
             "");
   lungar::platform::Settings s;
   ASSERT_TRUE(apply_overrides(o, s).ok());
-  EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Replay);
+  EXPECT_EQ(s.trackers.source, lungar::drivers::TrackerSource::Replay);
   EXPECT_EQ(s.trackers.replay_file, "logs/turn.trk");
   EXPECT_EQ(s.hmd.view, lungar::platform::View::Mono);
   EXPECT_EQ(s.render.mode, lungar::render::DrawMode::Mesh);
@@ -67,7 +66,7 @@ TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
   RuntimeOptions o;
   o.tracker = "igtl:192.168.1.20:18945";
   ASSERT_TRUE(apply_overrides(o, s));
-  EXPECT_EQ(s.trackers.source, cfg::TrackerSource::Igtl);
+  EXPECT_EQ(s.trackers.source, lungar::drivers::TrackerSource::Igtl);
   EXPECT_EQ(s.trackers.igtl.host, "192.168.1.20");
   EXPECT_EQ(s.trackers.igtl.port, 18945);
   lungar::platform::Settings d;
@@ -78,7 +77,7 @@ TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
   lungar::platform::Settings e;
   o.tracker = "igtl";  // host and port from the config
   ASSERT_TRUE(apply_overrides(o, e));
-  EXPECT_EQ(e.trackers.source, cfg::TrackerSource::Igtl);
+  EXPECT_EQ(e.trackers.source, lungar::drivers::TrackerSource::Igtl);
   EXPECT_EQ(e.trackers.igtl.host, "127.0.0.1");
 }
 

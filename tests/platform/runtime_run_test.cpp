@@ -84,7 +84,7 @@ TEST_F(RuntimeRun, TheMockPatientTurnsSupineWhileTheLungsBreatheTheirTidalVolume
 }
 
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
-  settings.trackers.source = config::TrackerSource::Replay;
+  settings.trackers.source = drivers::TrackerSource::Replay;
   settings.trackers.replay_file = kData + "upright_to_supine.trk";
   settings.trackers.replay_realtime = false;
   options.frames = 100000;  // the end of the log stops it
@@ -124,7 +124,7 @@ TEST_F(RuntimeRun, BadInputsFailCleanlyWithoutOutputs) {
   EXPECT_EQ(platform::run_runtime(settings, options), 1);
 
   settings.sim.asset = kData + "hil_lungs.lungbake";
-  settings.trackers.source = config::TrackerSource::Replay;
+  settings.trackers.source = drivers::TrackerSource::Replay;
   settings.trackers.replay_file = (dir / "missing.trk").string();
   EXPECT_EQ(platform::run_runtime(settings, options), 1);
   EXPECT_FALSE(std::filesystem::exists(options.snapshot_path));

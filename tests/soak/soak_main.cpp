@@ -20,7 +20,7 @@
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
-#include "drivers/decode/layout_toml.h"
+#include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/app/run.h"
 #include "umockdev_tracker.h"
@@ -55,7 +55,7 @@ struct Options {
 /// moved on by a whole log each loop (the time field as the layout places it), and pulls the cable now and then.
 class Feeder {
  public:
-  Feeder(const Options& o, drivers::TrkLog log, const config::TrackerSettings& t) : o_(o), log_(std::move(log)), t_(t) {
+  Feeder(const Options& o, drivers::TrkLog log, const drivers::TrackerConfig& t) : o_(o), log_(std::move(log)), t_(t) {
     spec_.report_id = t.report.report_id;
     spec_.length = t.report.length;
   }
@@ -68,7 +68,7 @@ class Feeder {
   void patch_time(std::vector<std::uint8_t>& report, std::uint64_t add_ticks) const;
   const Options& o_;
   drivers::TrkLog log_;
-  config::TrackerSettings t_;
+  drivers::TrackerConfig t_;
   testing::UmockdevTracker device_;
   testing::UmockdevTrackerSpec spec_;
   int unplugs_ = 0;
@@ -77,7 +77,7 @@ class Feeder {
 void Feeder::patch_time(std::vector<std::uint8_t>& r, std::uint64_t add_ticks) const {
   const int at = t_.report.time_offset, bytes = t_.report.time_bits / 8;
   if (at < 0 || at + bytes > static_cast<int>(r.size())) return;
-  const bool little = t_.report.endian == config::Endian::Little;
+  const bool little = t_.report.endian == drivers::Endian::Little;
   std::uint64_t v = 0;
   for (int k = 0; k < bytes; ++k) v |= std::uint64_t{r[static_cast<std::size_t>(at + (little ? k : bytes - 1 - k))]} << (8 * k);
   v += add_ticks;  // wraps in the field's width, as a device clock does
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "lungar-soak: %s\n", log ? (o.log + ": no records").c_str() : log.error().c_str());
     return 2;
   }
-  auto layout = drivers::layout_from_toml(log->header.layout_toml, o.log);
+  auto layout = drivers::tracker_config_from_toml(log->header.layout_toml, o.log);
   if (!layout) {
     std::fprintf(stderr, "lungar-soak: %s\n", layout.error().c_str());
     return 2;
@@ -144,7 +144,8 @@ int main(int argc, char** argv) {
   s.display.output = platform::Output::Headless;
   s.sim.asset = o.asset;
   s.trackers = *layout;
-  s.trackers.source = config::TrackerSource::Hid;
+  s.trackers.source = drivers::TrackerSource::Hid;
+  s.trackers.hid = {};  // the emulated device below, not whichever the log's header names
   s.trackers.hid.vendor_id = 0x1234;
   s.trackers.hid.product_id = 0x5678;
   platform::RuntimeOptions ro;

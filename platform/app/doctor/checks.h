@@ -22,7 +22,7 @@ Check check_output(const Settings& s, const DoctorEnv& env);
 Check check_openxr_runtime(const DoctorEnv& env);
 /// The configured tracker: for HID, the device node present and readable by this user; a missing udev rule gives
 /// the command that installs one.
-Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env);
+Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env);
 /// The configured asset loads (or the demo asset's cache is usable or can be made).
 Check check_asset(const Settings& s, const DoctorEnv& env);
 /// Free space where snapshots, stats and recordings go ($XDG_STATE_HOME/lungar).

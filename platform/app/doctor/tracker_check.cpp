@@ -73,7 +73,7 @@ std::string udev_rule_command(const std::string& vid, const std::string& pid) {
          ".rules && sudo udevadm control --reload-rules && sudo udevadm trigger";
 }
 
-Check hid_node_check(const config::HidSettings& hid, const DoctorEnv& env) {
+Check hid_node_check(const drivers::HidConfig& hid, const DoctorEnv& env) {
   hid_init();
   const std::string wanted = !hid.path.empty() ? hid.path
                                                : (hid.vendor_id == 0 && hid.product_id == 0
@@ -108,7 +108,7 @@ Check hid_node_check(const config::HidSettings& hid, const DoctorEnv& env) {
 }
 
 /// The OpenIGTLink server answers on host:port (what lungar connects to; the messages come once it streams).
-Check igtl_server_check(const config::IgtlSettings& g) {
+Check igtl_server_check(const drivers::IgtlConfig& g) {
   const std::string where = g.host + ":" + std::to_string(g.port);
   if (auto s = drivers::TcpSocket::connect(g.host, g.port, static_cast<int>(g.connect_timeout_ms)); !s) {
     return failed("tracker", "OpenIGTLink: " + s.error() + " (trackers.igtl)",
@@ -122,11 +122,11 @@ Check igtl_server_check(const config::IgtlSettings& g) {
 
 }  // namespace
 
-Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env) {
+Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env) {
   switch (t.source) {
-    case config::TrackerSource::Mock:
+    case drivers::TrackerSource::Mock:
       return passed("tracker", "mock (" + t.mock_trajectory + "): no device needed");
-    case config::TrackerSource::Replay: {
+    case drivers::TrackerSource::Replay: {
       const auto log = drivers::load_trk(t.replay_file);
       if (!log) {
         return failed("tracker", "trackers.replay_file: " + log.error(),
@@ -134,9 +134,9 @@ Check check_tracker(const config::TrackerSettings& t, const DoctorEnv& env) {
       }
       return passed("tracker", "replay of " + t.replay_file + " (" + std::to_string(log->records.size()) + " reports)");
     }
-    case config::TrackerSource::Hid:
+    case drivers::TrackerSource::Hid:
       return hid_node_check(t.hid, env);
-    case config::TrackerSource::Igtl:
+    case drivers::TrackerSource::Igtl:
       return igtl_server_check(t.igtl);
   }
   return failed("tracker", "trackers.source: unknown", "set trackers.source to mock, hid, igtl or replay");

@@ -6,19 +6,19 @@
 #include <string>
 #include <vector>
 
-#include "config/settings_load.h"
+#include "drivers/tracker/tracker_config_toml.h"
 
-using lungar::config::Endian;
-using lungar::config::FieldType;
-using lungar::config::load_tracker_settings;
-using lungar::config::load_tracker_settings_from_string;
-using lungar::config::OrientationKind;
-using lungar::config::parse_signed_axes;
+using lungar::drivers::tracker_config_from_file;
+using lungar::drivers::tracker_config_from_toml;
+using lungar::drivers::Endian;
+using lungar::drivers::FieldType;
+using lungar::drivers::OrientationKind;
+using lungar::drivers::parse_signed_axes;
 
 namespace {
 
 std::string error_of(const std::string& toml) {
-  auto r = load_tracker_settings_from_string(toml, "bad.toml");
+  auto r = tracker_config_from_toml(toml, "bad.toml");
   EXPECT_FALSE(r) << "expected an error for:\n" << toml;
   return r.error();
 }
@@ -26,10 +26,10 @@ std::string error_of(const std::string& toml) {
 }  // namespace
 
 TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
-  auto r = load_tracker_settings(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
+  auto r = tracker_config_from_file(std::string(LUNGAR_SOURCE_DIR) + "/config/default.toml");
   ASSERT_TRUE(r) << r.error();
   const auto& t = *r;
-  const lungar::config::TrackerSettings d;
+  const lungar::drivers::TrackerConfig d;
   EXPECT_EQ(t.report.report_id, d.report.report_id);
   EXPECT_EQ(t.report.length, d.report.length);
   EXPECT_EQ(t.report.station_offset, d.report.station_offset);
@@ -48,7 +48,7 @@ TEST(Trackers, ShippedProfileMatchesBuiltInLayout) {
 }
 
 TEST(Trackers, AFixedOffsetBigEndianEulerLayoutLoads) {
-  auto r = load_tracker_settings_from_string(R"(
+  auto r = tracker_config_from_toml(R"(
 [trackers]
 axis_remap = "x,-z,y"
 [trackers.report]
@@ -152,7 +152,7 @@ TEST(Trackers, WorkspaceAndToleranceAreChecked) {
 }
 
 TEST(Trackers, AnOrientationOnlyReportTakesEachRolesFixedPosition) {
-  auto r = load_tracker_settings_from_string(R"(
+  auto r = tracker_config_from_toml(R"(
 [trackers.report]
 length = 16
 station_offset = -1
@@ -176,7 +176,7 @@ enabled = false
 }
 
 TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
-  auto r = load_tracker_settings_from_string("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
+  auto r = tracker_config_from_toml("[trackers.hid]\ninit_feature_reports = [\"0x02 0x01\", \"05,FF, 0x0a\"]\n",
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
   const auto& reports = r->hid.init_feature_reports;
@@ -198,7 +198,7 @@ TEST(Trackers, InitFeatureReportsAreHexBytesReportIdFirst) {
 }
 
 TEST(Trackers, IgtlTableNamesTheServerAndTheDeviceOfEachRole) {
-  auto r = load_tracker_settings_from_string(R"(
+  auto r = tracker_config_from_toml(R"(
 [trackers]
 source = "igtl"
 [trackers.igtl]
@@ -212,14 +212,14 @@ rigid_tolerance = 0.01
                                      "x.toml");
   ASSERT_TRUE(r) << r.error();
   const auto& g = r->igtl;
-  EXPECT_EQ(r->source, lungar::config::TrackerSource::Igtl);
+  EXPECT_EQ(r->source, lungar::drivers::TrackerSource::Igtl);
   EXPECT_EQ(g.host, "plus.lab");
   EXPECT_EQ(g.port, 18945);
   EXPECT_EQ(g.head, "");
   EXPECT_EQ(g.patient, "ReferenceToTracker");
   EXPECT_EQ(g.stylus, "StylusTipToTracker");  // the default, PLUS's naming
   EXPECT_DOUBLE_EQ(g.scale, 1000.0);
-  EXPECT_EQ(lungar::config::TrackerSettings{}.igtl.port, 18944);
+  EXPECT_EQ(lungar::drivers::TrackerConfig{}.igtl.port, 18944);
   EXPECT_EQ(error_of("[trackers.igtl]\nport = 0\n"),
             "bad.toml:2: key 'trackers.igtl.port': expected an integer in [1, 65535] (TCP port), got the integer 0");
   EXPECT_EQ(error_of("[trackers.igtl]\npatient = \"ThisNameIsLongerThan20\"\n"),

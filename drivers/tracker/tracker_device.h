@@ -1,5 +1,6 @@
-/// @file tracker_source.h
-/// @brief What every source (drivers/hid, drivers/mock, drivers/replay) implements: the body of the thread.
+/// @file tracker_device.h
+/// @brief What every device (drivers/hid, drivers/igtl, drivers/mock, drivers/replay) implements: the body of the
+/// thread that feeds the pipeline.
 /// @ingroup drivers
 #pragma once
 
@@ -12,11 +13,11 @@ namespace lungar::drivers {
 
 class TrackerCore;
 
-class TrackerSource {
+class TrackerDevice {
  public:
-  virtual ~TrackerSource() = default;
-  /// The thread: read reports and pass each to core.feed() until `stop` is requested. Allocates nothing per
-  /// report. Sets the connection state on `core`.
+  virtual ~TrackerDevice() = default;
+  /// The thread: read reports and pass each to core.feed() (or, decoded here, to core.feed_decoded()) until
+  /// `stop` is requested. Allocates nothing per report. Sets the connection state on `core`.
   virtual void run(TrackerCore& core, std::stop_token stop) = 0;
   /// One line for logs and the .trk header's description ("key=value" lines for the latter).
   virtual std::string describe() const = 0;

@@ -1,0 +1,98 @@
+/// @file tracker_factory.cpp
+/// @brief make_tracker(): layouts, the device, optional recording, and the Tracker that runs them.
+#include "drivers/tracker_factory/tracker_factory.h"
+
+#include <hidapi/hidapi.h>
+
+#include <mutex>
+
+#include "drivers/hid/hid_interface.h"
+#include "drivers/igtl/igtl_interface.h"
+#include "drivers/mock/mock_interface.h"
+#include "drivers/mock/mock_trajectory.h"
+#include "drivers/replay/replay_interface.h"
+#include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/tracker/tracker_core.h"
+
+namespace lungar::drivers {
+
+namespace {
+
+/// Whether `a` and `b` decode the same bytes to the same poses: the report layout, the sensors, the world frame,
+/// the OpenIGTLink names and units; not the source, how it is reached, or its timing.
+bool decodes_alike(const TrackerConfig& a, const TrackerConfig& b) {
+  return a.report == b.report && a.head == b.head && a.patient == b.patient && a.stylus == b.stylus &&
+         a.axis_remap == b.axis_remap && a.world_offset_mm == b.world_offset_mm &&
+         a.workspace_min_mm == b.workspace_min_mm && a.workspace_max_mm == b.workspace_max_mm &&
+         a.quat_norm_tolerance == b.quat_norm_tolerance && a.igtl.head == b.igtl.head &&
+         a.igtl.patient == b.igtl.patient && a.igtl.stylus == b.igtl.stylus && a.igtl.scale == b.igtl.scale &&
+         a.igtl.rigid_tolerance == b.igtl.rigid_tolerance;
+}
+
+/// Whether a log's header names a layout other than the config's (a header that does not load counts as one).
+bool recorded_with_another_layout(const TrkLog& log, const TrackerConfig& settings) {
+  if (log.header.layout_toml.empty()) return false;
+  auto recorded = tracker_config_from_toml(log.header.layout_toml, settings.replay_file + " (header layout)");
+  return !recorded || !decodes_alike(*recorded, settings);
+}
+
+/// The device settings.source names; `layout_differs` is set for a replayed log made with another layout.
+Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings, const ReportLayout& layout,
+                                                   const IgtlLayout& igtl_layout, bool& layout_differs) {
+  switch (settings.source) {
+    case TrackerSource::Mock:
+      if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
+        return fail("trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"" +
+                    settings.mock_trajectory + "\"");
+      }
+      return mock_create(settings, layout);
+    case TrackerSource::Replay: {
+      Result<TrkLog> log = load_trk(settings.replay_file);
+      if (!log) return fail(log.error());
+      // The bytes are decoded with the configured layout, as the live device would; a log made with another
+      // layout says so in its header, and the mismatch is worth a line.
+      layout_differs = recorded_with_another_layout(*log, settings);
+      RecordDecoder igtl{TrkSource::Igtl, [igtl_layout](std::span<const std::uint8_t> message) {
+                           return decode_igtl_message(message, igtl_layout);
+                         }};
+      return replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop,
+                           {std::move(igtl)});
+    }
+    case TrackerSource::Hid: {
+      static std::once_flag init;  // hid_init is not thread-safe; once per process
+      std::call_once(init, [] { hid_init(); });
+      return hid_create(settings);
+    }
+    case TrackerSource::Igtl: return igtl_create(settings, igtl_layout);
+  }
+  return fail("trackers.source: expected " + kTrackerSourceNames.expected());
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, const TrackerOptions& options) {
+  Result<ReportLayout> layout = make_layout(settings);
+  if (!layout) return layout.with_context("tracker report layout: ");
+  auto igtl_layout = make_igtl_layout(settings);  // for replay too: a log may hold OpenIGTLink messages
+  if (!igtl_layout) return igtl_layout.with_context("tracker: ");
+  bool layout_differs = false;
+  auto device = make_device(settings, *layout, *igtl_layout, layout_differs);
+  if (!device) return device.with_context("");
+  TrackerOptions opts = options;
+  opts.record_layout_toml = tracker_config_to_toml(settings);
+  auto core = std::make_unique<TrackerCore>(*layout, settings, opts);
+  if (!options.record_path.empty()) {
+    Status recording =
+        core->start_recording(options.record_path, (*device)->trk_description(), (*device)->trk_source());
+    if (!recording) return fail(recording.error());
+  }
+  core->log(-1, "tracker: %s", (*device)->describe().c_str());
+  if (layout_differs) {
+    core->log(-1, "replay %s: the log was recorded with another report layout than the config's; decoding with "
+                  "the config's (lungar-trk dump uses the log's own)",
+              settings.replay_file.c_str());
+  }
+  return std::make_unique<Tracker>(std::move(core), device.take());
+}
+
+}  // namespace lungar::drivers

@@ -15,8 +15,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
+#include <tuple>
+#include <type_traits>
 
 #include "config/base/result.h"
 
@@ -109,54 +112,89 @@ class Topic {
   Entity entity_;
 };
 
-/// A writer of T that stamps each sample with the caller's clock (source timestamp).
-template <class T>
-class Writer {
+/// Cyclone's calls for the writing side of a topic, for Endpoint.
+struct WriterCalls {
+  static constexpr const char* kCreate = "dds_create_writer";
+  static constexpr auto create = &dds_create_writer;
+  using MatchedStatus = dds_publication_matched_status_t;
+  static constexpr auto get_matched = &dds_get_publication_matched_status;
+};
+/// Cyclone's calls for the reading side of a topic, for Endpoint.
+struct ReaderCalls {
+  static constexpr const char* kCreate = "dds_create_reader";
+  static constexpr auto create = &dds_create_reader;
+  using MatchedStatus = dds_subscription_matched_status_t;
+  static constexpr auto get_matched = &dds_get_subscription_matched_status;
+};
+
+/// What a writer and a reader of T share (Self is Writer<T> or Reader<T>; Calls names Cyclone's calls for it):
+/// being made on a topic with a QoS, and counting the other side's endpoints it matched.
+template <class Self, class T, class Calls>
+class Endpoint {
  public:
-  static Result<Writer> create(dds_entity_t participant, const Topic<T>& topic, const Qos& qos) {
-    auto e = own("dds_create_writer", dds_create_writer(participant, topic.get(), qos.get(), nullptr));
+  static Result<Self> create(dds_entity_t participant, const Topic<T>& topic, const Qos& qos) {
+    auto e = own(Calls::kCreate, Calls::create(participant, topic.get(), qos.get(), nullptr));
     if (!e) return Error{e.error()};
-    Writer w;
-    w.entity_ = e.take();
-    return w;
+    Self made;
+    made.entity_ = e.take();
+    return made;
   }
-  /// Writes `sample` with source timestamp `source_ns` (ns since the epoch on the station clock).
-  Status write(const T& sample, std::int64_t source_ns) const {
-    const dds_return_t rc = dds_write_ts(entity_.get(), &sample, source_ns);
-    if (rc < 0) return fail(describe("dds_write_ts", rc));
-    return ok();
-  }
-  /// Readers matched now (DDS discovery), or -1 when Cyclone cannot say.
+  /// Endpoints of the other side (readers of a writer, writers of a reader) matched now by DDS discovery, or -1
+  /// when Cyclone cannot say.
   int matched() const {
-    dds_publication_matched_status_t s{};
-    return dds_get_publication_matched_status(entity_.get(), &s) < 0 ? -1 : static_cast<int>(s.current_count);
+    typename Calls::MatchedStatus s{};
+    return Calls::get_matched(entity_.get(), &s) < 0 ? -1 : static_cast<int>(s.current_count);
   }
   dds_entity_t get() const { return entity_.get(); }
 
- private:
+ protected:
   Entity entity_;
+};
+
+/// A writer of T that stamps each sample with the caller's clock (source timestamp).
+template <class T>
+class Writer : public Endpoint<Writer<T>, T, WriterCalls> {
+ public:
+  /// Writes `sample` with source timestamp `source_ns` (ns since the epoch on the station clock).
+  Status write(const T& sample, std::int64_t source_ns) const {
+    const dds_return_t rc = dds_write_ts(this->entity_.get(), &sample, source_ns);
+    if (rc < 0) return fail(describe("dds_write_ts", rc));
+    return ok();
+  }
 };
 
 /// A reader of T that takes samples into caller-owned storage.
 template <class T>
-class Reader {
+class Reader : public Endpoint<Reader<T>, T, ReaderCalls> {
  public:
   static constexpr std::size_t kMaxTake = 16;
 
-  static Result<Reader> create(dds_entity_t participant, const Topic<T>& topic, const Qos& qos) {
-    auto e = own("dds_create_reader", dds_create_reader(participant, topic.get(), qos.get(), nullptr));
-    if (!e) return Error{e.error()};
-    Reader r;
-    r.entity_ = e.take();
-    return r;
-  }
   /// Takes up to min(samples.size(), kMaxTake) samples; returns how many (0: none), or a negative Cyclone code.
   /// For fixed-size T (no sequences or unbounded strings) Cyclone fills `samples` in place without allocating.
   int take(std::span<T> samples, std::span<dds_sample_info_t> infos) const {
     std::array<void*, kMaxTake> buffers{};
     const std::size_t n = std::min({samples.size(), infos.size(), kMaxTake});
     for (std::size_t i = 0; i < n; ++i) buffers[i] = &samples[i];
-    return dds_take(entity_.get(), buffers.data(), infos.data(), n, static_cast<uint32_t>(n));
+    return dds_take(this->entity_.get(), buffers.data(), infos.data(), n, static_cast<uint32_t>(n));
+  }
+  /// Takes every available sample, N at a time into storage on the stack (no allocation for fixed-size T):
+  /// calls `batch()` before each batch (what its samples share, such as the time they were taken) and then
+  /// `on(sample, info)` for each of its samples, valid data or not. Returns how many it took.
+  template <std::size_t N, class Batch, class On>
+  int take_each(Batch&& batch, On&& on) const {
+    static_assert(N <= kMaxTake);
+    std::array<T, N> samples{};
+    std::array<dds_sample_info_t, N> infos{};
+    int total = 0;
+    for (int n; (n = take(samples, infos)) > 0; total += n) {
+      batch();
+      for (int i = 0; i < n; ++i) on(samples[i], infos[i]);
+    }
+    return total;
+  }
+  template <std::size_t N, class On>
+  int take_each(On&& on) const {
+    return take_each<N>([] {}, on);
   }
   /// Takes every available sample as a loan and calls `on(sample, info)` for each (for types with sequences,
   /// whose storage Cyclone owns); returns how many, or a negative Cyclone code.
@@ -164,20 +202,50 @@ class Reader {
   int take_loaned(F&& on) const {
     std::array<void*, kMaxTake> buffers{};
     std::array<dds_sample_info_t, kMaxTake> infos{};
-    const int n = dds_take(entity_.get(), buffers.data(), infos.data(), kMaxTake, kMaxTake);
+    const int n = dds_take(this->entity_.get(), buffers.data(), infos.data(), kMaxTake, kMaxTake);
     for (int i = 0; i < n; ++i) on(*static_cast<const T*>(buffers[i]), infos[i]);
-    if (n > 0) dds_return_loan(entity_.get(), buffers.data(), n);
+    if (n > 0) dds_return_loan(this->entity_.get(), buffers.data(), n);
     return n;
   }
-  /// Writers matched now (DDS discovery), or -1 when Cyclone cannot say.
-  int matched() const {
-    dds_subscription_matched_status_t s{};
-    return dds_get_subscription_matched_status(entity_.get(), &s) < 0 ? -1 : static_cast<int>(s.current_count);
+};
+
+/// One entity of kind E (Topic, Writer or Reader) for each type in T..., made together and found by type: a
+/// station's topics, its writers or its readers. Each is empty until open() has made it.
+template <template <class> class E, class... T>
+class EntitySet {
+ public:
+  /// Makes each entity in the order of T...: `make(std::type_identity<U>{})` returns a Result<E<U>>, which is
+  /// kept, and then `then(E<U>&)` returns a Status. Stops at the first error and returns it.
+  template <class Make, class Then>
+  Status open(Make&& make, Then&& then) {
+    Status status;
+    ((status = open_one<T>(make, then)) && ...);
+    return status;
   }
-  dds_entity_t get() const { return entity_.get(); }
+  template <class Make>
+  Status open(Make&& make) {
+    return open(make, [](const auto&) { return ok(); });
+  }
+  template <class U>
+  E<U>& get() {
+    return *std::get<std::optional<E<U>>>(entities_);
+  }
+  template <class U>
+  const E<U>& get() const {
+    return *std::get<std::optional<E<U>>>(entities_);
+  }
 
  private:
-  Entity entity_;
+  template <class U, class Make, class Then>
+  Status open_one(Make& make, Then& then) {
+    Result<E<U>> made = make(std::type_identity<U>{});
+    if (!made) return Error{made.error()};
+    std::optional<E<U>>& slot = std::get<std::optional<E<U>>>(entities_);
+    slot.emplace(made.take());
+    return then(*slot);
+  }
+
+  std::tuple<std::optional<E<T>>...> entities_;
 };
 
 /// A waitset woken by data on readers (read conditions) or by a guard condition the caller triggers.

@@ -29,14 +29,6 @@ std::string default_station_name() {
 ClassroomLink::ClassroomLink(const SyncOptions& options, dds::Domain domain)
     : options_(options), clock_(options.clock_skew_ns), domain_(std::move(domain)) {}
 
-template <class T>
-static Status make_topic(dds_entity_t participant, std::optional<dds::Topic<T>>& out) {
-  auto t = dds::Topic<T>::create(participant, TopicInfo<T>::descriptor(), TopicInfo<T>::name);
-  if (!t) return Error{t.error()};
-  out.emplace(t.take());
-  return ok();
-}
-
 Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& options, std::uint8_t wire_role) {
   if (options.classroom.empty() || options.classroom.size() > 63 ||
       options.classroom.find_first_of("*?[]\\") != std::string::npos) {
@@ -53,12 +45,11 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
   link->started_ns_ = link->clock_.now_ns();
   link->wire_role_ = wire_role;
   const dds_entity_t p = link->domain_.participant();
-  for (Status s : {make_topic(p, link->station_topic_), make_topic(p, link->pose_topic_),
-                   make_topic(p, link->breathing_topic_), make_topic(p, link->events_topic_),
-                   make_topic(p, link->heartbeat_topic_), make_topic(p, link->request_topic_),
-                   make_topic(p, link->reply_topic_)}) {
-    if (!s) return fail("sync: " + s.error());
-  }
+  Status topics = link->topics_.open([p](auto type) {
+    using T = typename decltype(type)::type;
+    return dds::Topic<T>::create(p, TopicInfo<T>::descriptor(), TopicInfo<T>::name);
+  });
+  if (!topics) return fail("sync: " + topics.error());
   auto writer = link->writer<lungar_sync_Station>();
   auto reader = link->reader<lungar_sync_Station>();
   auto waitset = dds::WaitSet::create(p);
@@ -72,24 +63,6 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
   return link;
 }
 
-template <class T>
-const dds::Topic<T>& ClassroomLink::topic() const {
-  if constexpr (std::is_same_v<T, lungar_sync_Station>) return *station_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_PatientPose>) return *pose_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_BreathingState>) return *breathing_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_ScenarioEvents>) return *events_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_Heartbeat>) return *heartbeat_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_TimeRequest>) return *request_topic_;
-  if constexpr (std::is_same_v<T, lungar_sync_TimeReply>) return *reply_topic_;
-}
-template const dds::Topic<lungar_sync_Station>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_PatientPose>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_BreathingState>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_ScenarioEvents>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_Heartbeat>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_TimeRequest>& ClassroomLink::topic() const;
-template const dds::Topic<lungar_sync_TimeReply>& ClassroomLink::topic() const;
-
 Status ClassroomLink::announce() {
   lungar_sync_Station s{};
   std::strncpy(s.name, name_.c_str(), sizeof s.name - 1);
@@ -100,35 +73,26 @@ Status ClassroomLink::announce() {
 }
 
 int ClassroomLink::poll_roster() {
-  std::array<lungar_sync_Station, 8> samples{};
-  std::array<dds_sample_info_t, 8> infos{};
-  int total = 0;
-  for (;;) {
-    const int n = station_reader_->take(samples, infos);
-    if (n <= 0) break;
-    total += n;
-    for (int i = 0; i < n; ++i) {
-      RosterEntry* entry = nullptr;
-      for (std::size_t k = 0; k < roster_size_; ++k) {
-        if (roster_[k].instance == infos[i].instance_handle) entry = &roster_[k];
-      }
-      if (!infos[i].valid_data) {  // the instance's writer went away (lease expired or deleted)
-        if (entry) entry->alive = infos[i].instance_state == DDS_IST_ALIVE;
-        continue;
-      }
-      const lungar_sync_Station& s = samples[i];
-      if (Status c = check(s); !c) {
-        malformed(c.error());
-        continue;
-      }
-      if (s.session == session_) continue;  // ourselves
-      if (!entry) {
-        if (roster_size_ == roster_.size()) continue;
-        entry = &roster_[roster_size_++];
-      }
-      *entry = RosterEntry{s.name, s.role, s.session, s.started_ns, infos[i].instance_handle, true};
+  const int total = station_reader_->take_each<8>([this](const lungar_sync_Station& s, const dds_sample_info_t& info) {
+    RosterEntry* entry = nullptr;
+    for (std::size_t k = 0; k < roster_size_; ++k) {
+      if (roster_[k].instance == info.instance_handle) entry = &roster_[k];
     }
-  }
+    if (!info.valid_data) {  // the instance's writer went away (lease expired or deleted)
+      if (entry) entry->alive = info.instance_state == DDS_IST_ALIVE;
+      return;
+    }
+    if (Status c = check(s); !c) {
+      malformed(c.error());
+      return;
+    }
+    if (s.session == session_) return;  // ourselves
+    if (!entry) {
+      if (roster_size_ == roster_.size()) return;
+      entry = &roster_[roster_size_++];
+    }
+    *entry = RosterEntry{s.name, s.role, s.session, s.started_ns, info.instance_handle, true};
+  });
   peers_max_ = std::max(peers_max_, peers());
   return total;
 }

@@ -10,6 +10,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
+#include <utility>
 
 #include "config/base/result.h"
 #include "platform/sync/classroom_topics.h"
@@ -50,13 +52,13 @@ class ClassroomLink {
   Result<dds::Writer<T>> writer() const {
     dds::Qos qos;
     classroom_qos<T>(qos, options_.classroom);
-    return dds::Writer<T>::create(domain_.participant(), topic<T>(), qos);
+    return dds::Writer<T>::create(domain_.participant(), topics_.get<T>(), qos);
   }
   template <class T>
   Result<dds::Reader<T>> reader() const {
     dds::Qos qos;
     classroom_qos<T>(qos, options_.classroom);
-    return dds::Reader<T>::create(domain_.participant(), topic<T>(), qos);
+    return dds::Reader<T>::create(domain_.participant(), topics_.get<T>(), qos);
   }
 
   dds::WaitSet& waitset() { return *waitset_; }
@@ -72,8 +74,6 @@ class ClassroomLink {
 
  private:
   ClassroomLink(const SyncOptions& options, dds::Domain domain);
-  template <class T>
-  const dds::Topic<T>& topic() const;
 
   SyncOptions options_;
   StationClock clock_;
@@ -87,16 +87,36 @@ class ClassroomLink {
   int peers_max_ = 0;
   // Entities: the domain first, so that it is deleted last.
   dds::Domain domain_;
-  std::optional<dds::Topic<lungar_sync_Station>> station_topic_;
-  std::optional<dds::Topic<lungar_sync_PatientPose>> pose_topic_;
-  std::optional<dds::Topic<lungar_sync_BreathingState>> breathing_topic_;
-  std::optional<dds::Topic<lungar_sync_ScenarioEvents>> events_topic_;
-  std::optional<dds::Topic<lungar_sync_Heartbeat>> heartbeat_topic_;
-  std::optional<dds::Topic<lungar_sync_TimeRequest>> request_topic_;
-  std::optional<dds::Topic<lungar_sync_TimeReply>> reply_topic_;
+  ClassroomTopics topics_;
   std::optional<dds::Writer<lungar_sync_Station>> station_writer_;
   std::optional<dds::Reader<lungar_sync_Station>> station_reader_;
   std::optional<dds::WaitSet> waitset_;
+};
+
+/// A station's sync thread (neither copied nor moved: its atomic flag and thread are not). stop() sets the flag
+/// its loop checks, wakes the waitset the loop waits on and joins; the owner calls it before the members the loop
+/// uses go (and it is the owner's last member, so that its own destructor, which stops it too, runs first).
+class SyncThread {
+ public:
+  ~SyncThread() { stop(); }
+
+  /// Runs `loop` on a new thread; the loop waits on `waitset` and returns once stopping() is true.
+  template <class F>
+  void start(dds::WaitSet& waitset, F&& loop) {
+    waitset_ = &waitset;
+    thread_ = std::thread(std::forward<F>(loop));
+  }
+  bool stopping() const { return stop_.load(); }
+  void stop() {
+    stop_.store(true);
+    if (waitset_) waitset_->trigger();
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  dds::WaitSet* waitset_ = nullptr;
+  std::thread thread_;
 };
 
 /// A random 64-bit session id for this run of a station.

@@ -38,6 +38,16 @@ LUNGAR_SYNC_TOPIC(TimeRequest, "lungar_time_request");
 LUNGAR_SYNC_TOPIC(TimeReply, "lungar_time_reply");
 #undef LUNGAR_SYNC_TOPIC
 
+/// Every topic of the classroom, in the order a station creates them.
+using ClassroomTopics =
+    dds::EntitySet<dds::Topic, lungar_sync_Station, lungar_sync_PatientPose, lungar_sync_BreathingState,
+                   lungar_sync_ScenarioEvents, lungar_sync_Heartbeat, lungar_sync_TimeRequest, lungar_sync_TimeReply>;
+/// The topics the instructor writes and every trainee reads, as a set of E (dds::Writer or dds::Reader) in
+/// the order a station creates them.
+template <template <class> class E>
+using FromInstructor = dds::EntitySet<E, lungar_sync_PatientPose, lungar_sync_BreathingState,
+                                      lungar_sync_ScenarioEvents, lungar_sync_Heartbeat, lungar_sync_TimeReply>;
+
 /// How a topic is delivered.
 enum class Delivery {
   Latest,   ///< best effort, volatile, keep-last 1: the pose, the heartbeat, the clock exchange

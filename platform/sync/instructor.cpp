@@ -48,36 +48,20 @@ Result<std::unique_ptr<Instructor>> Instructor::create(const SyncOptions& option
   if (Status w = self->open_writers(); !w) return fail("sync: " + w.error());
   l.log("sync: instructor '" + l.name() + "' of classroom '" + options.classroom + "' (domain " +
         std::to_string(options.domain) + "), " + std::to_string(l.peers()) + " other stations");
-  self->thread_ = std::thread([s = self.get()] { s->run(); });
+  self->thread_.start(l.waitset(), [s = self.get()] { s->run(); });
   return self;
 }
 
-Instructor::~Instructor() {
-  stop_.store(true);
-  if (link_) link_->waitset().trigger();
-  if (thread_.joinable()) thread_.join();
-}
+Instructor::~Instructor() { thread_.stop(); }
 
 Status Instructor::open_writers() {
-  auto pose = link_->writer<lungar_sync_PatientPose>();
-  if (!pose) return Error{pose.error()};
-  pose_writer_.emplace(pose.take());
-  auto breathing = link_->writer<lungar_sync_BreathingState>();
-  if (!breathing) return Error{breathing.error()};
-  breathing_writer_.emplace(breathing.take());
-  auto events = link_->writer<lungar_sync_ScenarioEvents>();
-  if (!events) return Error{events.error()};
-  events_writer_.emplace(events.take());
-  auto heartbeat = link_->writer<lungar_sync_Heartbeat>();
-  if (!heartbeat) return Error{heartbeat.error()};
-  heartbeat_writer_.emplace(heartbeat.take());
-  auto reply = link_->writer<lungar_sync_TimeReply>();
-  if (!reply) return Error{reply.error()};
-  reply_writer_.emplace(reply.take());
+  Status writers = writers_.open([this](auto type) { return link_->writer<typename decltype(type)::type>(); });
+  if (!writers) return writers;
   auto request = link_->reader<lungar_sync_TimeRequest>();
   if (!request) return Error{request.error()};
   request_reader_.emplace(request.take());
-  for (dds_entity_t durable : {breathing_writer_->get(), events_writer_->get()}) {
+  for (dds_entity_t durable :
+       {writers_.get<lungar_sync_BreathingState>().get(), writers_.get<lungar_sync_ScenarioEvents>().get()}) {
     if (Status s = link_->waitset().attach_publication_matched(durable); !s) return s;
   }
   return link_->waitset().attach_reader(request_reader_->get());
@@ -95,8 +79,10 @@ Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<
   events_.revision = 1;
   if (Status s = to_wire(events, event_storage_, events_); !s) return s;
   const std::int64_t now = link_->clock().now_ns();
-  if (Status s = events_writer_->write(events_, now); !s) return fail("sync: " + s.error());
-  if (Status s = breathing_writer_->write(state_, now); !s) return fail("sync: " + s.error());
+  const auto& events_writer = writers_.get<lungar_sync_ScenarioEvents>();
+  const auto& state_writer = writers_.get<lungar_sync_BreathingState>();
+  if (Status s = events_writer.write(events_, now); !s) return fail("sync: " + s.error());
+  if (Status s = state_writer.write(state_, now); !s) return fail("sync: " + s.error());
   time_base_ns_.store(time_base);
   shared_.store(true);  // from here on the sync thread owns state_ and events_
   link_->waitset().trigger();
@@ -104,12 +90,14 @@ Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<
 }
 
 void Instructor::push_to_new_readers() {
-  const int state_readers = breathing_writer_->matched();  // reading the status clears the waitset's trigger
-  const int event_readers = events_writer_->matched();
+  const auto& state_writer = writers_.get<lungar_sync_BreathingState>();
+  const auto& events_writer = writers_.get<lungar_sync_ScenarioEvents>();
+  const int state_readers = state_writer.matched();  // reading the status clears the waitset's trigger
+  const int event_readers = events_writer.matched();
   if (shared_.load() && (state_readers > state_readers_ || event_readers > event_readers_)) {
     const std::int64_t now = link_->clock().now_ns();
-    (void)events_writer_->write(events_, now);  // reliable: a failure here is Cyclone's to retry
-    (void)breathing_writer_->write(state_, now);
+    (void)events_writer.write(events_, now);  // reliable: a failure here is Cyclone's to retry
+    (void)state_writer.write(state_, now);
   }
   state_readers_ = state_readers;
   event_readers_ = event_readers;
@@ -129,7 +117,7 @@ void Instructor::frame_breath(std::int64_t frame_mono_ns, double breath_t_s) {
 
 void Instructor::run() {
   std::int64_t next_heartbeat = lungar::monotonic_ns();
-  while (!stop_.load()) {
+  while (!thread_.stopping()) {
     const std::int64_t now = lungar::monotonic_ns();
     if (now >= next_heartbeat) {
       send_heartbeat();
@@ -151,7 +139,7 @@ void Instructor::send_pose() {
   SharedPose pose{m.position_mm, m.orientation_wxyz, link_->clock().from_monotonic(m.measured_mono_ns)};
   lungar_sync_PatientPose sample{};
   to_wire(pose, link_->session(), ++pose_seq_, sample);
-  if (!pose_writer_->write(sample, link_->clock().now_ns())) return;
+  if (!writers_.get<lungar_sync_PatientPose>().write(sample, link_->clock().now_ns())) return;
   poses_.fetch_add(1, std::memory_order_relaxed);
   std::lock_guard lock(fatal_mutex_);
   last_orientation_ = m.orientation_wxyz;
@@ -170,24 +158,23 @@ void Instructor::send_heartbeat() {
     hb.frame_ns = time_base_ns_.load();
     hb.breath_t_s = 0.0;
   }
-  if (heartbeat_writer_->write(hb, link_->clock().now_ns())) heartbeats_.fetch_add(1, std::memory_order_relaxed);
+  const auto& heartbeat_writer = writers_.get<lungar_sync_Heartbeat>();
+  if (heartbeat_writer.write(hb, link_->clock().now_ns())) heartbeats_.fetch_add(1, std::memory_order_relaxed);
 }
 
 void Instructor::answer_requests() {
-  std::array<lungar_sync_TimeRequest, 8> requests{};
-  std::array<dds_sample_info_t, 8> infos{};
-  for (int n; (n = request_reader_->take(requests, infos)) > 0;) {
-    const std::int64_t t2 = link_->clock().now_ns();
-    for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data) continue;
-      lungar_sync_TimeReply reply{};
-      reply.requester = requests[i].requester;
-      reply.seq = requests[i].seq;
-      reply.t1_ns = infos[i].source_timestamp;
-      reply.t2_ns = t2;
-      (void)reply_writer_->write(reply, link_->clock().now_ns());  // a lost reply is a lost exchange: retried
-    }
-  }
+  std::int64_t t2 = 0;
+  auto taken = [&] { t2 = link_->clock().now_ns(); };  // a batch of requests shares its receipt time
+  request_reader_->take_each<8>(taken, [&](const lungar_sync_TimeRequest& request, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    lungar_sync_TimeReply reply{};
+    reply.requester = request.requester;
+    reply.seq = request.seq;
+    reply.t1_ns = info.source_timestamp;
+    reply.t2_ns = t2;
+    // A lost reply is a lost exchange: the trainee's next request makes another.
+    (void)writers_.get<lungar_sync_TimeReply>().write(reply, link_->clock().now_ns());
+  });
 }
 
 void Instructor::check_roster() {

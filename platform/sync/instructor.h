@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "config/base/result.h"
@@ -77,11 +77,7 @@ class Instructor {
   void push_to_new_readers();
 
   std::unique_ptr<ClassroomLink> link_;
-  std::optional<dds::Writer<lungar_sync_PatientPose>> pose_writer_;
-  std::optional<dds::Writer<lungar_sync_BreathingState>> breathing_writer_;
-  std::optional<dds::Writer<lungar_sync_ScenarioEvents>> events_writer_;
-  std::optional<dds::Writer<lungar_sync_Heartbeat>> heartbeat_writer_;
-  std::optional<dds::Writer<lungar_sync_TimeReply>> reply_writer_;
+  FromInstructor<dds::Writer> writers_;
   std::optional<dds::Reader<lungar_sync_TimeRequest>> request_reader_;
 
   lungar_sync_BreathingState state_{};                 ///< the shared state, as last written
@@ -102,8 +98,7 @@ class Instructor {
   mutable std::mutex fatal_mutex_;  ///< guards fatal_ and last_orientation_, which report() reads
   std::string fatal_;
   std::array<double, 4> last_orientation_{1, 0, 0, 0};
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  SyncThread thread_;  ///< last: stopped before the members its loop uses go
 };
 
 }  // namespace lungar::platform::sync

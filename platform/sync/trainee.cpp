@@ -28,34 +28,19 @@ Result<std::unique_ptr<Trainee>> Trainee::create(const SyncOptions& options) {
   self->link_->log("sync: trainee '" + self->link_->name() + "' of classroom '" + options.classroom + "' (domain " +
                    std::to_string(options.domain) + "); waiting for the instructor");
   self->transition(SyncState::Lost);
-  self->thread_ = std::thread([s = self.get()] { s->run(); });
+  self->thread_.start(self->link_->waitset(), [s = self.get()] { s->run(); });
   return self;
 }
 
-Trainee::~Trainee() {
-  stop_.store(true);
-  if (link_) link_->waitset().trigger();
-  if (thread_.joinable()) thread_.join();
-}
-
-template <class T>
-static Status open_reader(ClassroomLink& link, std::optional<dds::Reader<T>>& out) {
-  auto r = link.reader<T>();
-  if (!r) return Error{r.error()};
-  out.emplace(r.take());
-  return link.waitset().attach_reader(out->get());
-}
+Trainee::~Trainee() { thread_.stop(); }
 
 Status Trainee::open_endpoints() {
   auto w = link_->writer<lungar_sync_TimeRequest>();
   if (!w) return Error{w.error()};
   request_writer_.emplace(w.take());
-  for (Status s : {open_reader(*link_, pose_reader_), open_reader(*link_, breathing_reader_),
-                   open_reader(*link_, events_reader_), open_reader(*link_, heartbeat_reader_),
-                   open_reader(*link_, reply_reader_)}) {
-    if (!s) return s;
-  }
-  return ok();
+  // Each reader wakes the sync thread on data from the moment it is made.
+  return readers_.open([this](auto type) { return link_->reader<typename decltype(type)::type>(); },
+                       [this](const auto& reader) { return link_->waitset().attach_reader(reader.get()); });
 }
 
 drivers::PoseSample Trainee::patient_pose() const {
@@ -69,7 +54,7 @@ bool Trainee::breathing(std::int64_t now_ns, sim::BreathingSample& out) const {
 }
 
 void Trainee::run() {
-  while (!stop_.load()) {
+  while (!thread_.stopping()) {
     std::int64_t now = lungar::monotonic_ns();
     const std::int64_t wait = std::clamp<std::int64_t>(next_request_mono_ - now, 0, kMaxWaitNs);
     link_->waitset().wait(heard_session_ != 0 ? wait : kMaxWaitNs);
@@ -90,25 +75,22 @@ void Trainee::run() {
 }
 
 void Trainee::take_breathing() {
-  std::array<lungar_sync_BreathingState, 4> samples{};
-  std::array<dds_sample_info_t, 4> infos{};
-  for (int n; (n = breathing_reader_->take(samples, infos)) > 0;) {
-    for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data) continue;
-      auto params = from_wire(samples[i]);
-      if (!params) {
-        link_->malformed(params.error());
-        continue;
-      }
-      const auto& s = samples[i];
-      hear(s.session, lungar::monotonic_ns());  // a durable sample arrives from a live writer only
-      pending_state_ = PendingState{s.session, s.revision, s.time_base_ns, s.station, *params};
+  const auto& reader = readers_.get<lungar_sync_BreathingState>();
+  reader.take_each<4>([&](const lungar_sync_BreathingState& s, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    auto params = from_wire(s);
+    if (!params) {
+      link_->malformed(params.error());
+      return;
     }
-  }
+    hear(s.session, lungar::monotonic_ns());  // a durable sample arrives from a live writer only
+    pending_state_ = PendingState{s.session, s.revision, s.time_base_ns, s.station, *params};
+  });
 }
 
 void Trainee::take_events() {
-  events_reader_->take_loaned([&](const lungar_sync_ScenarioEvents& s, const dds_sample_info_t& info) {
+  const auto& reader = readers_.get<lungar_sync_ScenarioEvents>();
+  reader.take_loaned([&](const lungar_sync_ScenarioEvents& s, const dds_sample_info_t& info) {
     if (!info.valid_data) return;
     auto events = from_wire(s);
     if (!events) {
@@ -144,22 +126,18 @@ void Trainee::install_if_complete() {
 }
 
 void Trainee::take_heartbeats(std::int64_t now_mono) {
-  std::array<lungar_sync_Heartbeat, 8> samples{};
-  std::array<dds_sample_info_t, 8> infos{};
-  for (int n; (n = heartbeat_reader_->take(samples, infos)) > 0;) {
-    for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data) continue;
-      const lungar_sync_Heartbeat& hb = samples[i];
-      if (Status c = check(hb); !c) {
-        link_->malformed(c.error());
-        continue;
-      }
-      hear(hb.session, now_mono);
-      provisional_offset(infos[i].source_timestamp, link_->clock().now_ns());
-      heartbeats_.fetch_add(1, std::memory_order_relaxed);
-      if (hb.session == installed_session_ && state() == SyncState::InSync) compare_breath(hb);
+  const auto& reader = readers_.get<lungar_sync_Heartbeat>();
+  reader.take_each<8>([&](const lungar_sync_Heartbeat& hb, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    if (Status c = check(hb); !c) {
+      link_->malformed(c.error());
+      return;
     }
-  }
+    hear(hb.session, now_mono);
+    provisional_offset(info.source_timestamp, link_->clock().now_ns());
+    heartbeats_.fetch_add(1, std::memory_order_relaxed);
+    if (hb.session == installed_session_ && state() == SyncState::InSync) compare_breath(hb);
+  });
 }
 
 /// The breathing time this station's last frame drew minus the instructor's at the same instant: the instructor's
@@ -174,37 +152,37 @@ void Trainee::compare_breath(const lungar_sync_Heartbeat& hb) {
 }
 
 void Trainee::take_poses() {
-  std::array<lungar_sync_PatientPose, 8> samples{};
-  std::array<dds_sample_info_t, 8> infos{};
-  for (int n; (n = pose_reader_->take(samples, infos)) > 0;) {
-    const std::int64_t arrival = lungar::monotonic_ns();
-    const std::int64_t here_ns = link_->clock().from_monotonic(arrival);
-    for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data) continue;
-      auto pose = from_wire(samples[i]);
-      if (!pose) {
-        link_->malformed(pose.error());
-        continue;
-      }
-      hear(samples[i].session, arrival);
-      provisional_offset(infos[i].source_timestamp, here_ns);
-      drivers::PoseSample p;
-      p.role = drivers::Role::Patient;
-      p.flags = drivers::kPoseValid;
-      p.t_arrival_ns = arrival;
-      p.t_device_ns = arrival;
-      p.position_mm = pose->position_mm;
-      p.orientation_wxyz = pose->orientation_wxyz;
-      if (estimate_) {  // publication -> receipt, both on the instructor's clock
-        p.t_device_ns = link_->clock().to_monotonic(pose->measured_ns - estimate_->offset_ns);
-        record(pose_age_ms_, static_cast<double>(here_ns + estimate_->offset_ns - infos[i].source_timestamp) * 1e-6);
-      }
-      pose_box_.publish(p);
-      poses_.fetch_add(1, std::memory_order_relaxed);
-      std::lock_guard lock(report_mutex_);
-      last_orientation_ = p.orientation_wxyz;
+  std::int64_t arrival = 0, here_ns = 0;
+  auto taken = [&] {  // a batch of poses shares its receipt time
+    arrival = lungar::monotonic_ns();
+    here_ns = link_->clock().from_monotonic(arrival);
+  };
+  const auto& reader = readers_.get<lungar_sync_PatientPose>();
+  reader.take_each<8>(taken, [&](const lungar_sync_PatientPose& s, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    auto pose = from_wire(s);
+    if (!pose) {
+      link_->malformed(pose.error());
+      return;
     }
-  }
+    hear(s.session, arrival);
+    provisional_offset(info.source_timestamp, here_ns);
+    drivers::PoseSample p;
+    p.role = drivers::Role::Patient;
+    p.flags = drivers::kPoseValid;
+    p.t_arrival_ns = arrival;
+    p.t_device_ns = arrival;
+    p.position_mm = pose->position_mm;
+    p.orientation_wxyz = pose->orientation_wxyz;
+    if (estimate_) {  // publication -> receipt, both on the instructor's clock
+      p.t_device_ns = link_->clock().to_monotonic(pose->measured_ns - estimate_->offset_ns);
+      record(pose_age_ms_, static_cast<double>(here_ns + estimate_->offset_ns - info.source_timestamp) * 1e-6);
+    }
+    pose_box_.publish(p);
+    poses_.fetch_add(1, std::memory_order_relaxed);
+    std::lock_guard lock(report_mutex_);
+    last_orientation_ = p.orientation_wxyz;
+  });
 }
 
 void Trainee::hear(std::uint64_t session, std::int64_t now_mono) {
@@ -232,22 +210,20 @@ void Trainee::provisional_offset(std::int64_t source_ns, std::int64_t here_ns) {
 }
 
 void Trainee::take_replies() {
-  std::array<lungar_sync_TimeReply, 8> samples{};
-  std::array<dds_sample_info_t, 8> infos{};
-  for (int n; (n = reply_reader_->take(samples, infos)) > 0;) {
-    const std::int64_t t4 = link_->clock().now_ns();
-    for (int i = 0; i < n; ++i) {
-      if (!infos[i].valid_data || samples[i].requester != link_->session()) continue;
-      const ClockExchange x{samples[i].t1_ns, samples[i].t2_ns, infos[i].source_timestamp, t4};
-      if (!estimator_.add(x)) continue;  // a stalled or impossible exchange: the next one will do
-      ++exchanges_;
-      const auto e = estimator_.estimate();
-      breathing_.update_offset(e->offset_ns);
-      std::lock_guard lock(report_mutex_);
-      estimate_ = e;
-      provisional_ = false;
-    }
-  }
+  std::int64_t t4 = 0;
+  auto taken = [&] { t4 = link_->clock().now_ns(); };  // a batch of replies shares its receipt time
+  const auto& reader = readers_.get<lungar_sync_TimeReply>();
+  reader.take_each<8>(taken, [&](const lungar_sync_TimeReply& s, const dds_sample_info_t& info) {
+    if (!info.valid_data || s.requester != link_->session()) return;
+    const ClockExchange x{s.t1_ns, s.t2_ns, info.source_timestamp, t4};
+    if (!estimator_.add(x)) return;  // a stalled or impossible exchange: the next one will do
+    ++exchanges_;
+    const auto e = estimator_.estimate();
+    breathing_.update_offset(e->offset_ns);
+    std::lock_guard lock(report_mutex_);
+    estimate_ = e;
+    provisional_ = false;
+  });
 }
 
 void Trainee::request_time(std::int64_t now_mono) {

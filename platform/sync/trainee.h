@@ -10,7 +10,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <vector>
 
 #include "config/base/result.h"
@@ -90,11 +89,7 @@ class Trainee {
 
   std::unique_ptr<ClassroomLink> link_;
   std::optional<dds::Writer<lungar_sync_TimeRequest>> request_writer_;
-  std::optional<dds::Reader<lungar_sync_PatientPose>> pose_reader_;
-  std::optional<dds::Reader<lungar_sync_BreathingState>> breathing_reader_;
-  std::optional<dds::Reader<lungar_sync_ScenarioEvents>> events_reader_;
-  std::optional<dds::Reader<lungar_sync_Heartbeat>> heartbeat_reader_;
-  std::optional<dds::Reader<lungar_sync_TimeReply>> reply_reader_;
+  FromInstructor<dds::Reader> readers_;
 
   drivers::LatestMailbox<drivers::PoseSample> pose_box_;
   drivers::LatestMailbox<FrameBreath> frame_box_;
@@ -128,8 +123,7 @@ class Trainee {
   LogHistogram pose_age_ms_;
   std::vector<SyncTransition> transitions_;
 
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  SyncThread thread_;  ///< last: stopped before the members its loop uses go
 };
 
 }  // namespace lungar::platform::sync

@@ -36,6 +36,19 @@ Status finite(const char* topic, const char* field, double v) {
   return fail(std::string(topic) + ": " + field + ": expected a finite number, got " + num(v));
 }
 
+/// BreathingParams and BreathingState carry the same fields by the same names (the enums as bytes on the wire),
+/// so one copy serves both directions.
+template <class From, class To>
+void copy_params(const From& from, To& to) {
+  to.preset = static_cast<decltype(to.preset)>(from.preset);
+  to.mode = static_cast<decltype(to.mode)>(from.mode);
+  to.rate_bpm = from.rate_bpm;
+  to.ie_ratio = from.ie_ratio;
+  to.tidal_volume_ml = from.tidal_volume_ml;
+  to.ventilator_tau_s = from.ventilator_tau_s;
+  to.peep_cmh2o = from.peep_cmh2o;
+}
+
 template <class T>
 void set_if(std::uint32_t set, std::uint32_t bit, std::optional<T>& field, T value) {
   if (set & bit) field = value;
@@ -87,26 +100,12 @@ Result<sim::BreathingParams> from_wire(const lungar_sync_BreathingState& s) {
   }
   if (s.time_base_ns <= 0) return fail(std::string(kTopic) + ": time_base_ns: expected a time after the epoch");
   sim::BreathingParams p;
-  p.preset = static_cast<sim::Preset>(s.preset);
-  p.mode = static_cast<sim::Mode>(s.mode);
-  p.rate_bpm = s.rate_bpm;
-  p.ie_ratio = s.ie_ratio;
-  p.tidal_volume_ml = s.tidal_volume_ml;
-  p.ventilator_tau_s = s.ventilator_tau_s;
-  p.peep_cmh2o = s.peep_cmh2o;
+  copy_params(s, p);
   if (Status e = sim::validate(p); !e) return e.with_context(std::string(kTopic) + ": ");
   return p;
 }
 
-void to_wire(const sim::BreathingParams& p, lungar_sync_BreathingState& out) {
-  out.preset = static_cast<std::uint8_t>(p.preset);
-  out.mode = static_cast<std::uint8_t>(p.mode);
-  out.rate_bpm = p.rate_bpm;
-  out.ie_ratio = p.ie_ratio;
-  out.tidal_volume_ml = p.tidal_volume_ml;
-  out.ventilator_tau_s = p.ventilator_tau_s;
-  out.peep_cmh2o = p.peep_cmh2o;
-}
+void to_wire(const sim::BreathingParams& p, lungar_sync_BreathingState& out) { copy_params(p, out); }
 
 Result<std::vector<sim::Event>> from_wire(const lungar_sync_ScenarioEvents& s) {
   std::vector<sim::Event> events;

@@ -16,6 +16,7 @@
 #include "platform/sync/dds.h"
 #include "platform/sync/wire.h"
 #include "station_process.h"
+#include "stations_test.h"
 #include "sync_test_support.h"
 
 using namespace lungar;
@@ -28,13 +29,9 @@ namespace {
 
 const std::string kProbe = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar-sync-probe";
 
-class ClassroomProbe : public ::testing::Test {
+class ClassroomProbe : public lungar::testing::StationsTest {
  protected:
-  void SetUp() override {
-    dir = lungar::testing::test_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    domain = std::to_string(lungar::testing::test_domain());
-    room = lungar::testing::test_classroom("room");
-  }
+  ClassroomProbe() : StationsTest("room") {}
   std::vector<std::string> args(const std::string& role, const std::string& station, double seconds,
                                 const std::string& classroom) const {
     return {"--role", role, "--station", station, "--seconds", std::to_string(seconds), "--domain", domain,
@@ -46,16 +43,9 @@ class ClassroomProbe : public ::testing::Test {
     a.insert(a.end(), extra.begin(), extra.end());
     return std::make_unique<StationProcess>(kProbe, a, dir / station);
   }
-  nlohmann::json report(const std::string& station) const {
-    std::ifstream in(dir / (station + ".json"));
-    return nlohmann::json::parse(in);
-  }
   std::vector<std::string> report_to(const std::string& station) const {
     return {"--report-json", (dir / (station + ".json")).string()};
   }
-
-  std::filesystem::path dir;
-  std::string domain, room;
 };
 
 }  // namespace
@@ -94,7 +84,7 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
     sleep_s(0.05);
   }
   ASSERT_EQ(trainee->wait(20), 0) << trainee->err();
-  const auto r = report("victim");
+  const auto r = json_of("victim");
   EXPECT_GE(r["sync_malformed"].get<int>(), 2) << r.dump();  // the state, and at least one pose
   EXPECT_EQ(r["sync_poses"], 0);  // never applied
   EXPECT_EQ(r["sync_state"], "lost");

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "station_process.h"
+#include "stations_test.h"
 #include "sync_test_support.h"
 
 using lungar::testing::StationProcess;
@@ -41,13 +42,9 @@ std::int64_t transition_after(const nlohmann::json& stats, const std::string& st
   return 0;
 }
 
-class ClassroomRuntime : public ::testing::Test {
+class ClassroomRuntime : public lungar::testing::StationsTest {
  protected:
-  void SetUp() override {
-    dir = lungar::testing::test_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    domain = std::to_string(lungar::testing::test_domain());
-    room = lungar::testing::test_classroom("ward");
-  }
+  ClassroomRuntime() : StationsTest("ward") {}
   std::unique_ptr<StationProcess> start(const std::string& name, const std::string& role, double seconds,
                                         std::vector<std::string> extra = {}, const std::string& classroom = "") {
     std::vector<std::string> a = {"--config", config, "--asset", kAsset, "--sync", role, "--station", name,
@@ -58,13 +55,7 @@ class ClassroomRuntime : public ::testing::Test {
     a.insert(a.end(), extra.begin(), extra.end());
     return std::make_unique<StationProcess>(kLungar, a, dir / name);
   }
-  nlohmann::json stats(const std::string& name) const {
-    std::ifstream in(dir / (name + ".json"));
-    return nlohmann::json::parse(in);
-  }
 
-  std::filesystem::path dir;
-  std::string domain, room;
   std::string config = kConfig;  ///< the profile of the stations started next
 };
 
@@ -90,14 +81,14 @@ TEST_F(ClassroomRuntime, ThreeTraineesFollowTheInstructorsTurnAndBreath) {
   for (auto* t : {t1.get(), t2.get(), t3.get()}) ASSERT_EQ(t->wait(60), 0) << t->err();
   ASSERT_EQ(instructor->wait(60), 0) << instructor->err();
 
-  const auto in = stats("instructor");
+  const auto in = json_of("instructor");
   EXPECT_EQ(in["sync_role"], "instructor");
   EXPECT_EQ(in["sync_peers_max"], 3) << in.dump();
   const auto supine = in["sync_patient_orientation_wxyz"];
   EXPECT_NEAR(supine[0].get<double>(), std::sqrt(0.5), 1e-6) << in.dump();  // 90 degrees about x: turned
   for (const std::string name : {"trainee-1", "trainee-2", "trainee-3"}) {
     SCOPED_TRACE(name);
-    const auto t = stats(name);
+    const auto t = json_of(name);
     EXPECT_EQ(t["sync_role"], "trainee");
     EXPECT_EQ(t["sync_state"], "in_sync");
     EXPECT_EQ(t["sync_instructor"], "instructor");
@@ -111,7 +102,7 @@ TEST_F(ClassroomRuntime, ThreeTraineesFollowTheInstructorsTurnAndBreath) {
     EXPECT_GT(t["sync_poses"].get<int>(), 200);
     EXPECT_GE(t["volume_ml_max"].get<double>() - t["volume_ml_min"].get<double>(), 400.0);  // it breathes
   }
-  EXPECT_NEAR(stats("trainee-2")["sync_clock_offset_ms"].get<double>(), -250.0, 2.0);
+  EXPECT_NEAR(json_of("trainee-2")["sync_clock_offset_ms"].get<double>(), -250.0, 2.0);
   EXPECT_LE(first_join_ms(t3->err(), "instructor"), 100.0) << t3->err();
   EXPECT_GE(first_join_ms(t3->err(), "instructor"), 0.0) << t3->err();
 }
@@ -127,7 +118,7 @@ TEST_F(ClassroomRuntime, KillingTheInstructorIsLostWithin500msAndARestartBringsI
   sleep_s(1.0);
   auto again = start("instructor-again", "instructor", 30);  // still there when the trainee ends
   ASSERT_EQ(trainee->wait(60), 0) << trainee->err();
-  const auto t = stats("trainee");
+  const auto t = json_of("trainee");
   const std::int64_t lost = transition_after(t, "lost", killed);
   ASSERT_NE(lost, 0) << t.dump();
   EXPECT_LE((lost - killed) * 1e-6, 500.0) << t.dump();
@@ -155,10 +146,10 @@ TEST_F(ClassroomRuntime, ASecondInstructorIsRefusedAndTwoClassroomsOnOneDomainAr
   ASSERT_EQ(other_trainee->wait(30), 0) << other_trainee->err();
   ASSERT_EQ(other_instructor->wait(30), 0) << other_instructor->err();
   ASSERT_EQ(first->wait(30), 0) << first->err();
-  const auto t = stats("other-trainee");
+  const auto t = json_of("other-trainee");
   EXPECT_EQ(t["sync_instructor"], "other-instructor");
   EXPECT_EQ(t["sync_peers_max"], 1) << t.dump();  // 'first' shares the domain, not the classroom
   // 'first' may have seen the refused 'second' (it announces itself while it listens), never the other
   // classroom's two stations, which ran together.
-  EXPECT_LE(stats("first")["sync_peers_max"].get<int>(), 1) << stats("first").dump();
+  EXPECT_LE(json_of("first")["sync_peers_max"].get<int>(), 1) << json_of("first").dump();
 }

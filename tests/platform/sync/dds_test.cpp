@@ -42,6 +42,39 @@ int take_within(const dds::Reader<T>& r, dds::WaitSet& ws, T& out, dds_sample_in
   }
 }
 
+/// Topic T on a loopback domain, a writer of it in one partition and a reader in another (or the same), and a
+/// waitset that wakes on the reader's data: what a sample needs to go round. The members are in the order they
+/// are made, so that each is deleted before what it was made from.
+template <class T>
+struct RoundTrip {
+  static Result<RoundTrip> open(const std::string& writer_partition, const std::string& reader_partition) {
+    auto d = dds::Domain::create(test_domain(), kLoopbackXml);
+    if (!d) return Error{d.error()};
+    const dds_entity_t p = d->participant();
+    auto t = dds::Topic<T>::create(p, sync::TopicInfo<T>::descriptor(), sync::TopicInfo<T>::name);
+    if (!t) return Error{t.error()};
+    dds::Qos wq, rq;
+    qos_for<T>(wq, writer_partition);
+    qos_for<T>(rq, reader_partition);
+    auto w = dds::Writer<T>::create(p, *t, wq);
+    auto r = dds::Reader<T>::create(p, *t, rq);
+    auto ws = dds::WaitSet::create(p);
+    if (!w || !r || !ws) return fail(!w ? w.error() : !r ? r.error() : ws.error());
+    if (Status a = ws->attach_reader(r->get()); !a) return Error{a.error()};
+    return RoundTrip{d.take(), t.take(), w.take(), r.take(), ws.take()};
+  }
+  /// Takes one sample within `timeout_ns`.
+  int take_within(T& out, dds_sample_info_t& info, std::int64_t timeout_ns) {
+    return ::take_within(reader, waitset, out, info, timeout_ns);
+  }
+
+  dds::Domain domain;
+  dds::Topic<T> topic;
+  dds::Writer<T> writer;
+  dds::Reader<T> reader;
+  dds::WaitSet waitset;
+};
+
 }  // namespace
 
 TEST(DdsLayer, AMissingOrForeignConfigurationIsOneLineNamingTheFile) {
@@ -64,48 +97,30 @@ TEST(DdsLayer, AMissingOrForeignConfigurationIsOneLineNamingTheFile) {
 }
 
 TEST(DdsLayer, ASampleArrivesWithItsSourceTimestamp) {
-  auto d = dds::Domain::create(test_domain(), kLoopbackXml);
-  ASSERT_TRUE(d) << d.error();
-  auto t = topic<Pose>(*d);
-  dds::Qos q;
-  qos_for<Pose>(q, "room");
-  auto w = dds::Writer<Pose>::create(d->participant(), t, q);
-  auto r = dds::Reader<Pose>::create(d->participant(), t, q);
-  auto ws = dds::WaitSet::create(d->participant());
-  ASSERT_TRUE(w && r && ws);
-  ASSERT_TRUE(ws->attach_reader(r->get()));
+  auto room = RoundTrip<Pose>::open("room", "room");
+  ASSERT_TRUE(room) << room.error();
   Pose sent{};
   sent.seq = 42;
   sent.orientation_wxyz[0] = 1.0;
   const std::int64_t stamp = 1'234'567'890'123'456'789;
-  ASSERT_TRUE(w->write(sent, stamp));
+  ASSERT_TRUE(room->writer.write(sent, stamp));
   Pose got{};
   dds_sample_info_t info{};
-  ASSERT_EQ(take_within(*r, *ws, got, info, 2'000'000'000), 1);
+  ASSERT_EQ(room->take_within(got, info, 2'000'000'000), 1);
   EXPECT_EQ(got.seq, 42u);
   EXPECT_EQ(info.source_timestamp, stamp);
-  EXPECT_EQ(w->matched(), 1);
-  EXPECT_EQ(r->matched(), 1);
+  EXPECT_EQ(room->writer.matched(), 1);
+  EXPECT_EQ(room->reader.matched(), 1);
 }
 
 TEST(DdsLayer, PartitionsKeepClassroomsApart) {
-  auto d = dds::Domain::create(test_domain(), kLoopbackXml);
-  ASSERT_TRUE(d) << d.error();
-  auto t = topic<Pose>(*d);
-  dds::Qos qa, qb;
-  qos_for<Pose>(qa, "room-a");
-  qos_for<Pose>(qb, "room-b");
-  auto w = dds::Writer<Pose>::create(d->participant(), t, qa);
-  auto r = dds::Reader<Pose>::create(d->participant(), t, qb);
-  auto ws = dds::WaitSet::create(d->participant());
-  ASSERT_TRUE(w && r && ws);
-  ASSERT_TRUE(ws->attach_reader(r->get()));
-  Pose sent{};
-  ASSERT_TRUE(w->write(sent, 1));
+  auto rooms = RoundTrip<Pose>::open("room-a", "room-b");
+  ASSERT_TRUE(rooms) << rooms.error();
+  ASSERT_TRUE(rooms->writer.write(Pose{}, 1));
   Pose got{};
   dds_sample_info_t info{};
-  EXPECT_EQ(take_within(*r, *ws, got, info, 300'000'000), 0);
-  EXPECT_EQ(r->matched(), 0);
+  EXPECT_EQ(rooms->take_within(got, info, 300'000'000), 0);
+  EXPECT_EQ(rooms->reader.matched(), 0);
 }
 
 TEST(DdsLayer, ALateReaderOfDurableStateGetsTheLatestSampleOnly) {

@@ -38,7 +38,8 @@ class SilhouetteTest : public test::GlTest {};
 
 TEST_F(SilhouetteTest, UprightInspirationGrowsMostAtTheBase) {
   // A local transfer and the upright force pattern: the pleural pressure is larger at the base (lower z, gravity
-  // along -z in LPS), so f = a Y00 + b Y10 with b < 0 pushes the base out ~3x more than the apex (DESIGN.md).
+  // along -z in LPS), so f = a Y00 + b Y10 with b < 0 pushes the base out ~3x more than the apex
+  // (docs/design.md, Applied force).
   auto asset = test::ellipsoid_pair(40000, 2, 3);
   test::set_local_transfer(asset, 1.f);
   auto drawable = LungDrawable::create(asset);

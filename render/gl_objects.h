@@ -6,40 +6,55 @@
 
 #include <GLES3/gl3.h>
 
+#include <initializer_list>
 #include <utility>
 
 namespace lungar::render::gl {
 
-/// One GL name with its delete function; GenFn/DeleteFn are glGen*/glDelete* of the same kind.
-template <void (*Gen)(GLsizei, GLuint*), void (*Delete)(GLsizei, const GLuint*)>
-class Name {
+/// One owned GL object id, released by `Free` when the owner is destroyed or reset; move-only.
+template <void (*Free)(GLuint)>
+class Owned {
  public:
-  Name() = default;
-  static Name create() {
-    Name n;
-    Gen(1, &n.id_);
-    return n;
-  }
-  ~Name() { reset(); }
-  Name(Name&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
-  Name& operator=(Name&& o) noexcept {
+  Owned() = default;
+  explicit Owned(GLuint id) : id_(id) {}
+  ~Owned() { reset(); }
+  Owned(Owned&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Owned& operator=(Owned&& o) noexcept {
     if (this != &o) {
       reset();
       id_ = std::exchange(o.id_, 0);
     }
     return *this;
   }
-  Name(const Name&) = delete;
-  Name& operator=(const Name&) = delete;
+  Owned(const Owned&) = delete;
+  Owned& operator=(const Owned&) = delete;
   GLuint id() const { return id_; }
   explicit operator bool() const { return id_ != 0; }
   void reset() {
-    if (id_ != 0) Delete(1, &id_);
+    if (id_ != 0) Free(id_);
     id_ = 0;
   }
 
  private:
   GLuint id_ = 0;
+};
+
+/// Frees one name made by glGen*: the glDelete* of the same kind, for a count of one.
+template <void (*Delete)(GLsizei, const GLuint*)>
+void delete_one(GLuint id) {
+  Delete(1, &id);
+}
+
+/// One GL name of a glGen*/glDelete* kind.
+template <void (*Gen)(GLsizei, GLuint*), void (*Delete)(GLsizei, const GLuint*)>
+class Name : public Owned<delete_one<Delete>> {
+ public:
+  using Owned<delete_one<Delete>>::Owned;
+  static Name create() {
+    GLuint id = 0;
+    Gen(1, &id);
+    return Name(id);
+  }
 };
 
 // The GL entry points are functions in libGLESv2, so their addresses are constant expressions.
@@ -63,30 +78,17 @@ using Framebuffer = Name<gen_framebuffers, delete_framebuffers>;
 using Renderbuffer = Name<gen_renderbuffers, delete_renderbuffers>;
 using TransformFeedback = Name<gen_transform_feedbacks, delete_transform_feedbacks>;
 
-/// A linked program; deleted with glDeleteProgram.
-class Program {
- public:
-  Program() = default;
-  explicit Program(GLuint id) : id_(id) {}
-  ~Program() {
-    if (id_ != 0) glDeleteProgram(id_);
-  }
-  Program(Program&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
-  Program& operator=(Program&& o) noexcept {
-    if (this != &o) {
-      if (id_ != 0) glDeleteProgram(id_);
-      id_ = std::exchange(o.id_, 0);
-    }
-    return *this;
-  }
-  Program(const Program&) = delete;
-  Program& operator=(const Program&) = delete;
-  GLuint id() const { return id_; }
-  explicit operator bool() const { return id_ != 0; }
-  GLint uniform(const char* name) const { return glGetUniformLocation(id_, name); }
+inline void delete_program(GLuint id) { glDeleteProgram(id); }
 
- private:
-  GLuint id_ = 0;
+/// A linked program; deleted with glDeleteProgram.
+class Program : public Owned<delete_program> {
+ public:
+  using Owned::Owned;
+  GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+  /// Looks up each (slot, name) pair: -1 where the program has no such active uniform.
+  void find_uniforms(std::initializer_list<std::pair<GLint*, const char*>> slots) const {
+    for (const auto& [slot, name] : slots) *slot = uniform(name);
+  }
 };
 
 }  // namespace lungar::render::gl

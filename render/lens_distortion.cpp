@@ -26,12 +26,8 @@ Result<LensDistortion> LensDistortion::create() {
   LensDistortion d;
   d.program_ = program.take();
   d.empty_vao_ = gl::VertexArray::create();
-  d.image_ = d.program_.uniform("u_eye_image");
-  d.rect_ = d.program_.uniform("u_eye_rect");
-  d.centre_ = d.program_.uniform("u_center");
-  d.aspect_ = d.program_.uniform("u_aspect");
-  d.k1_ = d.program_.uniform("u_k1");
-  d.k2_ = d.program_.uniform("u_k2");
+  d.program_.find_uniforms({{&d.image_, "u_eye_image"}, {&d.rect_, "u_eye_rect"}, {&d.centre_, "u_center"},
+                            {&d.aspect_, "u_aspect"}, {&d.k1_, "u_k1"}, {&d.k2_, "u_k2"}});
   return d;
 }
 

@@ -42,14 +42,9 @@ Result<Renderer> Renderer::create(const LungDrawable& drawable) {
     if (!program) return fail(program.error());
     Slots& s = r.slots_[v];
     s.program = program.take();
-    s.force = s.program.uniform("u_force");
-    s.coeff = s.program.uniform("u_coeff");
-    s.coeff_width = s.program.uniform("u_coeff_width");
-    s.mvp = s.program.uniform("u_model_view_proj");
-    s.eye = s.program.uniform("u_eye_model");
-    s.color = s.program.uniform("u_color");
-    s.ambient = s.program.uniform("u_ambient");
-    s.point_size = s.program.uniform("u_point_size");
+    s.program.find_uniforms({{&s.force, "u_force"}, {&s.coeff, "u_coeff"}, {&s.coeff_width, "u_coeff_width"},
+                             {&s.mvp, "u_model_view_proj"}, {&s.eye, "u_eye_model"}, {&s.color, "u_color"},
+                             {&s.ambient, "u_ambient"}, {&s.point_size, "u_point_size"}});
     glUseProgram(s.program.id());
     if (s.coeff >= 0) glUniform1i(s.coeff, 0);  // texture unit 0
   }

@@ -8,14 +8,12 @@
 #include "platform/output/openxr_frame_output.h"
 #include "platform/output/window_output.h"
 #include "platform/runtime/gl_math.h"
+#include "platform/runtime/patient_force.h"
 
 namespace lungar::platform {
 
 glm::mat4 xr_world_from_space(const RegistrationSettings& r) {
-  drivers::PoseSample space;  // the reference space's pose in the tracker world, as a tracked pose would be
-  space.position_mm = r.xr_space_translation_mm;
-  space.orientation_wxyz = r.xr_space_rotation_wxyz;
-  return to_glm(pose_isometry(space));
+  return to_glm(registration_isometry(r.xr_space_translation_mm, r.xr_space_rotation_wxyz));
 }
 
 Result<std::unique_ptr<FrameOutput>> open_output(const Settings& s,

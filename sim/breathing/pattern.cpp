@@ -1,9 +1,9 @@
 /// @file pattern.cpp
-/// @brief Raised-cosine and ventilator pressure waveforms, and the pressure swings that meet a tidal volume.
+/// @brief Spontaneous breathing by the equation of motion, the ventilator's pressure waveform, and the amplitudes
+///        that meet a tidal volume.
 #include "sim/breathing/pattern.h"
 
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 namespace lungar::sim {
@@ -87,10 +87,24 @@ Status solve(Pattern& pat) {
   if (pat.params.mode == Mode::Spontaneous) {
     if (pat.params.tidal_volume_ml > reach) return fail(reach_error("tidal_volume_ml", pat.params.tidal_volume_ml));
     pat.swing_cmh2o = spontaneous_swing(pat.params.tidal_volume_ml);
+    // The equation of motion: R of the preset, C from its curve at this tidal volume; the muscle pressure's peak
+    // is what moves V_T through the cycle's volume range (units of C P_peak).
+    const double period = 60.0 / pat.params.rate_bpm;
+    pat.resistance_cmh2o_s_per_l = respiratory_resistance_cmh2o_s_per_l(pat.params.preset);
+    pat.compliance_ml_per_cmh2o = respiratory_compliance_ml_per_cmh2o(preset, pat.params.tidal_volume_ml);
+    const double tau = pat.resistance_cmh2o_s_per_l * pat.compliance_ml_per_cmh2o * 1e-3;
+    pat.cycle = solve_muscle_cycle(period, inspiratory_fraction(pat.params.ie_ratio), tau);
+    pat.pmus_peak_cmh2o =
+        pat.params.tidal_volume_ml / (pat.compliance_ml_per_cmh2o * (pat.cycle.x_max - pat.cycle.x_min));
     pat.sigh_swing_cmh2o = 0;
+    pat.sigh_cycle = pat.cycle;
     if (pat.sigh_breath >= 0) {
       if (pat.sigh_volume_ml > reach) return fail(reach_error("sigh volume_ml", pat.sigh_volume_ml));
       pat.sigh_swing_cmh2o = spontaneous_swing(pat.sigh_volume_ml);
+      // The sigh is a breath of its own depth: C (so tau) at its volume, as steady breathing at that depth.
+      const double c_sigh = respiratory_compliance_ml_per_cmh2o(preset, pat.sigh_volume_ml);
+      pat.sigh_cycle = solve_muscle_cycle(period, inspiratory_fraction(pat.params.ie_ratio),
+                                          pat.resistance_cmh2o_s_per_l * c_sigh * 1e-3);
     }
     pat.vent_start_cmh2o = pat.vent_peak_cmh2o = low;
   } else {
@@ -114,13 +128,14 @@ PatternPoint evaluate(const Pattern& pat, double phase) {
   if (pat.apnoea) return {low, low, curve.volume_ml(low)};
 
   if (pat.params.mode == Mode::Spontaneous) {
-    const bool sigh = static_cast<std::int64_t>(breath) == pat.sigh_breath;
-    const double swing = sigh ? pat.sigh_swing_cmh2o : pat.swing_cmh2o;
-    // Raised cosine: 0 -> 1 over inspiration, 1 -> 0 over expiration, flat at both ends.
-    const double s = u < rho ? 0.5 * (1.0 - std::cos(std::numbers::pi * u / rho))
-                             : 0.5 * (1.0 + std::cos(std::numbers::pi * (u - rho) / (1.0 - rho)));
-    const double p = low + swing * s;
-    return {p, p, curve.volume_ml(p)};
+    // The equation of motion's breath, scaled to the tidal volume: FRC at u = 0 (and 1), FRC + V_T at u = rho. A
+    // sigh is a breath solved at its own depth (flow is zero at both ends of every breath, so it joins its
+    // neighbours smoothly).
+    const bool sigh = pat.sigh_breath >= 0 && static_cast<std::int64_t>(breath) == pat.sigh_breath;
+    const double v_t = sigh ? pat.sigh_volume_ml : pat.params.tidal_volume_ml;
+    const double v = pat.v_frc_ml + v_t * volume_fraction(sigh ? pat.sigh_cycle : pat.cycle, u);
+    const double p = curve.pressure_cmh2o(v);
+    return {p, p, v};
   }
   // Ventilator: square applied pressure, exponential approach of the alveolar pressure (time constant tau).
   const double period = 60.0 / pat.params.rate_bpm;

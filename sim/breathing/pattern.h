@@ -1,9 +1,12 @@
 /// @file pattern.h
-/// @brief One steady breathing pattern: the user's parameters, the pressure swing solved from them, and the
-///        pressure and volume at any point of the breathing cycle.
+/// @brief One steady breathing pattern: the user's parameters, what is solved from them (the muscle pressure's
+///        cycle, or the ventilator's pressures), and the pressure and volume at any point of the breathing cycle.
 ///
 /// The cycle is measured by a phase: breath k is phase [k, k + 1); inspiration takes the first
-/// ie / (1 + ie) of it. The driver (driver.h) turns time into phase; a pattern turns phase into pressure.
+/// ie / (1 + ie) of it. The driver (driver.h) turns time into phase; a pattern turns phase into volume and pressure.
+/// Spontaneous breathing follows the equation of motion (equation_of_motion.h): the volume starts each breath at
+/// the FRC, reaches FRC + V_T at the end of inspiration and is periodic; the pressure is the preset's curve at that
+/// volume, P(V), so the curve still sets how much pressure a breath takes.
 #pragma once
 
 #include "config/base/result.h"
@@ -11,12 +14,13 @@
 #include <cstdint>
 #include <string>
 
+#include "sim/breathing/equation_of_motion.h"
 #include "sim/breathing/pv_curve.h"
 
 namespace lungar::sim {
 
 enum class Mode {
-  Spontaneous,  ///< raised-cosine transpulmonary pressure swing from the FRC (the paper's driver)
+  Spontaneous,  ///< muscle pressure through the single-compartment equation of motion (equation_of_motion.h)
   Ventilator,   ///< square applied pressure; alveolar pressure follows it with a first-order lag
 };
 
@@ -47,11 +51,17 @@ struct Pattern {
 
   // Solved by solve():
   double p_low_cmh2o = 0;        ///< end-expiratory (spontaneous) or low applied (ventilator) pressure
-  double swing_cmh2o = 0;        ///< pressure swing for the tidal volume
+  double swing_cmh2o = 0;        ///< transpulmonary pressure swing for the tidal volume (ventilator: the drive)
   double sigh_swing_cmh2o = 0;   ///< the same for the sigh
   double vent_start_cmh2o = 0;   ///< ventilator: alveolar pressure at the start and end of inspiration
   double vent_peak_cmh2o = 0;
   double v_frc_ml = 0;           ///< the preset's FRC
+  // Spontaneous only, solved by solve():
+  double resistance_cmh2o_s_per_l = 0;  ///< the preset's R
+  double compliance_ml_per_cmh2o = 0;   ///< the respiratory system's C at this tidal volume (from the curve)
+  double pmus_peak_cmh2o = 0;           ///< the muscle pressure's peak for the tidal volume
+  MuscleCycle cycle;                    ///< the equation of motion's periodic breath, tau = R C
+  MuscleCycle sigh_cycle;               ///< the same for the sigh (C at the sigh's volume)
 };
 
 /// Solves the swing(s) of `pattern` in place; returns empty, or why the targets cannot be met.
@@ -59,7 +69,7 @@ Status solve(Pattern& pattern);
 
 /// Pressures and volume of a pattern at one phase.
 struct PatternPoint {
-  double p_cmh2o;          ///< transpulmonary (alveolar) pressure that sets the volume
+  double p_cmh2o;          ///< transpulmonary (alveolar) pressure: the preset's curve at v_ml
   double p_applied_cmh2o;  ///< the driving pressure: equals p for spontaneous breathing, square on a ventilator
   double v_ml;
 };

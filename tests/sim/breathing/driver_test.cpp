@@ -223,9 +223,10 @@ TEST(BreathingDriver, ABreathHoldFreezesTheVolume) {
   // 1.667 s is the end of inspiration at 12/min, I:E 1:2: an inspiratory hold.
   ASSERT_TRUE(d.apply(Event::of(60.0 / 36.0, EventKind::HoldStart)).ok());
   ASSERT_TRUE(d.apply(Event::of(12.0, EventKind::HoldEnd)).ok());
-  // The cycle stops within kHoldRampS (0.2 s) without a step in flow, so the volume stays near the peak.
+  // The cycle stops within kHoldRampS (0.2 s) without a step in flow, so the volume stays near the peak: the
+  // phase runs on for 0.1 s of breathing, in which expiration (braked, but under way) gives back about 1 % of V_T.
   const double v = d.at(3.0).v_ml;
-  EXPECT_NEAR(v, pv_preset(Preset::Normal).frc_ml() + 500.0, 5.0);
+  EXPECT_NEAR(v, pv_preset(Preset::Normal).frc_ml() + 500.0, 10.0);
   for (double t = 2.0; t < 12.0; t += 0.5) {
     EXPECT_NEAR(d.at(t).v_ml, v, 1e-9) << t;
     EXPECT_EQ(d.at(t).phase, BreathPhase::Hold);

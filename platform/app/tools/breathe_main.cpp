@@ -1,6 +1,8 @@
 /// @file breathe_main.cpp
 /// @brief lungar-breathe: runs the breathing driver (and a scenario) without graphics and prints CSV for plots:
-///        the time series (t, P, V, dV, phase, orientation), or the three pressure-volume curves, or the presets.
+///        the time series (t, P, V, dV, phase, orientation), or the three pressure-volume curves, or the presets;
+///        or, as one JSON object, the exhale path of steady breathing against 4-D CT.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,7 +14,9 @@
 #include "platform/app/settings_load.h"
 #include "lungar/version.h"
 #include "platform/app/scenario_adapter.h"
+#include "sim/breathing/exhale_path.h"
 #include "sim/breathing/orientation.h"
+#include "sim/breathing/pattern.h"
 #include "sim/breathing/pv_curve.h"
 
 namespace {
@@ -67,6 +71,41 @@ void print_series(const sim::BreathingScript& script, double seconds, double dt)
   }
 }
 
+/// One JSON object on stdout: the parameters, the exhale path measured on the driver and 4-D CT's, the measured
+/// tidal volume, and the equation of motion's R, C, tau and muscle-pressure peak.
+int print_exhale_path(const sim::BreathingParams& params) {
+  auto measured = sim::measure_exhale_path(params);
+  if (!measured) return fail_with(measured.error());
+  sim::Pattern pattern;
+  pattern.params = params;
+  if (Status e = sim::solve(pattern); !e) return fail_with(e.error());
+  auto list = [](const std::array<double, 4>& a, const char* format) {
+    std::string out = "[";
+    char buf[32];
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      std::snprintf(buf, sizeof buf, format, a[i]);
+      out += (i ? "," : "") + std::string(buf);
+    }
+    return out + "]";
+  };
+  const bool spontaneous = params.mode == sim::Mode::Spontaneous;
+  std::printf(
+      "{\"rate_bpm\":%g,\"ie_ratio\":%g,\"tidal_volume_ml\":%g,\"preset\":\"%s\",\"mode\":\"%s\","
+      "\"exhale_path\":%s,\"exhale_path_4dct\":%s,\"tidal_volume_ml_measured\":%.3f",
+      params.rate_bpm, params.ie_ratio, params.tidal_volume_ml, std::string(sim::to_string(params.preset)).c_str(),
+      spontaneous ? "spontaneous" : "ventilator", list(measured->path, "%.4f").c_str(),
+      list(sim::kExhalePath4dct, "%.2f").c_str(), measured->tidal_volume_ml);
+  if (spontaneous) {
+    std::printf(
+        ",\"resistance_cmh2o_s_per_l\":%.3f,\"compliance_ml_per_cmh2o\":%.2f,\"tau_s\":%.4f,"
+        "\"pmus_peak_cmh2o\":%.3f",
+        pattern.resistance_cmh2o_s_per_l, pattern.compliance_ml_per_cmh2o, pattern.cycle.tau_s,
+        pattern.pmus_peak_cmh2o);
+  }
+  std::printf("}\n");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -74,13 +113,16 @@ int main(int argc, char** argv) {
       "lungar-breathe: runs the breathing driver without graphics and prints CSV on stdout.\n"
       "By default the time series t_s, p_cmh2o, p_applied_cmh2o, v_ml, v_frc_ml, dv_ml, phase, breath, the patient\n"
       "orientation (qw..qz: lung frame in the world; tilt_deg: 0 upright, 90 lying) and gravity in the lung frame\n"
-      "(gx, gy, gz). --curves prints the three pressure-volume curves; --presets their figures."};
+      "(gx, gy, gz). --curves prints the three pressure-volume curves; --presets their figures.\n"
+      "--exhale-path prints one JSON object: the exhale path of steady breathing with the starting parameters (the\n"
+      "share of the end-inhale -> half-a-breath-later volume path covered at 10, 20, 30, 40 % of the breath) beside\n"
+      "4-D CT's, the measured tidal volume and the equation of motion's R, C, tau and muscle-pressure peak."};
   app.set_version_flag("--version", std::string("lungar-breathe ") + LUNGAR_VERSION);
   std::string config_path, scenario_path;
   std::optional<std::string> preset;
   std::optional<double> rate, tidal, ie, seconds;
   double dt = 0.01;
-  bool curves = false, presets = false;
+  bool curves = false, presets = false, exhale_path = false;
   app.add_option("--config", config_path, "settings TOML: its [breathing] (and its scenario, if set)");
   app.add_option("--scenario", scenario_path, "scenario TOML (config/scenarios/*.toml); overrides the config's");
   app.add_option("--preset", preset, "normal | emphysema | fibrosis (with a scenario: the default of its [start])");
@@ -92,6 +134,8 @@ int main(int argc, char** argv) {
   app.add_option("--dt", dt, "time step of the series, s (default 0.01)")->check(CLI::Range(1e-4, 10.0));
   app.add_flag("--curves", curves, "print the three pressure-volume curves, V(P) from -5 to 40 cmH2O");
   app.add_flag("--presets", presets, "print each preset's parameters, FRC, TLC, compliance and pressure swing");
+  app.add_flag("--exhale-path", exhale_path,
+               "print the exhale path at 10/20/30/40 % of the breath (and 4-D CT's) as one JSON object");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -126,6 +170,7 @@ int main(int argc, char** argv) {
   }
   auto script = platform::load_breathing_script(b, seconds.value_or(60.0));
   if (!script) return fail_with(script.error());
+  if (exhale_path) return print_exhale_path(script->start);
   print_series(*script, seconds.value_or(script->duration_s), dt);
   return 0;
 }

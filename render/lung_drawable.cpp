@@ -24,6 +24,7 @@ std::string validate(const sim::BakedAsset& a, const DrawableOptions& o) {
   if (n == 0) return "baked asset: field 'lung_of_vertex': expected at least one vertex, got 0";
   if (a.positions.size() != 3 * n) return size_error("positions", 3 * n, a.positions.size());
   if (a.normals.size() != 3 * n) return size_error("normals", 3 * n, a.normals.size());
+  if (a.directions.size() != 3 * n) return size_error("directions", 3 * n, a.directions.size());
   if (!a.areas.empty() && a.areas.size() != n) return size_error("areas", n, a.areas.size());
   if (o.basis == Basis::SphericalHarmonics) {
     if (a.bands == 0 || a.bands > 10) {
@@ -130,6 +131,7 @@ Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const Dr
   }
   upload(d.positions_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_STATIC_DRAW);
   upload(d.normals_, GL_ARRAY_BUFFER, asset.normals.data(), asset.normals.size() * 4, GL_STATIC_DRAW);
+  upload(d.directions_, GL_ARRAY_BUFFER, asset.directions.data(), asset.directions.size() * 4, GL_STATIC_DRAW);
   // The deformed copy starts as the rest shape: drawing it before any deformation shows the rest lungs.
   upload(d.deformed_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_DYNAMIC_COPY);
   if (d.index_count_ > 0) {
@@ -189,13 +191,17 @@ Status LungDrawable::upload_coefficient_texture(std::vector<float> padded) {
   return ok();
 }
 
-/// rest_vao: rest positions, normals and (attribute storage) coefficients, for the deforming programs.
+/// rest_vao: rest positions, normals, directions of motion and (attribute storage) coefficients, for the deforming
+/// programs.
 /// deformed_vao: deformed positions and the normals, for drawing without the shader deformation; rest_plain_vao:
 /// the same for the rest shape (no coefficient arrays enabled, so none are fetched).
 void LungDrawable::build_vertex_arrays() {
   rest_vao_ = gl::VertexArray::create();
   glBindVertexArray(rest_vao_.id());
   position_and_normal_attributes(positions_, normals_);
+  glBindBuffer(GL_ARRAY_BUFFER, directions_.id());
+  glEnableVertexAttribArray(kDirectionAttribute);
+  glVertexAttribPointer(kDirectionAttribute, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
   if (!uses_texture_) {
     glBindBuffer(GL_ARRAY_BUFFER, coeffs_.id());
     const GLsizei value_bytes = half_float_ ? 2 : 4;

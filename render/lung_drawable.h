@@ -40,6 +40,9 @@ struct LungRange {
 
 /// Coefficients attributes are limited by GL_MAX_VERTEX_ATTRIBS (16 in GLES 3): 9 vec4 plus position and normal.
 inline constexpr std::uint32_t kMaxAttributeCoefficients = 36;
+/// The attribute of each vertex's direction of motion e_I (render/shaders/deform.vert's a_direction), after the
+/// nine coefficient attributes 2 .. 10.
+inline constexpr unsigned kDirectionAttribute = 11;
 
 class LungDrawable {
  public:
@@ -80,7 +83,7 @@ class LungDrawable {
   bool half_float_ = false;
   Basis basis_ = Basis::SphericalHarmonics;
   std::vector<LungRange> lungs_;
-  gl::Buffer positions_, normals_, coeffs_, indices_, deformed_;
+  gl::Buffer positions_, normals_, directions_, coeffs_, indices_, deformed_;
   gl::Texture coeff_texture_;
   GLint coeff_texture_width_ = 0;
   gl::VertexArray rest_vao_, rest_plain_vao_, deformed_vao_;

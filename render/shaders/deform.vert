@@ -1,7 +1,9 @@
 // deform.vert — the paper's stage 3 (eq. 7) per vertex, then Lambert + ambient lighting for point or mesh drawing.
 //
 //   D_I = sum_lm T^I_lm f_lm          (f already multiplied by the volume change dV: D in mm)
-//   p'_I = p_I + D_I n_I
+//   p'_I = p_I + D_I e_I              (e_I: the vertex's baked direction of motion; its normal n_I in the paper's
+//                                      model, the principal direction of its vector displacement in the sliding
+//                                      model, docs/design.md "Vector displacement")
 //
 // The host prepends `#version 300 es` and these defines (render/shader_program.cpp):
 //   DEFORM          1: evaluate eq. (7); 0: draw a_position as given (rest shape, CPU-deformed or captured positions)
@@ -17,6 +19,7 @@ layout(location = 0) in vec3 a_position;  // rest position x_I, mm, lung frame
 layout(location = 1) in vec3 a_normal;    // outward unit normal n_I
 
 #if DEFORM
+layout(location = 11) in vec3 a_direction;  // e_I, unit (render/lung_drawable.h, kDirectionAttribute)
 uniform vec4 u_force[COEFF_VEC4];  // dV * f_lm of this vertex's lung, mm per unit of T
 #if COEFF_TEXTURE
 uniform highp sampler2D u_coeff;   // texel (v * COEFF_VEC4 + k) holds T^v_{4k..4k+3}
@@ -103,7 +106,11 @@ float displacement_eq7() {
 }
 
 void main() {
-  vec3 p = a_position + displacement_eq7() * a_normal;  // p' = p + D n
+#if DEFORM
+  vec3 p = a_position + displacement_eq7() * a_direction;  // p' = p + D e
+#else
+  vec3 p = a_position;
+#endif
   v_position = p;
 
   // The head light sits at the eye; the rest normal stands for the deformed one (displacements are small).

@@ -174,7 +174,7 @@ std::string validate_asset(const BakedAsset& a) {
   const std::size_t n = a.lung_of_vertex.size(), c = a.coefficients();
   if (a.bands < 1 || a.bands > 8) return "bands: expected 1 to 8, found " + std::to_string(a.bands);
   if (a.lungs.empty() || a.lungs.size() > kMaxLungs) return "lung count: expected 1 to 16";
-  if (a.positions.size() != 3 * n || a.normals.size() != 3 * n || a.areas.size() != n ||
+  if (a.positions.size() != 3 * n || a.normals.size() != 3 * n || a.directions.size() != 3 * n || a.areas.size() != n ||
       a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n)
     return "per-vertex arrays: sizes disagree with the vertex count " + std::to_string(n);
   if (a.triangles.size() % 3 != 0) return "triangles: expected 3 indices a triangle";
@@ -209,7 +209,8 @@ std::string validate_asset(const BakedAsset& a) {
     if (!(lung.volume_share > 0 && lung.volume_share <= 1)) return who + ": volume_share: expected (0, 1]";
   }
   if (next_vertex != n || next_index != a.triangles.size()) return "lungs: ranges do not cover every vertex and triangle";
-  if (!all_finite(a.positions) || !all_finite(a.normals) || !all_finite(a.areas) || !all_finite(a.sh_coeffs) ||
+  if (!all_finite(a.positions) || !all_finite(a.normals) || !all_finite(a.directions) || !all_finite(a.areas) ||
+      !all_finite(a.sh_coeffs) ||
       !all_finite(a.linear_coeffs))
     return "per-vertex arrays: expected finite numbers";
   if (a.has_transfer_rows()) {
@@ -242,6 +243,9 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
            static_cast<std::uint32_t>(a.lungs.size()), static_cast<std::uint64_t>(a.transfer_vals.size()), a.p0,
            a.gamma_per_mm, a.decay_length_mm, a.transfer_epsilon);
   write_section(out, "HEAD", head.data);
+  Bytes model;
+  model.put(static_cast<std::uint32_t>(a.motion_model));
+  write_section(out, "MODL", model.data);
   Bytes lungs;
   for (const BakedLung& l : a.lungs) {
     const auto name_length = static_cast<std::uint32_t>(std::min<std::size_t>(l.name.size(), kMaxNameLength));
@@ -258,6 +262,7 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   write_section(out, "LUNG", lungs.data);
   write_section(out, "POSI", a.positions);
   write_section(out, "NORM", a.normals);
+  write_section(out, "MDIR", a.directions);
   write_section(out, "AREA", a.areas);
   write_section(out, "LOFV", a.lung_of_vertex);
   write_section(out, "SHCO", a.sh_coeffs);
@@ -273,6 +278,7 @@ namespace {
 
 /// The counts the header declares, checked against each other and the file's size before anything is allocated.
 struct HeadCounts {
+  std::uint32_t version = 0;
   std::uint32_t vertices = 0, triangles = 0, lungs = 0;
   std::uint64_t nnz = 0;
 };
@@ -285,13 +291,14 @@ Result<HeadCounts> read_head(Reader& r, const std::string& path, BakedAsset& a) 
   }
   std::uint32_t version = 0;
   if (!r.raw(&version, 4, "version")) return fail(r.error());
-  if (version != kAssetVersion) {
-    return fail(path + ": version: expected " + std::to_string(kAssetVersion) + ", found " + std::to_string(version) +
-                " (re-bake with this lungar-bake)");
+  if (version != 1 && version != kAssetVersion) {
+    return fail(path + ": version: expected 1 to " + std::to_string(kAssetVersion) + ", found " +
+                std::to_string(version) + " (re-bake with this lungar-bake)");
   }
   std::string payload;
   if (!r.section("HEAD", kHeadSize, payload)) return fail(r.error());
   HeadCounts h;
+  h.version = version;
   Cursor cur{payload};
   cur.get_all(a.bands, h.vertices, h.triangles, h.lungs, h.nnz, a.p0, a.gamma_per_mm, a.decay_length_mm,
               a.transfer_epsilon);
@@ -310,6 +317,14 @@ Result<HeadCounts> read_head(Reader& r, const std::string& path, BakedAsset& a) 
   }
   if (!std::isfinite(a.p0) || !std::isfinite(a.gamma_per_mm) || !(a.decay_length_mm > 0)) {
     return fail(path + ": header fields 'p0', 'gamma', 'decay_length': expected finite numbers, l > 0");
+  }
+  if (version >= 2) {
+    if (!r.section("MODL", 4, payload)) return fail(r.error());
+    std::uint32_t model = 0;
+    std::memcpy(&model, payload.data(), 4);
+    if (model > static_cast<std::uint32_t>(MotionModel::sliding))
+      return fail(path + ": section 'MODL': motion model " + std::to_string(model) + "; expected 0 (paper) or 1 (sliding)");
+    a.motion_model = static_cast<MotionModel>(model);
   }
   return h;
 }
@@ -380,13 +395,14 @@ Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& 
     return true;
   };
   if (!read_into("POSI", 12 * n, a.positions) || !read_into("NORM", 12 * n, a.normals) ||
-      !read_into("AREA", 4 * n, a.areas) || !read_into("LOFV", n, a.lung_of_vertex) ||
+      (h.version >= 2 && !read_into("MDIR", 12 * n, a.directions)) || !read_into("AREA", 4 * n, a.areas) || !read_into("LOFV", n, a.lung_of_vertex) ||
       !read_into("SHCO", 4 * n * c, a.sh_coeffs) || !read_into("LINC", 16 * n, a.linear_coeffs) ||
       !read_into("TRIS", 12ull * h.triangles, a.triangles) ||
       !read_into("TROW", rows ? 4 * (n + 1) : 0, a.transfer_row_ptr) || !read_into("TCOL", 4 * h.nnz, a.transfer_cols) ||
       !read_into("TVAL", 4 * h.nnz, a.transfer_vals)) {
     return fail(r.error());
   }
+  if (h.version < 2) a.directions = a.normals;  // version 1: the paper's model, every vertex along its normal
   return ok();
 }
 

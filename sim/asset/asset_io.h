@@ -3,8 +3,10 @@
 ///
 /// Layout (little-endian): magic "LUNGBAKE", u32 version, then sections, each a 4-character tag, a u64
 /// payload length, the payload and the payload's CRC-32. Sections, in order: HEAD (bands, vertex, triangle and
-/// lung counts, transfer nnz, p0, gamma, l, epsilon), LUNG (per-lung records), POSI, NORM, AREA, LOFV, SHCO,
-/// LINC, TRIS, TROW, TCOL, TVAL (the last three empty when the asset holds no explicit transfer rows).
+/// lung counts, transfer nnz, p0, gamma, l, epsilon), MODL (u32 motion model: 0 paper, 1 sliding), LUNG (per-lung
+/// records), POSI, NORM, MDIR (each vertex's direction of motion), AREA, LOFV, SHCO, LINC, TRIS, TROW, TCOL, TVAL
+/// (the last three empty when the asset holds no explicit transfer rows). Version 1 files (no MODL, no MDIR)
+/// still load, as the paper's model with directions equal to the normals.
 #pragma once
 
 #include <string>
@@ -15,7 +17,7 @@
 namespace lungar::sim {
 
 inline constexpr char kAssetMagic[8] = {'L', 'U', 'N', 'G', 'B', 'A', 'K', 'E'};
-inline constexpr std::uint32_t kAssetVersion = 1;
+inline constexpr std::uint32_t kAssetVersion = 2;
 
 /// Writes `asset` to a temporary file beside `path` and renames it into place: `path` is either the whole new
 /// asset or untouched. The error names the file.

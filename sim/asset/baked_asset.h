@@ -4,7 +4,9 @@
 /// All lungs share one vertex array; each lung owns a contiguous range of it. Per vertex the asset holds the
 /// rest position, the outward unit normal, the lung it belongs to, and the SH coefficients of its transfer-matrix
 /// row, T^I_lm = sum_J T(I,J) A_J Y_lm(u_J) (docs/design.md, "SH deformation (eq. 7)"), in mm per (unit force
-/// SH) — the vertex shader computes D = dV * sum_lm T^I_lm f_lm and moves the vertex along its normal.
+/// SH), and the direction the vertex moves along — the vertex shader computes D = dV * sum_lm T^I_lm f_lm and
+/// moves the vertex by D along that direction: its normal in the paper's model, the principal direction of its
+/// baked vector displacement in the sliding model (sim/motion/motion_model.h).
 ///
 /// Vertices are stored in level-of-detail order: every prefix of a lung's range is an even subsample of its
 /// surface (render/ draws prefixes).
@@ -14,6 +16,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "sim/motion/motion_model.h"
 
 namespace lungar::sim {
 
@@ -36,7 +40,7 @@ struct BakedLung {
   /// force is f(g) * 1000/V(g), so that the displacement is in mm per mL of volume change.
   std::vector<float> force_const;                 ///< f0, L^2 values
   std::array<std::vector<float>, 3> force_grad;   ///< f_x, f_y, f_z, L^2 values each
-  /// v0 and v are the first-order swept volumes sum_I A_I D_I scaled by one factor per lung (about
+  /// v0 and v are the first-order swept volumes sum_I A_I (e_I . n_I) D_I scaled by one factor per lung (about
   /// 1.03) so that, upright, dV = 500 mL changes the enclosed volume by exactly 500 mL (secant at the tidal
   /// volume, which absorbs the surface-curvature term the first-order sum leaves out).
   double volume_const = 0;                        ///< v0
@@ -58,8 +62,12 @@ struct BakedAsset {
   double p0 = 10.0;                      ///< force model p = p0 + gamma g.(x - c)
   double gamma_per_mm = 0.025;
   double decay_length_mm = 10.0;         ///< tether length l in the stiffness
+  MotionModel motion_model = MotionModel::paper;  ///< how T was baked (sim/motion/motion_model.h)
   std::vector<float> positions;          ///< 3 per vertex, mm, lung frame (LPS)
   std::vector<float> normals;            ///< 3 per vertex, outward unit
+  /// 3 per vertex, unit: the direction of the vertex's displacement, p' = p + D e (the normal in the paper's
+  /// model). The first-order swept volume of a displacement D is sum_I A_I D_I (e_I . n_I).
+  std::vector<float> directions;
   std::vector<float> areas;              ///< 1 per vertex, mm^2 (a third of its triangles)
   std::vector<std::uint8_t> lung_of_vertex;  ///< index into lungs
   std::vector<float> sh_coeffs;          ///< L^2 per vertex: T^I_lm

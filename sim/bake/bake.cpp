@@ -14,13 +14,13 @@
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake_evaluate.h"
 #include "sim/bake/lung_bake.h"
+#include "sim/bake/motion_fields.h"
 #include "sim/force/force_sh.h"
 #include "sim/force/gravity.h"
 #include "sim/mesh/lod_order.h"
 #include "sim/mesh/procedural_lungs.h"
 #include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
-#include "sim/transfer/stiffness.h"
 
 namespace lungar::sim {
 namespace {
@@ -69,22 +69,16 @@ Status bake_one(LungWork& w, const BakeOptions& opt, const Workers& workers, std
   check_cancel(workers);
 
   t0 = Clock::now();
-  const Eigen::VectorXd youngs = youngs_modulus(w.mesh);
-  w.k = stiffness_matrix(w.mesh, youngs, w.geometry.areas, opt.decay_length_mm);
+  w.k = model_stiffness(w, opt.model, opt);
   if (progress) progress("factorise", 0.0);
   w.solver = std::make_unique<TransferSolver>(w.k);
   if (!w.solver->error().empty()) return fail(who + ": " + w.solver->error());
   const double factor_s = seconds_since(t0);
   check_cancel(workers);
 
-  // L^2 + 4 solves: T_lm = K^-1 (A o Y_lm) and tau = K^-1 (A o [1, x - c]).
   auto t1 = Clock::now();
-  Eigen::MatrixXd rhs(n, c_solved + 4);
-  rhs.leftCols(c_solved) = w.areas.asDiagonal() * w.y;
-  rhs.col(c_solved) = w.areas;
-  rhs.rightCols(3) = w.areas.asDiagonal() * w.offsets;
   if (progress) progress("solve", 0.0);
-  w.x = w.solver->solve(rhs, workers);
+  solve_motion_fields(w, opt.model, opt, workers);
   const double solve_s = seconds_since(t1);
 
   // Force bases: the pressure's SH projections f0 (of 1) and f_k (of (x - c)_k); swept volumes v0 and v_k.
@@ -94,11 +88,13 @@ Status bake_one(LungWork& w, const BakeOptions& opt, const Workers& workers, std
   moments.col(0) = w.y.leftCols(c).transpose() * w.areas;
   moments.rightCols(3) = w.y.leftCols(c).transpose() * w.areas.asDiagonal() * w.offsets;
   w.force_basis = gram.solve(moments);
-  w.volume_basis = w.x.rightCols(4).transpose() * w.areas;  // sum_I A_I tau_I, mm^3 per unit pressure
+  w.volume_basis = w.x.rightCols(4).transpose() * w.volume_weights;  // sum_I A_I (e_I . n_I) tau_I, mm^3
 
   auto t2 = Clock::now();
   if (opt.transfer_rows)
-    append_transfer_rows(w.k, w.areas, w.x.col(c_solved), opt.transfer_epsilon, workers, offset, w.rows, [&](std::size_t done) {
+    append_transfer_rows(w.k, w.areas, w.x.col(c_solved), opt.transfer_epsilon, workers, offset, w.rows,
+                         opt.model == MotionModel::sliding ? RowProjection{&w.directions, &w.drive} : RowProjection{},
+                         [&](std::size_t done) {
       if (progress) progress("transfer rows", static_cast<double>(done) / static_cast<double>(n));
     });
   std::lock_guard lock(timing_mutex);
@@ -148,6 +144,7 @@ void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::si
     for (int k = 0; k < 3; ++k) {
       a.positions.push_back(static_cast<float>(w.mesh.positions[i][k]));
       a.normals.push_back(static_cast<float>(w.geometry.normals[i][k]));
+      a.directions.push_back(static_cast<float>(w.directions(i, k)));
     }
     a.areas.push_back(static_cast<float>(w.geometry.areas[i]));
     a.lung_of_vertex.push_back(static_cast<std::uint8_t>(lung_index));
@@ -172,14 +169,14 @@ void fill_paper_forces(BakedAsset& a) {
   }
 }
 
-/// The first-order swept volume sum_I A_I D_I undercounts the enclosed volume change at tidal volume by the
+/// The first-order swept volume sum_I A_I (e_I . n_I) D_I undercounts the enclosed volume change at tidal volume by the
 /// surface's curvature term (about D/R, some 3 % on adult lungs at 500 mL). Returns the factor for v0 and v
 /// that makes the upright displacement at the paper's tidal volume change this lung's enclosed volume by
 /// exactly its share of 500 mL: the normalisation is the secant at V_T rather than the tangent at 0.
 double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share) {
   const Eigen::Index c = w.c_solved;
   const Eigen::VectorXd d = opt.p0 * w.x.col(c) - opt.gamma_per_mm * w.x.col(c + 3);  // g = (0, 0, -1)
-  const double linear = w.areas.dot(d);
+  const double linear = w.volume_weights.dot(d);
   const double target = kTidalVolumeMl * 1000.0 * share;
   if (!(linear > 0)) return 1.0;
   TriMesh moved = w.mesh;
@@ -187,7 +184,8 @@ double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share
   double t = target / linear;
   for (int iteration = 0; iteration < 6; ++iteration) {
     for (std::size_t i = 0; i < moved.positions.size(); ++i)
-      moved.positions[i] = w.mesh.positions[i] + t * d[static_cast<Eigen::Index>(i)] * w.geometry.normals[i];
+      moved.positions[i] = w.mesh.positions[i] +
+                           t * d[static_cast<Eigen::Index>(i)] * w.directions.row(static_cast<Eigen::Index>(i)).transpose();
     const double change = enclosed_volume(moved) - rest;
     if (!(change > 0)) return 1.0;
     t *= target / change;
@@ -202,6 +200,7 @@ double assemble_asset(const std::vector<std::unique_ptr<LungWork>>& work, const 
   a.p0 = opt.p0;
   a.gamma_per_mm = opt.gamma_per_mm;
   a.decay_length_mm = opt.decay_length_mm;
+  a.motion_model = opt.model;
   double total_volume = 0;
   for (const auto& w : work) total_volume += w->rest_volume_mm3;
   for (std::size_t l = 0; l < work.size(); ++l) {
@@ -237,6 +236,7 @@ void fill_report(const std::vector<std::unique_ptr<LungWork>>& work, const Baked
       opt.transfer_rows ? static_cast<double>(a.transfer_vals.size()) / std::max<double>(1, a.vertex_count()) : 0;
   report.rest_volume_ml = total_volume / 1000.0;
   report.map = opt.sphere.map;
+  report.model = opt.model;
   MapFigures all{opt.sphere.map, 0, 0, 0};
   for (const auto& w : work) {
     report.folded_triangles += w->sphere.folded;
@@ -280,6 +280,13 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
   std::vector<std::unique_ptr<LungWork>> work;
   std::vector<std::uint32_t> offsets;
   std::uint32_t offset = 0;
+  double x_sum = 0;
+  std::size_t x_count = 0;
+  for (const LungMesh& l : lungs)
+    for (const Eigen::Vector3d& p : l.mesh.positions) {
+      x_sum += p.x();
+      ++x_count;
+    }
   for (LungMesh& l : lungs) {
     auto w = std::make_unique<LungWork>();
     w->name = l.name;
@@ -287,6 +294,7 @@ Result<BakeOutput> bake_lungs(std::vector<LungMesh> lungs, const BakeOptions& op
     w->mesh = std::move(l.mesh);
     w->has_centre = l.has_centre;
     w->centre = l.centre;
+    w->midline_x = x_count > 0 ? x_sum / static_cast<double>(x_count) : 0.0;
     offsets.push_back(offset);
     offset += static_cast<std::uint32_t>(w->mesh.positions.size());
     work.push_back(std::move(w));

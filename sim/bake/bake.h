@@ -13,6 +13,9 @@
 #include "sim/asset/baked_asset.h"
 #include "config/base/result.h"
 #include "sim/mesh/spherical_map.h"
+#include "sim/motion/motion_figures.h"
+#include "sim/motion/motion_model.h"
+#include "sim/motion/surface_regions.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/transfer/transfer_rows.h"
 
@@ -21,7 +24,8 @@ namespace lungar::sim {
 /// Bumped when a bake of the same inputs gives different output in the same file format, so that caches keyed by
 /// it (the demo's, the benchmark's) bake again. 2: points in progressive Poisson-disk order (sim/mesh/lod_order.cpp).
 /// 3: the SH fit on a one-to-one (conformal) spherical map instead of the radial one (sim/mesh/spherical_map.h).
-inline constexpr std::uint32_t kBakeRevision = 3;
+/// 4: the sliding motion model by default (sim/motion/motion_model.h).
+inline constexpr std::uint32_t kBakeRevision = 4;
 
 /// The tidal volume at which the volume normalisation is calibrated and the report measures (the paper's).
 inline constexpr double kTidalVolumeMl = 500.0;
@@ -33,6 +37,9 @@ inline constexpr std::uint32_t kDefaultBands = 6;
 
 struct BakeOptions {
   std::uint32_t bands = kDefaultBands;  ///< L, 1 to 8
+  MotionModel model = MotionModel::sliding;  ///< sliding, or the paper's normal-only model
+  SlidingFaces faces = default_sliding_faces();
+  RegionRules regions;
   int threads = 0;                   ///< 0: all hardware threads
   double p0 = 10.0;                  ///< force model p = p0 + gamma g.(x - c)
   double gamma_per_mm = 0.025;
@@ -115,6 +122,13 @@ struct BakeReport {
   std::vector<std::string> lung_names;
   std::vector<LungReport> per_lung;
   std::vector<MapFigures> maps;        ///< per map, all lungs: the asset's map first, then the compared ones
+  /// The motion at kTidalVolumeMl (sim/motion/motion_figures.h): the asset's model through its float asset,
+  /// supine, prone and upright; and the other model, exact, on the same lungs, for the side-by-side comparison.
+  MotionModel model = MotionModel::sliding;
+  double direction_rms_rel_error = 0;  ///< sliding: |u - e (e . u)| / |u| of the exact vector u (rank-one part)
+  MotionFigures motion_supine, motion_prone, motion_upright;
+  MotionModel compared_model = MotionModel::paper;
+  MotionFigures compared_supine, compared_prone, compared_upright;
 };
 
 struct BakeOutput {

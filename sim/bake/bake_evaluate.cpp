@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/bake/motion_fields.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
@@ -86,11 +87,24 @@ ExactEq1 exact_eq1(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   return e;
 }
 
+/// The sliding model's exact vector displacement of local vertex i of a lung for gravity g, mm per mL.
+Eigen::Vector3d exact_vector(const LungWork& w, const BakeOptions& opt, Eigen::Index i, const Eigen::Vector3d& g,
+                             double scale) {
+  Eigen::Vector3d u;
+  for (int c = 0; c < 3; ++c) {
+    const auto col = [&](int j) { return w.vector_linear(i, 4 * c + j); };
+    u[c] = scale * (opt.p0 * col(0) + opt.gamma_per_mm * (g.x() * col(1) + g.y() * col(2) + g.z() * col(3)));
+  }
+  return u;
+}
+
 /// eq. (7), the paper's interpolation, the linear basis and the truncated rows through the float asset, as the
-/// runtime computes them, against the exact eq. (1); eq. (7) also per lung.
-void float_errors(const BakedAsset& a, const std::vector<Eigen::Vector3d>& dirs, const ExactEq1& exact,
-                  BakeReport& report) {
-  ErrorSum eq7, paper, linear, eq1;
+/// runtime computes them, against the exact eq. (1); eq. (7) also per lung. The sliding model's exact eq. (1) is
+/// its vector Green's function projected onto each vertex's direction e_I, which is what the model moves; what
+/// the projection leaves out of the full vector displacement is reported apart (direction_rms_rel_error).
+void float_errors(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+                  const std::vector<Eigen::Vector3d>& dirs, const ExactEq1& exact, BakeReport& report) {
+  ErrorSum eq7, paper, linear, eq1, direction;
   std::vector<ErrorSum> eq7_lung(a.lungs.size());
   const std::uint32_t c = a.coefficients();
   const std::size_t n = a.vertex_count();
@@ -112,6 +126,13 @@ void float_errors(const BakedAsset& a, const std::vector<Eigen::Vector3d>& dirs,
       const double e = exact.d(static_cast<Eigen::Index>(i), col);
       eq7.add(d7[i], e);
       eq7_lung[a.lung_of_vertex[i]].add(d7[i], e);
+      if (opt.model == MotionModel::sliding) {
+        const std::size_t l = a.lung_of_vertex[i];
+        const auto local = static_cast<Eigen::Index>(i - a.lungs[l].first_vertex);
+        const Eigen::Vector3d u = exact_vector(*work[l], opt, local, g, exact.scales[l][col]);
+        const Eigen::Vector3d dir = work[l]->directions.row(local).transpose();
+        for (int c = 0; c < 3; ++c) direction.add(dir[c] * dir.dot(u), u[c]);
+      }
       paper.add(dp[i], d7[i]);
       linear.add(dl[i], e);
       if (a.has_transfer_rows()) eq1.add(d1[i], e);
@@ -122,6 +143,7 @@ void float_errors(const BakedAsset& a, const std::vector<Eigen::Vector3d>& dirs,
   report.alpha = eq7.alpha();
   report.paper_interp_rms_rel_error = paper.rms_rel();
   report.linear_basis_rms_rel_error = linear.rms_rel();
+  report.direction_rms_rel_error = direction.rms_rel();
   report.eq1_truncated_rms_rel_error = a.has_transfer_rows() ? eq1.rms_rel() : 0.0;
   report.maps.front().eq7_rms_rel_error = eq7.rms_rel();
   for (std::size_t l = 0; l < a.lungs.size(); ++l) {
@@ -169,7 +191,7 @@ std::vector<MapSweep> sweep_lung(const LungWork& w, const BakedLung& lung, const
     s.figures = {map, other->folded, other->area_distortion, 0.0};
     const Eigen::MatrixXd y = sh_rows(other->u, kMaxBands);
     const Eigen::MatrixXd gram = y.transpose() * w.areas.asDiagonal() * y;
-    const Eigen::MatrixXd x = w.solver->solve(w.areas.asDiagonal() * y, workers);
+    const Eigen::MatrixXd x = solve_sh_fields(w, opt.model, y, workers);
     sweep_fit(y, gram, x, weighted, exact.scales[l], block, s);
     out.push_back(std::move(s));
   }
@@ -253,6 +275,50 @@ void physiology(const BakedAsset& a, BakeReport& report) {
   report.posterior_anterior_displacement_ratio = end_ratio(a, d7, 1, 0.15);  // posterior is high y
 }
 
+/// The three postures' lung-frame gravity: supine (on the back, +y posterior), prone, upright.
+const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kUpright(0, 0, -1);
+
+/// The compared model's exact displacement vectors at the tidal volume for gravity g, each lung's first-order
+/// swept volume its share of it.
+std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& basis,
+                                          const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a,
+                                          const BakeOptions& opt, const Eigen::Vector3d& g) {
+  std::vector<float> out(3 * std::size_t{a.vertex_count()});
+  for (std::size_t l = 0; l < work.size(); ++l) {
+    const BakedLung& lung = a.lungs[l];
+    const Eigen::Index n = basis[l].rows();
+    Eigen::MatrixXd u(n, 3);
+    for (int c = 0; c < 3; ++c)
+      u.col(c) = opt.p0 * basis[l].col(4 * c) + opt.gamma_per_mm * (basis[l].middleCols(4 * c + 1, 3) * g);
+    double swept = 0;
+    for (Eigen::Index i = 0; i < n; ++i) swept += work[l]->areas[i] * u.row(i).dot(work[l]->geometry.normals[static_cast<std::size_t>(i)]);
+    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * lung.volume_share / swept : 0.0;
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) out[3 * (lung.first_vertex + static_cast<std::size_t>(i)) + c] = static_cast<float>(scale * u(i, c));
+  }
+  return out;
+}
+
+/// The motion object of the report: the asset's model through the float asset in three postures, and the other
+/// model, exact, on the same lungs.
+void motion(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
+            const Workers& workers, BakeReport& report) {
+  std::vector<SurfaceRegion> regions;
+  for (const auto& w : work) regions.insert(regions.end(), w->regions.begin(), w->regions.end());
+  report.motion_supine = motion_figures(a, displacement_vectors(a, kSupine, kTidalVolumeMl), regions);
+  report.motion_prone = motion_figures(a, displacement_vectors(a, kProne, kTidalVolumeMl), regions);
+  report.motion_upright = motion_figures(a, displacement_vectors(a, kUpright, kTidalVolumeMl), regions);
+  report.compared_model = opt.model == MotionModel::sliding ? MotionModel::paper : MotionModel::sliding;
+  std::vector<Eigen::MatrixXd> basis(work.size());
+  const Workers per_lung{std::max(1, thread_count(workers) / static_cast<int>(work.size())), workers.cancel};
+  parallel_for(work.size(), workers, [&](std::size_t l) {
+    basis[l] = exact_linear_motion(*work[l], report.compared_model, opt, per_lung);
+  });
+  report.compared_supine = motion_figures(a, compared_displacements(basis, work, a, opt, kSupine), regions);
+  report.compared_prone = motion_figures(a, compared_displacements(basis, work, a, opt, kProne), regions);
+  report.compared_upright = motion_figures(a, compared_displacements(basis, work, a, opt, kUpright), regions);
+}
+
 }  // namespace
 
 void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
@@ -263,12 +329,14 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   const ExactEq1 exact = exact_eq1(work, a, opt, g_mat);
   if (progress) progress("evaluate", 0.2);
   check_cancel(workers);
-  float_errors(a, dirs, exact, report);
+  float_errors(work, a, opt, dirs, exact, report);
   if (progress) progress("evaluate", 0.4);
   if (opt.bands_sweep) sweep_errors(work, a, opt, workers, exact, report);
   check_cancel(workers);
   if (progress) progress("evaluate", 0.9);
   physiology(a, report);
+  motion(work, a, opt, workers, report);
+  check_cancel(workers);
   report.evaluated = true;
   if (progress) progress("evaluate", 1.0);
 }

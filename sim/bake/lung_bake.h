@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "sim/motion/motion_model.h"
 #include "sim/mesh/spherical_map.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/transfer/transfer_rows.h"
@@ -24,12 +25,20 @@ struct LungWork {
   VertexGeometry geometry;
   double rest_volume_mm3 = 0;
   Eigen::VectorXd areas;          ///< A_I
+  double midline_x = 0;           ///< x of the body's midline (the lungs' mean), for a lung with another name
+  std::vector<SurfaceRegion> regions;  ///< each vertex's face (sim/motion/surface_regions.h)
+  Eigen::MatrixXd directions;     ///< N x 3, e_I: the direction each vertex moves along (the normal: paper)
+  Eigen::VectorXd volume_weights; ///< A_I (e_I . n_I): D's first-order swept volume is volume_weights . D
+  Eigen::MatrixXd drive;          ///< N x 3, b_J (sliding; empty for the paper's model)
+  /// Sliding: the exact vector displacements of the four linear pressures, N x 12, component c's tau0, tau_x,
+  /// tau_y, tau_z in columns 4c .. 4c + 3 (the report measures the projection onto e_I against them).
+  Eigen::MatrixXd vector_linear;
   SphereMapResult sphere;         ///< u_I of the SH fit, its folds and area distortion
   int c_solved = 0;               ///< SH fields solved: L^2, or 64 when the report sweeps the bands
   Eigen::MatrixXd y;              ///< N x c_solved, Y_lm(u_I)
   Eigen::MatrixXd offsets;        ///< N x 3, x_I - c
   Eigen::MatrixXd gram;           ///< c_solved x c_solved, G = sum A Y Y^T
-  Eigen::MatrixXd x;              ///< N x (c_solved + 4): T_lm fields, then tau0, tau_x, tau_y, tau_z
+  Eigen::MatrixXd x;              ///< N x (c_solved + 4): T_lm fields, then tau0, tau_x, tau_y, tau_z (along e_I)
   Eigen::MatrixXd force_basis;    ///< L^2 x 4: f0, f_x, f_y, f_z
   Eigen::VectorXd volume_basis;   ///< 4: v0, v_x, v_y, v_z (mm^3 per unit pressure)
   Eigen::SparseMatrix<double> k;

@@ -57,6 +57,41 @@ nlohmann::json maps_json(const std::vector<MapFigures>& maps) {
   return out;
 }
 
+/// One posture's figures (sim/motion/motion_figures.h), with the faces when `regions`.
+nlohmann::json posture_json(const MotionFigures& f, bool regions) {
+  nlohmann::json j = {{"si_share", f.si_share},
+                      {"apex_base_ratio", f.apex_base_ratio},
+                      {"dorsal_ventral_ratio", f.dorsal_ventral_ratio},
+                      {"mean_displacement_mm", f.mean_displacement_mm},
+                      {"max_displacement_mm", f.max_displacement_mm}};
+  if (!regions) return j;
+  nlohmann::json faces = nlohmann::json::object();
+  for (std::size_t r = 0; r < kSurfaceRegionCount; ++r) {
+    const RegionMotion& m = f.regions[r];
+    faces[kSurfaceRegionNames.name(static_cast<SurfaceRegion>(r))] = {
+        {"area_mm2", m.area_mm2}, {"area_share", m.area_share}, {"volume_share", m.volume_share},
+        {"mean_displacement_mm", m.mean_displacement_mm}};
+  }
+  j["regions"] = faces;
+  return j;
+}
+
+/// "motion": the asset's model supine at the top level (the 4-D CT figures), then prone and upright, and the
+/// other model's figures on the same lungs for the side-by-side comparison.
+nlohmann::json motion_json(const BakeReport& r) {
+  nlohmann::json j = posture_json(r.motion_supine, true);
+  j["model"] = kMotionModelNames.name(r.model);
+  j["volume_ml"] = kTidalVolumeMl;
+  j["posture"] = "supine";
+  j["prone"] = posture_json(r.motion_prone, false);
+  j["upright"] = posture_json(r.motion_upright, false);
+  j["compared"] = {{"model", kMotionModelNames.name(r.compared_model)},
+                   {"supine", posture_json(r.compared_supine, true)},
+                   {"prone", posture_json(r.compared_prone, false)},
+                   {"upright", posture_json(r.compared_upright, false)}};
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& notes) {
@@ -89,6 +124,11 @@ nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& 
   j["posterior_anterior_displacement_ratio"] = r.posterior_anterior_displacement_ratio;
   j["sphere_map_s"] = r.sphere_map_s;
   j["map"] = kSphereMapNames.name(r.map);
+  j["model"] = kMotionModelNames.name(r.model);
+  if (r.evaluated) {
+    j["direction_rms_rel_error"] = r.direction_rms_rel_error;
+    j["motion"] = motion_json(r);
+  }
   j["bands_sweep"] = sweep_json(r.bands_sweep);
   j["maps"] = maps_json(r.maps);
   nlohmann::json lungs = nlohmann::json::array();

@@ -45,7 +45,7 @@ void Eq1Deformer::deform(const Eigen::Vector3d& g, double delta_volume_ml, std::
     const auto scale = static_cast<float>(delta_volume_ml * lung.volume_share);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i)
       for (int k = 0; k < 3; ++k)
-        positions_out[3 * i + k] = asset_.positions[3 * i + k] + scale * d_[i] * asset_.normals[3 * i + k];
+        positions_out[3 * i + k] = asset_.positions[3 * i + k] + scale * d_[i] * asset_.directions[3 * i + k];
   }
 }
 

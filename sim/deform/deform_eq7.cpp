@@ -1,5 +1,5 @@
 /// @file deform_eq7.cpp
-/// @brief Eq. (7) as one Eigen matrix-vector product per lung (vectorised), then the move along the normals.
+/// @brief Eq. (7) as one Eigen matrix-vector product per lung (vectorised), then the move along each vertex's direction.
 #include "sim/deform/deform_eq7.h"
 
 #include <Eigen/Core>
@@ -38,7 +38,7 @@ void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, double
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       const Eigen::Map<const Eigen::VectorXf> t(asset.sh_coeffs.data() + i * c, static_cast<Eigen::Index>(c));
       const float move = scale * t.dot(f);
-      for (int k = 0; k < 3; ++k) positions_out[3 * i + k] = asset.positions[3 * i + k] + move * asset.normals[3 * i + k];
+      for (int k = 0; k < 3; ++k) positions_out[3 * i + k] = asset.positions[3 * i + k] + move * asset.directions[3 * i + k];
     }
   }
 }

@@ -20,8 +20,9 @@ struct RowBlock {
 
 class PushSolver {
  public:
-  PushSolver(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas, const Eigen::VectorXd& weight)
-      : k_(k), areas_(areas), weight_(weight), t_(k.rows(), 0.0), r_(k.rows(), 0.0), queued_(k.rows(), 0), diag_(k.rows()) {
+  PushSolver(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas, const Eigen::VectorXd& weight,
+             const RowProjection& projection)
+      : k_(k), areas_(areas), weight_(weight), projection_(projection), t_(k.rows(), 0.0), r_(k.rows(), 0.0), queued_(k.rows(), 0), diag_(k.rows()) {
     for (Eigen::Index j = 0; j < k.outerSize(); ++j) diag_[j] = k.coeff(j, j);
   }
 
@@ -64,13 +65,14 @@ class PushSolver {
     std::sort(touched_.begin(), touched_.end());
     double kept_weight = 0;
     for (std::uint32_t j : touched_)
-      if (t_[j] >= keep && t_[j] > 0) kept_weight += t_[j] * areas_[j];
+      if (t_[j] >= keep && t_[j] > 0) kept_weight += t_[j] * factor(i, j) * areas_[j];
     const double scale = kept_weight > 0 ? weight_[i] / kept_weight : 1.0;
     std::uint32_t count = 0;
     for (std::uint32_t j : touched_) {
-      if (t_[j] >= keep && t_[j] > 0) {
+      const double f = factor(i, j);
+      if (t_[j] >= keep && t_[j] > 0 && f != 0) {
         block.cols.push_back(j + offset);
-        block.vals.push_back(static_cast<float>(t_[j] * scale));
+        block.vals.push_back(static_cast<float>(t_[j] * f * scale));
         ++count;
       }
       t_[j] = 0;
@@ -83,10 +85,16 @@ class PushSolver {
 
  private:
   void touch(std::uint32_t j) { touched_.push_back(j); }
+  /// e_I . b_J for the sliding model's rows, 1 for the paper's.
+  double factor(std::uint32_t i, std::uint32_t j) const {
+    if (projection_.directions == nullptr) return 1.0;
+    return projection_.directions->row(i).dot(projection_.drive->row(j));
+  }
 
   const Eigen::SparseMatrix<double>& k_;
   const Eigen::VectorXd& areas_;
   const Eigen::VectorXd& weight_;
+  RowProjection projection_;
   std::vector<double> t_, r_;
   std::vector<char> queued_;
   std::vector<double> diag_;
@@ -97,7 +105,8 @@ class PushSolver {
 
 void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas,
                           const Eigen::VectorXd& row_weight, double epsilon, const Workers& workers,
-                          std::uint32_t offset, TransferRows& out, const std::function<void(std::size_t)>& progress) {
+                          std::uint32_t offset, TransferRows& out, const RowProjection& projection,
+                          const std::function<void(std::size_t)>& progress) {
   const auto rows = static_cast<std::uint32_t>(k.rows());
   const int threads = std::clamp(thread_count(workers), 1, 64);
   // Blocks of consecutive rows, each with its own output, joined in row order below; many more blocks than
@@ -109,7 +118,7 @@ void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::Vec
   std::atomic<std::size_t> done{0};
   parallel_for(block_count, Workers{threads, workers.cancel}, [&](std::size_t b) {
     std::unique_ptr<PushSolver>& solver = solvers[static_cast<std::size_t>(worker_slot())];
-    if (!solver) solver = std::make_unique<PushSolver>(k, areas, row_weight);
+    if (!solver) solver = std::make_unique<PushSolver>(k, areas, row_weight, projection);
     const auto first = static_cast<std::uint32_t>(b * block_rows), last = std::min(rows, first + block_rows);
     for (std::uint32_t i = first; i < last; ++i) solver->row(i, epsilon, offset, blocks[b]);
     done += last - first;

@@ -31,11 +31,19 @@ struct TransferRows {
   std::vector<float> vals;             ///< mm per unit force
 };
 
+/// For the sliding model (sim/motion/motion_model.h): row I's entry J is K^-1(I,J) (e_I . b_J), the displacement
+/// of I along its direction e_I under a unit pressure at J pushing along b_J. Both null: the paper's K^-1 rows.
+struct RowProjection {
+  const Eigen::MatrixXd* directions = nullptr;  ///< N x 3, e_I
+  const Eigen::MatrixXd* drive = nullptr;       ///< N x 3, b_J
+};
+
 /// Appends the truncated rows of K^-1 (one lung, vertices offset .. offset + K.rows()) to `out`.
 /// `progress(rows_done)` is called now and then from the calling thread only.
-/// `areas` are A_J and `row_weight` the exact tau0 (both local to the lung). Throws Cancelled when cancelled.
+/// `areas` are A_J and `row_weight` the exact tau0 along e_I (both local to the lung). Throws Cancelled when cancelled.
 void append_transfer_rows(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& areas,
                           const Eigen::VectorXd& row_weight, double epsilon, const Workers& workers,
-                          std::uint32_t offset, TransferRows& out, const std::function<void(std::size_t)>& progress);
+                          std::uint32_t offset, TransferRows& out, const RowProjection& projection,
+                          const std::function<void(std::size_t)>& progress);
 
 }  // namespace lungar::sim

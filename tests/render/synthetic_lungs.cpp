@@ -37,7 +37,23 @@ void add_lung(sim::BakedAsset& a, int lung, std::uint32_t first, std::uint32_t c
   a.lungs.push_back(l);
 }
 
+/// Directions of motion tilted away from the normals towards the feet, as the sliding model's are, so that a
+/// shader or CPU path that moved the vertices along their normals instead would be caught.
+void tilted_directions(sim::BakedAsset& a) {
+  a.directions.resize(a.normals.size());
+  for (std::size_t i = 0; i < a.normals.size(); i += 3) {
+    double d[3] = {a.normals[i], a.normals[i + 1], a.normals[i + 2] - 1.2};
+    double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (norm < 1e-6) {
+      d[0] = 1;
+      norm = 1;
+    }
+    for (int k = 0; k < 3; ++k) a.directions[i + k] = static_cast<float>(d[k] / norm);
+  }
+}
+
 void random_coefficients(sim::BakedAsset& a, std::uint32_t bands, std::uint32_t seed, float scale) {
+  tilted_directions(a);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(-scale, scale);
   a.bands = bands;
@@ -153,7 +169,7 @@ std::vector<double> deform_eq7(const sim::BakedAsset& a, const std::vector<std::
     double d = 0;  // eq. (7): D_I = dV sum_lm T^I_lm f_lm
     for (std::uint32_t k = 0; k < nc; ++k) d += double{t[std::size_t{v} * nc + k]} * force[lung][k];
     d *= volume_change_ml[lung];
-    for (int k = 0; k < 3; ++k) out[3 * v + k] = a.positions[3 * v + k] + d * a.normals[3 * v + k];
+    for (int k = 0; k < 3; ++k) out[3 * v + k] = a.positions[3 * v + k] + d * a.directions[3 * v + k];
   }
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <iterator>
 
 #include "sim/asset/asset_io.h"
@@ -30,6 +31,47 @@ TEST(Crc32, MatchesTheStandardCheckValue) {
   EXPECT_EQ(crc32("", 0), 0u);
 }
 
+TEST(AssetIo, TheSlidingModelsDirectionsSurviveTheRoundTrip) {
+  TempDir dir;
+  const BakedAsset& a = test::sliding_bake().asset;
+  ASSERT_TRUE(write_asset(a, dir.file("s.lungbake")));
+  const Result<BakedAsset> b = load_asset(dir.file("s.lungbake"));
+  ASSERT_TRUE(b) << b.error();
+  EXPECT_EQ(b->motion_model, MotionModel::sliding);
+  EXPECT_EQ(b->directions, a.directions);
+  EXPECT_NE(b->directions, b->normals);
+}
+
+TEST(AssetIo, AVersionOneAssetLoadsAsThePapersModel) {
+  // tests/data/hil_lungs.lungbake was written by asset version 1 (no MODL, no MDIR section).
+  const Result<BakedAsset> a = load_asset(std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake");
+  ASSERT_TRUE(a) << a.error();
+  EXPECT_EQ(a->motion_model, MotionModel::paper);
+  EXPECT_EQ(a->directions, a->normals);
+}
+
+TEST(AssetIo, AnUnknownMotionModelIsRefusedByName) {
+  TempDir dir;
+  const std::string path = dir.file("m.lungbake");
+  ASSERT_TRUE(write_asset(small_bake().asset, path));
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t at = bytes.find("MODL");
+  ASSERT_NE(at, std::string::npos);
+  const std::uint32_t model = 7;
+  std::memcpy(&bytes[at + 12], &model, 4);
+  const std::uint32_t crc = crc32(&bytes[at + 12], 4);
+  std::memcpy(&bytes[at + 16], &crc, 4);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  const Result<BakedAsset> b = load_asset(path);
+  ASSERT_FALSE(b);
+  EXPECT_NE(b.error().find("'MODL'"), std::string::npos) << b.error();
+  EXPECT_NE(b.error().find("motion model 7"), std::string::npos) << b.error();
+}
+
 TEST(AssetIo, RoundTripKeepsEveryField) {
   TempDir dir;
   const BakedAsset& a = small_bake().asset;
@@ -45,6 +87,8 @@ TEST(AssetIo, RoundTripKeepsEveryField) {
   EXPECT_EQ(b->transfer_epsilon, a.transfer_epsilon);
   EXPECT_EQ(b->positions, a.positions);
   EXPECT_EQ(b->normals, a.normals);
+  EXPECT_EQ(b->directions, a.directions);
+  EXPECT_EQ(b->motion_model, a.motion_model);
   EXPECT_EQ(b->areas, a.areas);
   EXPECT_EQ(b->lung_of_vertex, a.lung_of_vertex);
   EXPECT_EQ(b->sh_coeffs, a.sh_coeffs);
@@ -130,7 +174,7 @@ TEST_F(DamagedAsset, WrongVersionIsNamed) {
   std::string damaged = bytes_;
   damaged[8] = 7;
   const std::string e = error_for(damaged);
-  EXPECT_NE(e.find("version: expected 1, found 7"), std::string::npos) << e;
+  EXPECT_NE(e.find("version: expected 1 to 2, found 7"), std::string::npos) << e;
 }
 
 TEST_F(DamagedAsset, WrongMagicIsNamed) {

@@ -166,7 +166,7 @@ TEST(Deform, PositionsMoveAlongNormalsByTheirShareOfTheVolume) {
   for (std::uint32_t i = 0; i < a.vertex_count(); i += 97) {
     const double share = a.lungs[a.lung_of_vertex[i]].volume_share;
     for (int k = 0; k < 3; ++k)
-      EXPECT_NEAR(moved[3 * i + k], a.positions[3 * i + k] + 250.0 * share * d[i] * a.normals[3 * i + k], 1e-3);
+      EXPECT_NEAR(moved[3 * i + k], a.positions[3 * i + k] + 250.0 * share * d[i] * a.directions[3 * i + k], 1e-3);
   }
   Eq1Deformer eq1(a);
   std::vector<float> moved1(3 * a.vertex_count());

@@ -132,8 +132,8 @@ TEST(ParallelFor, TransferRowsAndSolvesAreTheSameOnOneThreadAndOnThree) {
   EXPECT_TRUE(x1 == x3) << "column solves differ between 1 and 3 threads";
   const Eigen::VectorXd tau0 = solver.solve(areas, 1);
   TransferRows one, three;
-  append_transfer_rows(k, areas, tau0, kTransferEpsilon, 1, 7, one, nullptr);
-  append_transfer_rows(k, areas, tau0, kTransferEpsilon, 3, 7, three, nullptr);
+  append_transfer_rows(k, areas, tau0, kTransferEpsilon, 1, 7, one, {}, nullptr);
+  append_transfer_rows(k, areas, tau0, kTransferEpsilon, 3, 7, three, {}, nullptr);
   ASSERT_GT(one.row_ptr.size(), 1000u) << "enough rows for several blocks";
   EXPECT_EQ(one.row_ptr, three.row_ptr);
   EXPECT_EQ(one.cols, three.cols);

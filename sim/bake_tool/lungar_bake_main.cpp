@@ -14,6 +14,7 @@
 #include "config/base/log_line.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
+#include "sim/bake_tool/export_command.h"
 
 namespace {
 
@@ -102,11 +103,18 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
       ->needs(labelmap)->allow_extra_args(false);
   procedural->excludes(mesh)->excludes(labelmap);
   mesh->excludes(labelmap);
-  app.add_option("--out", cmd.out, "the .lungbake file to write")->required();
+  app.add_option("--out", cmd.out, "the .lungbake file to write (required)");
   app.add_option("--bands", cmd.options.bands, "SH bands L (L^2 coefficients)")
       ->check(CLI::Range(1u, 8u))->capture_default_str();
   app.add_option("--units", cmd.units, "units of the mesh files")->check(CLI::IsMember({"mm", "cm", "m"}))
       ->capture_default_str();
+  add_enum_option(app, "--model", cmd.options.model, lungar::sim::kMotionModelNames,
+                  "how the surface moves (sliding: driven by the diaphragm, sliding along the chest wall, held at the "
+                  "mediastinum; paper: every vertex along its normal, the paper's)");
+  app.add_option("--gamma", cmd.options.gamma_per_mm,
+                 "gravity's pressure gradient gamma in p = p0 + gamma g.(x - c), per mm (p0 = 10): how much more the "
+                 "dependent regions move")
+      ->check(CLI::Range(0.0, 0.075))->capture_default_str();
   add_enum_option(app, "--map", cmd.options.sphere.map, lungar::sim::kSphereMapNames,
                   "the sphere map of the SH fit (radial: the paper's, folds where the surface is not star-shaped; "
                   "conformal: one-to-one on genus-0 surfaces)");
@@ -117,6 +125,46 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
                "leave out the explicit transfer rows (the CPU eq. (1) baseline, --deform cpu1)");
   app.add_flag("!--no-evaluate", cmd.options.evaluate,
                "skip the report's accuracy and physiology figures (a faster bake, as the demo's)");
+}
+
+/// `lungar-bake export`: its options on `sub`; --gravity is parsed after the command line.
+void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::string& gravity) {
+  sub.add_option("--asset", cmd.asset, "the .lungbake asset")->required();
+  sub.add_option("--posture", cmd.posture, "upright, supine, prone, left-lateral (lying on the left side) or "
+                                           "right-lateral")
+      ->check(CLI::IsMember({"upright", "supine", "prone", "left-lateral", "right-lateral"}))
+      ->capture_default_str();
+  sub.add_option("--gravity", gravity, "x,y,z: gravity's direction in the lung frame (LPS) instead of a posture");
+  sub.add_option("--volume-ml", cmd.volume_ml, "the pair's volume change from the rest shape, mL (negative: below "
+                                               "it); with --series, the breath's tidal volume")
+      ->capture_default_str();
+  sub.add_option("--out", cmd.out, "the .ply file to write (with --series: FILE_000.ply, FILE_001.ply, ...)")
+      ->required();
+  sub.add_option("--series", cmd.series, "N: one file per phase of a breath, N phases")->check(CLI::Range(1, 1000));
+}
+
+/// Runs the export and says what it wrote; the exit code.
+int run_export(lungar::sim::ExportCommand& cmd, const std::string& gravity) {
+  if (!gravity.empty()) {
+    auto g = lungar::sim::parse_gravity(gravity);
+    if (!g) {
+      std::fprintf(stderr, "lungar-bake export: %s\n", g.error().c_str());
+      return 2;
+    }
+    cmd.gravity = *g;
+  }
+  auto written = lungar::sim::run_export_command(cmd);
+  if (!written) {
+    std::fprintf(stderr, "lungar-bake export: %s\n", written.error().c_str());
+    return 1;
+  }
+  for (const lungar::sim::ExportedFile& f : *written) {
+    char line[512];
+    std::snprintf(line, sizeof line, "wrote %s: volume change %.1f mL (phase %.3f)", f.path.c_str(), f.volume_ml,
+                  f.phase);
+    lungar::log_line("lungar-bake export", line);
+  }
+  return 0;
 }
 
 /// One line: what was written, and the figures the bake computed.
@@ -143,10 +191,19 @@ int main(int argc, char** argv) {
   CLI::App app{"lungar-bake: bakes lung surfaces or CT label maps into a .lungbake asset (transfer-matrix SH, force bases, "
                "truncated rows) and reports its accuracy against the exact eq. (1)."};
   add_bake_options(app, cmd);
+  lungar::sim::ExportCommand export_cmd;
+  std::string export_gravity;
+  CLI::App* export_sub = app.add_subcommand(
+      "export", "write a baked asset's surface, displaced for a posture and a volume change, as PLY (x y z, dx dy dz "
+                "in mm, LPS; the triangles) for 3D Slicer or ParaView");
+  add_export_options(*export_sub, export_cmd, export_gravity);
+  app.require_subcommand(0, 1);
   try {
     app.parse(argc, argv);
+    if (export_sub->parsed()) return run_export(export_cmd, export_gravity);
     if (!cmd.procedural && cmd.meshes.empty() && cmd.labelmap.empty())
       throw CLI::RequiredError("--procedural, --mesh FILE or --labelmap FILE");
+    if (cmd.out.empty()) throw CLI::RequiredError("--out");
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {

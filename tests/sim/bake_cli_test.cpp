@@ -144,6 +144,51 @@ TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
   EXPECT_EQ(r["nodes"].get<std::uint32_t>(), a->vertex_count());
   EXPECT_EQ(r["bands_sweep"].size(), 7u);
   EXPECT_EQ(r["bands_sweep"][2]["coefficients"].get<int>(), 16);
+  EXPECT_EQ(r["model"], "sliding");
+  const nlohmann::json& m = r["motion"];
+  for (const char* key : {"si_share", "apex_base_ratio", "dorsal_ventral_ratio", "mean_displacement_mm", "regions",
+                          "prone", "upright", "compared"})
+    EXPECT_TRUE(m.contains(key)) << "motion." << key;
+  EXPECT_EQ(m["compared"]["model"], "paper");
+  EXPECT_GT(m["si_share"].get<double>(), m["compared"]["supine"]["si_share"].get<double>());
+  for (const char* face : {"diaphragmatic", "costal", "mediastinal", "apical"})
+    EXPECT_TRUE(m["regions"][face].contains("volume_share")) << face;
+}
+
+TEST(BakeCli, ThePapersModelIsOneOptionAway) {
+  test::TempDir dir;
+  const std::string args = "--procedural --nodes 2000 --no-transfer-rows --out " + dir.file("p.lungbake") +
+                           " --report-json " + dir.file("p.json") + " --model ";
+  ASSERT_EQ(run(args + "paper", dir.file("err")), 0) << slurp(dir.file("err"));
+  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("p.json")));
+  EXPECT_EQ(r["model"], "paper");
+  EXPECT_EQ(r["motion"]["compared"]["model"], "sliding");
+  EXPECT_LT(r["motion"]["si_share"].get<double>(), 0.5) << "the paper's balloon";
+  EXPECT_EQ(run(args + "balloon", dir.file("err")), 2);
+}
+
+TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
+  test::TempDir dir;
+  ASSERT_EQ(run("--procedural --nodes 2000 --no-evaluate --no-transfer-rows --out " + dir.file("p.lungbake"),
+                dir.file("err")), 0) << slurp(dir.file("err"));
+  EXPECT_EQ(run("export --help", dir.file("err"), dir.file("help")), 0);
+  EXPECT_NE(slurp(dir.file("help")).find("--posture"), std::string::npos);
+  const std::string args = "export --asset " + dir.file("p.lungbake") + " --out " + dir.file("e.ply");
+  ASSERT_EQ(run(args + " --posture prone --volume-ml 400", dir.file("err")), 0) << slurp(dir.file("err"));
+  const std::string ply = slurp(dir.file("e.ply"));
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  for (const char* line : {"property float dx\n", "property float dz\n", "element face "})
+    EXPECT_NE(ply.find(line), std::string::npos) << line;
+  EXPECT_NE(slurp(dir.file("err")).find("wrote " + dir.file("e.ply")), std::string::npos) << slurp(dir.file("err"));
+  std::filesystem::remove(dir.file("e.ply"));
+  EXPECT_EQ(run(args + " --gravity 0,0", dir.file("err")), 2);
+  EXPECT_NE(slurp(dir.file("err")).find("--gravity"), std::string::npos) << slurp(dir.file("err"));
+  EXPECT_EQ(run(args + " --posture sideways", dir.file("err")), 2);
+  EXPECT_EQ(run("export --asset " + dir.file("none.lungbake") + " --out " + dir.file("e.ply"), dir.file("err")), 1);
+  EXPECT_NE(slurp(dir.file("err")).find("none.lungbake"), std::string::npos) << slurp(dir.file("err"));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
+  ASSERT_EQ(run(args + " --series 4", dir.file("err")), 0) << slurp(dir.file("err"));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("e_003.ply")));
 }
 
 /// Two balls of 30 mm radius on a 2 mm grid: label 2 at x = -40 mm (the right lung, LPS), label 3 at x = +40 mm.

@@ -1,0 +1,41 @@
+/// @file export_command.h
+/// @brief `lungar-bake export`: a baked asset's surface displaced for a posture and a volume change, as PLY
+///        (sim/bake_tool/ply_writer.h), one file or one per phase of a breath.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "config/base/result.h"
+
+namespace lungar::sim {
+
+struct ExportCommand {
+  std::string asset;                       ///< the .lungbake to read
+  std::string posture = "supine";          ///< upright, supine, prone, left-lateral, right-lateral
+  std::optional<Eigen::Vector3d> gravity;  ///< lung-frame gravity instead of the posture's (normalised)
+  double volume_ml = 500.0;                ///< the pair's enclosed volume change from rest (negative: below it)
+  std::string out;                         ///< the .ply to write (with --series: the stem of each phase's file)
+  int series = 0;                          ///< > 0: that many phases of one breath of `volume_ml` tidal volume
+};
+
+/// What was written: each file with its volume change.
+struct ExportedFile {
+  std::string path;
+  double phase = 0;      ///< fraction of the breath (0 with no series)
+  double volume_ml = 0;  ///< the pair's volume change from rest
+};
+
+/// Writes the PLY file(s), whole or not at all; the error is one line naming the file and the field.
+Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& command);
+
+/// "FILE.ply" with --series: FILE_000.ply, FILE_001.ply, ...
+std::string series_path(const std::string& out, int index);
+
+/// "x,y,z" -> a unit vector, or why not (three finite numbers, not all zero).
+Result<Eigen::Vector3d> parse_gravity(const std::string& text);
+
+}  // namespace lungar::sim

@@ -1,0 +1,180 @@
+/// @file export_test.cpp
+/// @brief `lungar-bake export`'s work: the PLY read back field by field (rest + displacement = position, the
+///        triangles, the volume change), postures and --gravity, a breath as a series, and refusals that leave
+///        no file.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "sim/asset/asset_io.h"
+#include "sim/bake_tool/export_command.h"
+#include "sim/mesh/tri_mesh.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+using test::sliding_bake;
+using test::TempDir;
+
+struct Ply {
+  std::vector<std::string> properties;
+  std::vector<float> xyz, dxyz;
+  std::vector<Triangle> triangles;
+};
+
+/// A reader written from the PLY format's definition, independent of the writer.
+Ply read_ply(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  Ply p;
+  std::string line;
+  std::size_t vertices = 0, faces = 0;
+  EXPECT_TRUE(std::getline(in, line) && line == "ply");
+  while (std::getline(in, line) && line != "end_header") {
+    std::istringstream words(line);
+    std::string w, kind, name;
+    words >> w;
+    if (w == "format") {
+      EXPECT_EQ(line, "format binary_little_endian 1.0");
+    }
+    if (w == "element") {
+      words >> kind;
+      (kind == "vertex" ? words >> vertices : words >> faces);
+    }
+    if (w == "property" && line.find("list") == std::string::npos) {
+      words >> kind >> name;
+      p.properties.push_back(name);
+    }
+  }
+  EXPECT_EQ(p.properties.size(), 6u);
+  std::vector<float> record(p.properties.size());
+  for (std::size_t i = 0; i < vertices; ++i) {
+    in.read(reinterpret_cast<char*>(record.data()), static_cast<std::streamsize>(record.size() * 4));
+    p.xyz.insert(p.xyz.end(), record.begin(), record.begin() + 3);
+    p.dxyz.insert(p.dxyz.end(), record.begin() + 3, record.begin() + 6);
+  }
+  for (std::size_t t = 0; t < faces; ++t) {
+    unsigned char count = 0;
+    std::int32_t v[3];
+    in.read(reinterpret_cast<char*>(&count), 1);
+    EXPECT_EQ(count, 3);
+    in.read(reinterpret_cast<char*>(v), 12);
+    p.triangles.push_back({static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[1]),
+                           static_cast<std::uint32_t>(v[2])});
+  }
+  EXPECT_TRUE(in.good()) << path << " is shorter than its header says";
+  EXPECT_EQ(in.peek(), std::char_traits<char>::eof()) << path << " has bytes after its faces";
+  return p;
+}
+
+class Export : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    asset_ = dir_.file("lungs.lungbake");
+    ASSERT_TRUE(write_asset(sliding_bake().asset, asset_));
+  }
+  TempDir dir_;
+  std::string asset_;
+};
+
+TEST_F(Export, WritesTheDisplacedSurfaceWhoseVolumeChangeIsTheOneAskedFor) {
+  const BakedAsset& a = sliding_bake().asset;
+  ExportCommand c;
+  c.asset = asset_;
+  c.posture = "supine";
+  c.volume_ml = 500;
+  c.out = dir_.file("supine.ply");
+  auto written = run_export_command(c);
+  ASSERT_TRUE(written) << written.error();
+  ASSERT_EQ(written->size(), 1u);
+  const Ply p = read_ply(c.out);
+  EXPECT_EQ((std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz"}), p.properties);
+  ASSERT_EQ(p.xyz.size(), a.positions.size());
+  ASSERT_EQ(p.triangles.size() * 3, a.triangles.size());
+  double moved = 0;
+  for (std::size_t i = 0; i < p.xyz.size(); ++i) {
+    EXPECT_NEAR(p.xyz[i] - p.dxyz[i], a.positions[i], 1e-3) << "x - dx is the rest position";
+    moved = std::max<double>(moved, std::abs(p.dxyz[i]));
+  }
+  EXPECT_GT(moved, 1.0);
+  std::vector<Triangle> rest_tris(p.triangles);
+  const double rest = enclosed_volume(rest_tris, a.positions.data());
+  EXPECT_NEAR((enclosed_volume(p.triangles, p.xyz.data()) - rest) / 1000.0, 500.0, 0.5);
+
+  c.volume_ml = -300;  // below the rest shape
+  c.out = dir_.file("below.ply");
+  ASSERT_TRUE(run_export_command(c));
+  const Ply below = read_ply(c.out);
+  EXPECT_NEAR((enclosed_volume(below.triangles, below.xyz.data()) - rest) / 1000.0, -300.0, 0.5)
+      << "the enclosed volume, not only its first-order part";
+}
+
+TEST_F(Export, PosturesAndGravityMoveTheLungsDifferently) {
+  ExportCommand c;
+  c.asset = asset_;
+  c.out = dir_.file("supine.ply");
+  ASSERT_TRUE(run_export_command(c));
+  c.posture = "left-lateral";
+  c.out = dir_.file("left.ply");
+  ASSERT_TRUE(run_export_command(c));
+  c.gravity = Eigen::Vector3d(0, 1, 0);  // the supine gravity, given directly
+  c.out = dir_.file("gravity.ply");
+  ASSERT_TRUE(run_export_command(c));
+  const Ply supine = read_ply(dir_.file("supine.ply")), left = read_ply(dir_.file("left.ply")),
+            gravity = read_ply(dir_.file("gravity.ply"));
+  double differ = 0;
+  for (std::size_t i = 0; i < supine.dxyz.size(); ++i) {
+    differ = std::max<double>(differ, std::abs(supine.dxyz[i] - left.dxyz[i]));
+    ASSERT_NEAR(supine.dxyz[i], gravity.dxyz[i], 1e-4) << "--gravity 0,1,0 is supine";
+  }
+  EXPECT_GT(differ, 0.1);
+  EXPECT_TRUE(parse_gravity("0, 1 ,0")) << "spaces after commas are fine";
+  EXPECT_FALSE(parse_gravity("0,0,0"));
+  EXPECT_FALSE(parse_gravity("1,2"));
+  EXPECT_FALSE(parse_gravity("1,2,nan"));
+}
+
+TEST_F(Export, ASeriesIsOneBreathFromRest) {
+  ExportCommand c;
+  c.asset = asset_;
+  c.volume_ml = 500;
+  c.series = 5;
+  c.out = dir_.file("breath.ply");
+  auto written = run_export_command(c);
+  ASSERT_TRUE(written) << written.error();
+  ASSERT_EQ(written->size(), 5u);
+  EXPECT_EQ((*written)[2].path, dir_.file("breath_002.ply"));
+  EXPECT_NEAR((*written)[0].volume_ml, 0.0, 1.0) << "a breath starts at the end of an expiration";
+  double peak = 0;
+  for (const ExportedFile& f : *written) {
+    EXPECT_EQ(read_ply(f.path).xyz.size(), sliding_bake().asset.positions.size());
+    peak = std::max(peak, f.volume_ml);
+  }
+  EXPECT_GT(peak, 250.0);
+  EXPECT_LE(peak, 500.5);
+}
+
+TEST_F(Export, RefusalsNameTheFieldAndLeaveNoFile) {
+  ExportCommand c;
+  c.asset = dir_.file("missing.lungbake");
+  c.out = dir_.file("x.ply");
+  auto r = run_export_command(c);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("missing.lungbake"), std::string::npos) << r.error();
+  c.asset = asset_;
+  c.posture = "sideways";
+  r = run_export_command(c);
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().find("--posture"), std::string::npos) << r.error();
+  c.posture = "supine";
+  c.out = dir_.file("no/such/dir/../../x.ply");
+  std::ofstream(dir_.file("no"), std::ios::binary) << "a file where a folder should be";
+  EXPECT_FALSE(run_export_command(c));
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("x.ply")));
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("x.ply.partial")));
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -42,6 +42,7 @@ TEST_F(SilhouetteTest, UprightInspirationGrowsMostAtTheBase) {
   // (docs/design.md, Applied force).
   auto asset = test::ellipsoid_pair(40000, 2, 3);
   test::set_local_transfer(asset, 1.f);
+  asset.directions = asset.normals;  // the paper's model, whose force pattern this is: every vertex along its normal
   auto drawable = LungDrawable::create(asset);
   ASSERT_TRUE(drawable) << drawable.error();
   auto renderer = Renderer::create(*drawable);

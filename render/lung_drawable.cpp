@@ -25,6 +25,7 @@ std::string validate(const sim::BakedAsset& a, const DrawableOptions& o) {
   if (a.positions.size() != 3 * n) return size_error("positions", 3 * n, a.positions.size());
   if (a.normals.size() != 3 * n) return size_error("normals", 3 * n, a.normals.size());
   if (a.directions.size() != 3 * n) return size_error("directions", 3 * n, a.directions.size());
+  if (a.has_off_axis() && a.off_axis.size() != 12 * n) return size_error("off_axis", 12 * n, a.off_axis.size());
   if (!a.areas.empty() && a.areas.size() != n) return size_error("areas", n, a.areas.size());
   if (o.basis == Basis::SphericalHarmonics) {
     if (a.bands == 0 || a.bands > 10) {
@@ -132,6 +133,8 @@ Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const Dr
   upload(d.positions_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_STATIC_DRAW);
   upload(d.normals_, GL_ARRAY_BUFFER, asset.normals.data(), asset.normals.size() * 4, GL_STATIC_DRAW);
   upload(d.directions_, GL_ARRAY_BUFFER, asset.directions.data(), asset.directions.size() * 4, GL_STATIC_DRAW);
+  d.has_off_axis_ = asset.has_off_axis();
+  if (d.has_off_axis_) upload(d.off_axis_, GL_ARRAY_BUFFER, asset.off_axis.data(), asset.off_axis.size() * 4, GL_STATIC_DRAW);
   // The deformed copy starts as the rest shape: drawing it before any deformation shows the rest lungs.
   upload(d.deformed_, GL_ARRAY_BUFFER, asset.positions.data(), asset.positions.size() * 4, GL_DYNAMIC_COPY);
   if (d.index_count_ > 0) {
@@ -191,8 +194,8 @@ Status LungDrawable::upload_coefficient_texture(std::vector<float> padded) {
   return ok();
 }
 
-/// rest_vao: rest positions, normals, directions of motion and (attribute storage) coefficients, for the deforming
-/// programs.
+/// rest_vao: rest positions, normals, directions of motion, the off-axis basis (sliding model) and (attribute
+/// storage) coefficients, for the deforming programs.
 /// deformed_vao: deformed positions and the normals, for drawing without the shader deformation; rest_plain_vao:
 /// the same for the rest shape (no coefficient arrays enabled, so none are fetched).
 void LungDrawable::build_vertex_arrays() {
@@ -202,6 +205,14 @@ void LungDrawable::build_vertex_arrays() {
   glBindBuffer(GL_ARRAY_BUFFER, directions_.id());
   glEnableVertexAttribArray(kDirectionAttribute);
   glVertexAttribPointer(kDirectionAttribute, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+  if (has_off_axis_) {
+    glBindBuffer(GL_ARRAY_BUFFER, off_axis_.id());
+    for (unsigned row = 0; row < 3; ++row) {
+      glEnableVertexAttribArray(kOffAxisAttribute + row);
+      glVertexAttribPointer(kOffAxisAttribute + row, 4, GL_FLOAT, GL_FALSE, 48,
+                            reinterpret_cast<const void*>(std::uintptr_t{16} * row));
+    }
+  }
   if (!uses_texture_) {
     glBindBuffer(GL_ARRAY_BUFFER, coeffs_.id());
     const GLsizei value_bytes = half_float_ ? 2 : 4;

@@ -43,6 +43,8 @@ inline constexpr std::uint32_t kMaxAttributeCoefficients = 36;
 /// The attribute of each vertex's direction of motion e_I (render/shaders/deform.vert's a_direction), after the
 /// nine coefficient attributes 2 .. 10.
 inline constexpr unsigned kDirectionAttribute = 11;
+/// The three rows of the off-axis basis (render/shaders/deform.vert's a_off_x, a_off_y, a_off_z).
+inline constexpr unsigned kOffAxisAttribute = 12;
 
 class LungDrawable {
  public:
@@ -54,6 +56,8 @@ class LungDrawable {
   std::uint32_t coeff_vec4() const { return (coefficients_ + 3) / 4; }
   bool uses_texture() const { return uses_texture_; }
   bool half_float() const { return half_float_; }
+  /// The sliding model's off-axis basis is bound (attributes kOffAxisAttribute .. + 2).
+  bool has_off_axis() const { return has_off_axis_; }
   Basis basis() const { return basis_; }
   const std::vector<LungRange>& lungs() const { return lungs_; }
   bool has_triangles() const { return index_count_ > 0; }
@@ -81,9 +85,10 @@ class LungDrawable {
   std::uint32_t index_count_ = 0;
   bool uses_texture_ = false;
   bool half_float_ = false;
+  bool has_off_axis_ = false;
   Basis basis_ = Basis::SphericalHarmonics;
   std::vector<LungRange> lungs_;
-  gl::Buffer positions_, normals_, directions_, coeffs_, indices_, deformed_;
+  gl::Buffer positions_, normals_, directions_, off_axis_, coeffs_, indices_, deformed_;
   gl::Texture coeff_texture_;
   GLint coeff_texture_width_ = 0;
   gl::VertexArray rest_vao_, rest_plain_vao_, deformed_vao_;

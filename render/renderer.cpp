@@ -20,7 +20,8 @@ Result<Renderer> Renderer::create(const LungDrawable& drawable) {
   r.coefficients_ = drawable.coefficients();
   r.padded_force_.assign(std::size_t{r.coeff_vec4_} * 4, 0.f);
   const std::string layout = "#define COEFF_VEC4 " + std::to_string(r.coeff_vec4_) + "\n#define COEFF_TEXTURE " +
-                             (drawable.uses_texture() ? "1" : "0") + "\n";
+                             (drawable.uses_texture() ? "1" : "0") + "\n#define OFF_AXIS " +
+                             (drawable.has_off_axis() ? "1" : "0") + "\n";
   struct VariantSpec {
     bool deform, cull, capture;
     const char* name;
@@ -42,7 +43,7 @@ Result<Renderer> Renderer::create(const LungDrawable& drawable) {
     if (!program) return fail(program.error());
     Slots& s = r.slots_[v];
     s.program = program.take();
-    s.program.find_uniforms({{&s.force, "u_force"}, {&s.coeff, "u_coeff"}, {&s.coeff_width, "u_coeff_width"},
+    s.program.find_uniforms({{&s.force, "u_force"}, {&s.linear, "u_linear"}, {&s.coeff, "u_coeff"}, {&s.coeff_width, "u_coeff_width"},
                              {&s.mvp, "u_model_view_proj"}, {&s.eye, "u_eye_model"}, {&s.color, "u_color"},
                              {&s.ambient, "u_ambient"}, {&s.point_size, "u_point_size"}});
     glUseProgram(s.program.id());
@@ -93,6 +94,10 @@ void Renderer::set_force(Variant v, const LungFrame& lung) {
   // The shader sees dV * f: eq. (7) scaled by the volume change (D in mm).
   for (std::uint32_t k = 0; k < coefficients_; ++k) padded_force_[k] = lung.volume_change_ml * lung.force[k];
   glUniform4fv(slots_[v].force, static_cast<GLsizei>(coeff_vec4_), padded_force_.data());
+  if (slots_[v].linear >= 0) {
+    const float dv = lung.volume_change_ml;
+    glUniform4f(slots_[v].linear, dv * lung.linear[0], dv * lung.linear[1], dv * lung.linear[2], dv * lung.linear[3]);
+  }
 }
 
 void Renderer::set_eye(Variant v, const glm::mat4& model, const EyeView& eye, const glm::vec3& color,

@@ -40,6 +40,9 @@ struct LungFrame {
   std::span<const float> force;   ///< f_lm, drawable.coefficients() values, mm per mL per unit of T (normalised)
   float volume_change_ml = 0.f;   ///< dV; the shader sees dV * f
   glm::vec3 color{0.9f, 0.45f, 0.45f};
+  /// The linear weights w of the orientation (sim/force/force_sh.h, linear_weights), mm per mL per unit of the
+  /// off-axis basis; the shader sees dV * w. Read only for a drawable with the off-axis part (the sliding model).
+  std::array<float, 4> linear{};
 };
 
 struct FrameInputs {
@@ -84,7 +87,7 @@ class Renderer {
  private:
   struct Slots {
     gl::Program program;
-    GLint force = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1, color = -1, ambient = -1, point_size = -1;
+    GLint force = -1, linear = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1, color = -1, ambient = -1, point_size = -1;
   };
   enum Variant { kDeformCull, kDeformNoCull, kPlainCull, kPlainNoCull, kCapture, kVariants };
 

@@ -118,6 +118,8 @@ void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
   state.lung_in_world = Eigen::Quaterniond(lung.rotation()).normalized();
   state.lung_origin_mm = lung.translation();
   patient_force_sh(asset_, config_.orientation, state.lung_in_world, force_);
+  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
+  for (std::size_t l = 0; l < lung_frames_.size(); ++l) lung_frames_[l].linear = sim::linear_weights(asset_, asset_.lungs[l], g);
 }
 
 const FrameViews& Runtime::head_views(std::int64_t now_ns, std::int64_t display_ns) {
@@ -144,7 +146,8 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
 /// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
 void Runtime::deform_on_cpu(const FrameState& state) {
   if (config_.deform == Deform::Cpu7) {
-    sim::deform_eq7(asset_, force_, state.breath.dv_ml, cpu_positions_);
+    sim::deform_eq7(asset_, force_, sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml,
+                    cpu_positions_);
   } else {
     eq1_->deform(sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml, cpu_positions_);
   }

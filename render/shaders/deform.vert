@@ -1,15 +1,17 @@
 // deform.vert — the paper's stage 3 (eq. 7) per vertex, then Lambert + ambient lighting for point or mesh drawing.
 //
 //   D_I = sum_lm T^I_lm f_lm          (f already multiplied by the volume change dV: D in mm)
-//   p'_I = p_I + D_I e_I              (e_I: the vertex's baked direction of motion; its normal n_I in the paper's
+//   p'_I = p_I + D_I e_I + R_I w      (e_I: the vertex's baked direction of motion; its normal n_I in the paper's
 //                                      model, the principal direction of its vector displacement in the sliding
-//                                      model, docs/design.md "Vector displacement")
+//                                      model; R_I w: the sliding model's off-axis part, its 3x4 basis times the
+//                                      orientation's linear weights; docs/design.md "Vector displacement")
 //
 // The host prepends `#version 300 es` and these defines (render/shader_program.cpp):
 //   DEFORM          1: evaluate eq. (7); 0: draw a_position as given (rest shape, CPU-deformed or captured positions)
 //   COEFF_VEC4      number of vec4 holding the L^2 coefficients (zero-padded to a multiple of 4)
 //   COEFF_TEXTURE   1: coefficients in a float texture fetched by gl_VertexID; 0: vertex attributes
 //   CULL            1: move back-facing points out of the clip volume (points mode); 0: keep all (mesh, capture)
+//   OFF_AXIS        1: add the off-axis part (a sliding-model asset); 0: none (the paper's model)
 // The transform-feedback capture (deform once, then draw both eyes) records v_position.
 
 precision highp float;
@@ -20,6 +22,12 @@ layout(location = 1) in vec3 a_normal;    // outward unit normal n_I
 
 #if DEFORM
 layout(location = 11) in vec3 a_direction;  // e_I, unit (render/lung_drawable.h, kDirectionAttribute)
+#if OFF_AXIS
+layout(location = 12) in vec4 a_off_x;      // row x of R_I: (r0, r_x, r_y, r_z), mm per unit pressure
+layout(location = 13) in vec4 a_off_y;
+layout(location = 14) in vec4 a_off_z;
+uniform vec4 u_linear;                      // dV * w of this vertex's lung
+#endif
 uniform vec4 u_force[COEFF_VEC4];  // dV * f_lm of this vertex's lung, mm per unit of T
 #if COEFF_TEXTURE
 uniform highp sampler2D u_coeff;   // texel (v * COEFF_VEC4 + k) holds T^v_{4k..4k+3}
@@ -108,6 +116,9 @@ float displacement_eq7() {
 void main() {
 #if DEFORM
   vec3 p = a_position + displacement_eq7() * a_direction;  // p' = p + D e
+#if OFF_AXIS
+  p += vec3(dot(a_off_x, u_linear), dot(a_off_y, u_linear), dot(a_off_z, u_linear));  // + R w
+#endif
 #else
   vec3 p = a_position;
 #endif

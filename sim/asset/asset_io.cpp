@@ -175,8 +175,10 @@ std::string validate_asset(const BakedAsset& a) {
   if (a.bands < 1 || a.bands > 8) return "bands: expected 1 to 8, found " + std::to_string(a.bands);
   if (a.lungs.empty() || a.lungs.size() > kMaxLungs) return "lung count: expected 1 to 16";
   if (a.positions.size() != 3 * n || a.normals.size() != 3 * n || a.directions.size() != 3 * n || a.areas.size() != n ||
-      a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n)
+      a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n || (a.has_off_axis() && a.off_axis.size() != 12 * n))
     return "per-vertex arrays: sizes disagree with the vertex count " + std::to_string(n);
+  if ((a.motion_model == MotionModel::sliding) != a.has_off_axis())
+    return "off_axis: expected 12 values a vertex for the sliding model and none for the paper's";
   if (a.triangles.size() % 3 != 0) return "triangles: expected 3 indices a triangle";
   for (std::size_t i = 0; i < a.triangles.size(); ++i)
     if (a.triangles[i] >= n)
@@ -211,7 +213,7 @@ std::string validate_asset(const BakedAsset& a) {
   if (next_vertex != n || next_index != a.triangles.size()) return "lungs: ranges do not cover every vertex and triangle";
   if (!all_finite(a.positions) || !all_finite(a.normals) || !all_finite(a.directions) || !all_finite(a.areas) ||
       !all_finite(a.sh_coeffs) ||
-      !all_finite(a.linear_coeffs))
+      !all_finite(a.linear_coeffs) || !all_finite(a.off_axis))
     return "per-vertex arrays: expected finite numbers";
   if (a.has_transfer_rows()) {
     if (a.transfer_row_ptr.size() != n + 1 || a.transfer_row_ptr.front() != 0 ||
@@ -267,6 +269,7 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   write_section(out, "LOFV", a.lung_of_vertex);
   write_section(out, "SHCO", a.sh_coeffs);
   write_section(out, "LINC", a.linear_coeffs);
+  write_section(out, "OFFA", a.off_axis);
   write_section(out, "TRIS", a.triangles);
   write_section(out, "TROW", a.transfer_row_ptr);
   write_section(out, "TCOL", a.transfer_cols);
@@ -397,6 +400,7 @@ Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& 
   if (!read_into("POSI", 12 * n, a.positions) || !read_into("NORM", 12 * n, a.normals) ||
       (h.version >= 2 && !read_into("MDIR", 12 * n, a.directions)) || !read_into("AREA", 4 * n, a.areas) || !read_into("LOFV", n, a.lung_of_vertex) ||
       !read_into("SHCO", 4 * n * c, a.sh_coeffs) || !read_into("LINC", 16 * n, a.linear_coeffs) ||
+      (h.version >= 2 && !read_into("OFFA", a.motion_model == MotionModel::sliding ? 48 * n : 0, a.off_axis)) ||
       !read_into("TRIS", 12ull * h.triangles, a.triangles) ||
       !read_into("TROW", rows ? 4 * (n + 1) : 0, a.transfer_row_ptr) || !read_into("TCOL", 4 * h.nnz, a.transfer_cols) ||
       !read_into("TVAL", 4 * h.nnz, a.transfer_vals)) {

@@ -4,8 +4,9 @@
 /// Layout (little-endian): magic "LUNGBAKE", u32 version, then sections, each a 4-character tag, a u64
 /// payload length, the payload and the payload's CRC-32. Sections, in order: HEAD (bands, vertex, triangle and
 /// lung counts, transfer nnz, p0, gamma, l, epsilon), MODL (u32 motion model: 0 paper, 1 sliding), LUNG (per-lung
-/// records), POSI, NORM, MDIR (each vertex's direction of motion), AREA, LOFV, SHCO, LINC, TRIS, TROW, TCOL, TVAL
-/// (the last three empty when the asset holds no explicit transfer rows). Version 1 files (no MODL, no MDIR)
+/// records), POSI, NORM, MDIR (each vertex's direction of motion), AREA, LOFV, SHCO, LINC, OFFA (the sliding model's
+/// off-axis linear basis, 12 floats a vertex; empty for the paper's model), TRIS, TROW, TCOL, TVAL (the last three
+/// empty when the asset holds no explicit transfer rows). Version 1 files (no MODL, no MDIR)
 /// still load, as the paper's model with directions equal to the normals.
 #pragma once
 

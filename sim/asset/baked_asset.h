@@ -72,6 +72,13 @@ struct BakedAsset {
   std::vector<std::uint8_t> lung_of_vertex;  ///< index into lungs
   std::vector<float> sh_coeffs;          ///< L^2 per vertex: T^I_lm
   std::vector<float> linear_coeffs;      ///< 4 per vertex: tau0, tau_x, tau_y, tau_z (exact linear basis)
+  /// Sliding model (empty for the paper's): 12 per vertex, the part of the vector linear basis off the direction
+  /// e_I, r = tau_vec - e (e . tau_vec), as three rows x, y, z of (r0, r_x, r_y, r_z), mm per unit pressure.
+  /// The vertex moves by D e + r . w, w the linear weights of the orientation (sim/force/force_sh.h,
+  /// linear_weights), so that the linear pressure's full vector displacement is exact and only its part along
+  /// e carries the SH (docs/design.md, "Vector displacement").
+  std::vector<float> off_axis;
+  bool has_off_axis() const { return !off_axis.empty(); }
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
 

@@ -88,7 +88,8 @@ Status bake_one(LungWork& w, const BakeOptions& opt, const Workers& workers, std
   moments.col(0) = w.y.leftCols(c).transpose() * w.areas;
   moments.rightCols(3) = w.y.leftCols(c).transpose() * w.areas.asDiagonal() * w.offsets;
   w.force_basis = gram.solve(moments);
-  w.volume_basis = w.x.rightCols(4).transpose() * w.volume_weights;  // sum_I A_I (e_I . n_I) tau_I, mm^3
+  // sum_I A_I n_I . (e_I tau_I + r_I): the swept volume of the whole displacement, mm^3 per unit pressure
+  w.volume_basis = w.x.rightCols(4).transpose() * w.volume_weights + w.off_axis_volume;
 
   auto t2 = Clock::now();
   if (opt.transfer_rows)
@@ -149,6 +150,7 @@ void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::si
     a.areas.push_back(static_cast<float>(w.geometry.areas[i]));
     a.lung_of_vertex.push_back(static_cast<std::uint8_t>(lung_index));
     for (std::uint32_t j = 0; j < c; ++j) a.sh_coeffs.push_back(static_cast<float>(w.x(i, j)));
+    for (Eigen::Index j = 0; j < w.off_axis.cols(); ++j) a.off_axis.push_back(static_cast<float>(w.off_axis(i, j)));
     for (int j = 0; j < 4; ++j) a.linear_coeffs.push_back(static_cast<float>(w.x(i, w.c_solved + j)));
   }
   for (const Triangle& t : w.mesh.triangles)
@@ -176,7 +178,12 @@ void fill_paper_forces(BakedAsset& a) {
 double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share) {
   const Eigen::Index c = w.c_solved;
   const Eigen::VectorXd d = opt.p0 * w.x.col(c) - opt.gamma_per_mm * w.x.col(c + 3);  // g = (0, 0, -1)
-  const double linear = w.volume_weights.dot(d);
+  Eigen::MatrixXd off = Eigen::MatrixXd::Zero(d.size(), 3);  // the off-axis part, upright
+  for (int k = 0; k < 3 && w.off_axis.size() > 0; ++k)
+    off.col(k) = opt.p0 * w.off_axis.col(4 * k) - opt.gamma_per_mm * w.off_axis.col(4 * k + 3);
+  double off_volume = 0;
+  for (Eigen::Index i = 0; i < d.size(); ++i) off_volume += w.areas[i] * off.row(i).dot(w.geometry.normals[static_cast<std::size_t>(i)]);
+  const double linear = w.volume_weights.dot(d) + off_volume;
   const double target = kTidalVolumeMl * 1000.0 * share;
   if (!(linear > 0)) return 1.0;
   TriMesh moved = w.mesh;
@@ -184,8 +191,9 @@ double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share
   double t = target / linear;
   for (int iteration = 0; iteration < 6; ++iteration) {
     for (std::size_t i = 0; i < moved.positions.size(); ++i)
-      moved.positions[i] = w.mesh.positions[i] +
-                           t * d[static_cast<Eigen::Index>(i)] * w.directions.row(static_cast<Eigen::Index>(i)).transpose();
+      moved.positions[i] = w.mesh.positions[i] + t * (d[static_cast<Eigen::Index>(i)] *
+                                                         w.directions.row(static_cast<Eigen::Index>(i)).transpose() +
+                                                     off.row(static_cast<Eigen::Index>(i)).transpose());
     const double change = enclosed_volume(moved) - rest;
     if (!(change > 0)) return 1.0;
     t *= target / change;

@@ -33,6 +33,10 @@ struct LungWork {
   /// Sliding: the exact vector displacements of the four linear pressures, N x 12, component c's tau0, tau_x,
   /// tau_y, tau_z in columns 4c .. 4c + 3 (the report measures the projection onto e_I against them).
   Eigen::MatrixXd vector_linear;
+  /// Sliding: r = tau_vec - e (e . tau_vec), N x 12 in the asset's layout (row c: r0_c, r_x c, r_y c, r_z c), and
+  /// its swept volumes sum_I A_I n_I . r_j (4), which join the volume basis.
+  Eigen::MatrixXd off_axis;
+  Eigen::Vector4d off_axis_volume = Eigen::Vector4d::Zero();
   SphereMapResult sphere;         ///< u_I of the SH fit, its folds and area distortion
   int c_solved = 0;               ///< SH fields solved: L^2, or 64 when the report sweeps the bands
   Eigen::MatrixXd y;              ///< N x c_solved, Y_lm(u_I)

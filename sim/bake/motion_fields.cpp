@@ -80,7 +80,20 @@ void solve_motion_fields(LungWork& w, MotionModel model, const BakeOptions& opt,
   w.x.rightCols(4).setZero();
   for (int k = 0; k < 3; ++k)
     w.x.rightCols(4) += w.directions.col(k).asDiagonal() * w.vector_linear.middleCols(4 * k, 4);
-  w.volume_weights = w.areas.cwiseProduct(w.directions.cwiseProduct(normals_matrix(w)).rowwise().sum());
+  const Eigen::MatrixXd normals = normals_matrix(w);
+  w.volume_weights = w.areas.cwiseProduct(w.directions.cwiseProduct(normals).rowwise().sum());
+  // The off-axis part: each basis vector less its projection onto e_I.
+  w.off_axis.resize(n, 12);
+  w.off_axis_volume.setZero();
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (int j = 0; j < 4; ++j) {
+      Eigen::Vector3d tau;
+      for (int c = 0; c < 3; ++c) tau[c] = w.vector_linear(i, 4 * c + j);
+      const Eigen::Vector3d e = w.directions.row(i).transpose();
+      const Eigen::Vector3d r = tau - e * e.dot(tau);
+      for (int c = 0; c < 3; ++c) w.off_axis(i, 4 * c + j) = r[c];
+      w.off_axis_volume[j] += w.areas[i] * normals.row(i).dot(r);
+    }
 }
 
 Eigen::MatrixXd solve_sh_fields(const LungWork& w, MotionModel model, const Eigen::MatrixXd& y,

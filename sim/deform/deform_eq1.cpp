@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cstdint>
 
+#include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::sim {
@@ -43,9 +44,12 @@ void Eq1Deformer::deform(const Eigen::Vector3d& g, double delta_volume_ml, std::
   displacement_eq1(asset_, force_, d_);
   for (const BakedLung& lung : asset_.lungs) {
     const auto scale = static_cast<float>(delta_volume_ml * lung.volume_share);
-    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i)
+    const std::array<float, 4> w = linear_weights(asset_, lung, g);
+    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)
         positions_out[3 * i + k] = asset_.positions[3 * i + k] + scale * d_[i] * asset_.directions[3 * i + k];
+      add_off_axis(asset_, i, w, scale, &positions_out[3 * i]);
+    }
   }
 }
 

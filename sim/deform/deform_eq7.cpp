@@ -27,30 +27,30 @@ void displacement_eq7(const BakedAsset& asset, std::span<const float> force_sh, 
   }
 }
 
-void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, double delta_volume_ml,
-                std::span<float> positions_out) {
+void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, const Eigen::Vector3d& g,
+                double delta_volume_ml, std::span<float> positions_out) {
   const std::size_t c = asset.coefficients();
   assert(positions_out.size() >= 3 * std::size_t{asset.vertex_count()});
   for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
     const BakedLung& lung = asset.lungs[l];
     const auto scale = static_cast<float>(delta_volume_ml * lung.volume_share);
+    const std::array<float, 4> w = linear_weights(asset, lung, g);
     const Eigen::Map<const Eigen::VectorXf> f(force_sh.data() + l * c, static_cast<Eigen::Index>(c));
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       const Eigen::Map<const Eigen::VectorXf> t(asset.sh_coeffs.data() + i * c, static_cast<Eigen::Index>(c));
       const float move = scale * t.dot(f);
       for (int k = 0; k < 3; ++k) positions_out[3 * i + k] = asset.positions[3 * i + k] + move * asset.directions[3 * i + k];
+      add_off_axis(asset, i, w, scale, &positions_out[3 * i]);
     }
   }
 }
 
 void displacement_linear(const BakedAsset& asset, const Eigen::Vector3d& g, std::span<float> d_out) {
   for (const BakedLung& lung : asset.lungs) {
-    const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);
-    const double w0 = asset.p0 * scale, wx = asset.gamma_per_mm * g.x() * scale,
-                 wy = asset.gamma_per_mm * g.y() * scale, wz = asset.gamma_per_mm * g.z() * scale;
+    const std::array<float, 4> w = linear_weights(asset, lung, g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       const float* tau = asset.linear_coeffs.data() + 4 * i;
-      d_out[i] = static_cast<float>(w0 * tau[0] + wx * tau[1] + wy * tau[2] + wz * tau[3]);
+      d_out[i] = w[0] * tau[0] + w[1] * tau[1] + w[2] * tau[2] + w[3] * tau[3];
     }
   }
 }

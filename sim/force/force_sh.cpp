@@ -30,6 +30,13 @@ double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Ei
          asset.gamma_per_mm * (g.x() * lung.volume_grad[0] + g.y() * lung.volume_grad[1] + g.z() * lung.volume_grad[2]);
 }
 
+std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g) {
+  const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);
+  const double gamma = asset.gamma_per_mm * scale;
+  return {static_cast<float>(asset.p0 * scale), static_cast<float>(gamma * g.x()), static_cast<float>(gamma * g.y()),
+          static_cast<float>(gamma * g.z())};
+}
+
 void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g, float* out) {
   const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);  // mm^3 per mL
   const double a = asset.p0 * scale, gx = asset.gamma_per_mm * g.x() * scale,

@@ -4,6 +4,8 @@
 ///        no allocation.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "config/base/enum_names.h"
@@ -33,6 +35,10 @@ void force_sh_paper(const BakedLung& lung, std::uint32_t coefficients, const Eig
 
 /// Both lungs' force SH (lungs x L^2 values, lung-major) in the selected mode.
 void force_sh(const BakedAsset& asset, ForceMode mode, const Eigen::Quaterniond& lung_in_world, float* out);
+
+/// The weights of the linear basis for g, mm per mL per unit of tau: (p0, gamma g_x, gamma g_y, gamma g_z) *
+/// 1000 / V(g). D = w . tau is the exact linear displacement along e_I; r . w the off-axis part.
+std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung);
 
 /// The swept volume (mm^3) that the unnormalised force produces for g: p0 v0 + gamma g.v.
 double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung);

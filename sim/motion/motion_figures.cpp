@@ -81,9 +81,12 @@ std::vector<float> displacement_vectors(const BakedAsset& a, const Eigen::Vector
   displacement_eq7(a, force, scalar);
   for (const BakedLung& lung : a.lungs) {
     const double scale = delta_volume_ml * lung.volume_share;
-    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i)
+    const std::array<float, 4> w = linear_weights(a, lung, g);
+    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)
         out[3 * i + k] = static_cast<float>(scale * scalar[i] * a.directions[3 * i + k]);
+      add_off_axis(a, i, w, static_cast<float>(scale), &out[3 * i]);
+    }
   }
   return out;
 }

@@ -14,7 +14,7 @@ SlidingFaces default_sliding_faces() {
   f.tether[at(SurfaceRegion::diaphragmatic)] = 0.03;
   f.tether[at(SurfaceRegion::mediastinal)] = 2.0;
   f.tether[at(SurfaceRegion::apical)] = 4.0;
-  f.drive[at(SurfaceRegion::costal)] = 0.15;
+  f.drive[at(SurfaceRegion::costal)] = 0.10;
   f.drive[at(SurfaceRegion::diaphragmatic)] = 1.0;
   f.drive[at(SurfaceRegion::mediastinal)] = 0.0;
   f.drive[at(SurfaceRegion::apical)] = 0.0;

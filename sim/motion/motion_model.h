@@ -10,8 +10,8 @@
 ///   bucket-handle motion; mediastinal and apical: none) and a tether factor s per face (diaphragmatic and
 ///   costal: weak, so the face follows the diaphragm and slides; mediastinal and apical: strong, held at the
 ///   hilum and in the cupola). Each vertex then moves along one baked direction e_I, the principal direction of
-///   its displacement over every orientation, so that the run time is the paper's: D = sum f_lm T^I_lm, p' =
-///   p + D e_I.
+///   its displacement over every orientation, so that the run time is the paper's, D = sum f_lm T^I_lm, p' =
+///   p + D e_I, plus an off-axis part exact for the linear pressure (sim/asset/baked_asset.h, off_axis).
 #pragma once
 
 #include <Eigen/Core>

@@ -72,12 +72,13 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
     std::uniform_real_distribution<float> u(-scale, scale);
     for (float& x : force) x = u(rng);
     const double dv = 500.0;
+    const Eigen::Vector3d g = Eigen::Vector3d(seed, 1.0, -2.0).normalized();  // the off-axis part's orientation
     std::vector<float> expected(a.positions.size());
-    sim::deform_eq7(a, force, dv, expected);
+    sim::deform_eq7(a, force, g, dv, expected);
     std::vector<LungFrame> lungs;
     for (std::size_t i = 0; i < a.lungs.size(); ++i) {
       lungs.push_back({std::span<const float>(force).subspan(i * nc, nc),
-                       static_cast<float>(dv * a.lungs[i].volume_share), {}});
+                       static_cast<float>(dv * a.lungs[i].volume_share), {}, sim::linear_weights(a, a.lungs[i], g)});
     }
     std::vector<float> captured;
     ASSERT_TRUE(renderer->capture_deformed(*drawable, lungs, captured));

@@ -162,7 +162,7 @@ TEST(Deform, PositionsMoveAlongNormalsByTheirShareOfTheVolume) {
   std::vector<float> force(a.lungs.size() * c), d(a.vertex_count()), moved(3 * a.vertex_count());
   force_sh(a, ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
   displacement_eq7(a, force, d);
-  deform_eq7(a, force, 250.0, moved);
+  deform_eq7(a, force, g, 250.0, moved);
   for (std::uint32_t i = 0; i < a.vertex_count(); i += 97) {
     const double share = a.lungs[a.lung_of_vertex[i]].volume_share;
     for (int k = 0; k < 3; ++k)

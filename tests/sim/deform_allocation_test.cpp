@@ -31,7 +31,7 @@ TEST(Allocation, PerFrameDeformationAllocatesNothing) {
     const Eigen::Quaterniond q = axis_rotation(frame % 3, 0.1 * frame);
     force_sh(a, ForceMode::exact, q, force.data());
     force_sh(a, ForceMode::paper, q, force.data());
-    deform_eq7(a, force, 10.0 * frame, positions);
+    deform_eq7(a, force, gravity_in_lung_frame(q), 10.0 * frame, positions);
     eq1.deform(gravity_in_lung_frame(q), 10.0 * frame, positions);
   }
   EXPECT_EQ(lungar::testing::g_allocations.load() - before, 0);

@@ -123,9 +123,10 @@ TEST(SlidingModel, DirectionsAreUnitAndPointWhereTheVertexMoves) {
 }
 
 /// The sliding model's exact eq. (1) by fresh solves: u = K^-1 (A p b) per component with the sliding tethers,
-/// projected onto each vertex's direction, in mm per mL.
-std::vector<double> exact_sliding(const BakedAsset& a, const Eigen::Vector3d& g) {
+/// projected onto each vertex's direction, in mm per mL; `vectors` gets u itself (3 per vertex, mm per mL).
+std::vector<double> exact_sliding(const BakedAsset& a, const Eigen::Vector3d& g, std::vector<double>* vectors = nullptr) {
   std::vector<double> d(a.vertex_count());
+  if (vectors) vectors->assign(3 * std::size_t{a.vertex_count()}, 0.0);
   for (const BakedLung& lung : a.lungs) {
     const TriMesh m = lung_mesh(a, lung);
     const VertexGeometry geo = vertex_geometry(m);
@@ -146,6 +147,7 @@ std::vector<double> exact_sliding(const BakedAsset& a, const Eigen::Vector3d& g)
       const float* e = &a.directions[3 * (lung.first_vertex + j)];
       const auto row = static_cast<Eigen::Index>(j);
       d[lung.first_vertex + j] = scale * (e[0] * u(row, 0) + e[1] * u(row, 1) + e[2] * u(row, 2));
+      for (int k = 0; vectors && k < 3; ++k) (*vectors)[3 * (lung.first_vertex + j) + k] = scale * u(row, k);
     }
   }
   return d;
@@ -158,13 +160,29 @@ TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
     std::vector<float> force(a.lungs.size() * c), d7(a.vertex_count());
     for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
     displacement_eq7(a, force, d7);
-    const std::vector<double> exact = exact_sliding(a, g);
+    std::vector<double> u;
+    const std::vector<double> exact = exact_sliding(a, g, &u);
     double num = 0, den = 0;
     for (std::size_t i = 0; i < exact.size(); ++i) {
       num += (d7[i] - exact[i]) * (d7[i] - exact[i]);
       den += exact[i] * exact[i];
     }
-    EXPECT_LT(std::sqrt(num / den), 0.02) << "g = " << g.transpose();
+    EXPECT_LT(std::sqrt(num / den), 0.02) << "along e_I, g = " << g.transpose();
+    // The whole vector the runtime moves a vertex by (D e_I plus the off-axis part) against the exact u.
+    const std::vector<float> moved = displacement_vectors(a, g, 1.0);
+    double vnum = 0, vden = 0, along_num = 0;
+    for (std::size_t i = 0; i < a.vertex_count(); ++i) {
+      const double share = a.lungs[a.lung_of_vertex[i]].volume_share;
+      for (int k = 0; k < 3; ++k) {
+        const double exact_k = share * u[3 * i + k];
+        vnum += (moved[3 * i + k] - exact_k) * (moved[3 * i + k] - exact_k);
+        vden += exact_k * exact_k;
+        const double along = share * exact[i] * a.directions[3 * i + k];
+        along_num += (along - exact_k) * (along - exact_k);
+      }
+    }
+    EXPECT_LT(std::sqrt(vnum / vden), 0.02) << "the vector, g = " << g.transpose();
+    EXPECT_GT(std::sqrt(along_num / vden), 0.03) << "e_I alone misses a part the off-axis basis carries";
   }
   EXPECT_LT(sliding_bake().report.eq7_rms_rel_error, 0.02);
   EXPECT_NEAR(sliding_bake().report.alpha, 1.0, 0.01);
@@ -194,7 +212,7 @@ TEST(SlidingModel, TheCpuEq1RowsFollowTheSlidingModel) {
   const std::uint32_t c = out.asset.coefficients();
   std::vector<float> force(out.asset.lungs.size() * c);
   force_sh(out.asset, ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
-  deform_eq7(out.asset, force, 500, moved7);
+  deform_eq7(out.asset, force, kUpright, 500, moved7);
   double num = 0, den = 0;
   for (std::size_t i = 0; i < moved1.size(); ++i) {
     const double d7 = moved7[i] - out.asset.positions[i], d1 = moved1[i] - out.asset.positions[i];

@@ -141,7 +141,7 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
         break;
       case CpuWork::Eq7:
         sim::force_sh(a, sim::ForceMode::exact, q, force.data());
-        sim::deform_eq7(a, force, dv, positions);
+        sim::deform_eq7(a, force, sim::gravity_in_lung_frame(q), dv, positions);
         break;
       case CpuWork::Eq1:
         if (eq1) eq1->deform(sim::gravity_in_lung_frame(q), dv, positions);

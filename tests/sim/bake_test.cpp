@@ -20,21 +20,8 @@
 namespace lungar::sim {
 namespace {
 
+using test::lung_mesh;
 using test::small_bake;
-
-/// Rebuilds one lung's surface from the asset (what the runtime has) to solve eq. (1) independently.
-TriMesh lung_mesh(const BakedAsset& a, const BakedLung& lung) {
-  TriMesh m;
-  for (std::uint32_t i = 0; i < lung.vertex_count; ++i) {
-    const float* p = &a.positions[3 * (lung.first_vertex + i)];
-    m.positions.emplace_back(p[0], p[1], p[2]);
-  }
-  for (std::uint32_t t = 0; t < lung.index_count; t += 3) {
-    const std::uint32_t* v = &a.triangles[lung.first_index + t];
-    m.triangles.push_back({v[0] - lung.first_vertex, v[1] - lung.first_vertex, v[2] - lung.first_vertex});
-  }
-  return m;
-}
 
 /// Exact eq. (1) for gravity g, mm per mL, by one fresh sparse solve per lung.
 std::vector<double> exact_eq1(const BakedAsset& a, const Eigen::Vector3d& g) {

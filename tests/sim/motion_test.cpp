@@ -20,24 +20,11 @@
 namespace lungar::sim {
 namespace {
 
+using test::lung_mesh;
 using test::sliding_bake;
 using test::small_bake;
 
 const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kUpright(0, 0, -1);
-
-/// One lung of the asset as a mesh with its rest positions (what the runtime has).
-TriMesh lung_mesh(const BakedAsset& a, const BakedLung& lung) {
-  TriMesh m;
-  for (std::uint32_t i = 0; i < lung.vertex_count; ++i) {
-    const float* p = &a.positions[3 * (lung.first_vertex + i)];
-    m.positions.emplace_back(p[0], p[1], p[2]);
-  }
-  for (std::uint32_t t = 0; t < lung.index_count; t += 3) {
-    const std::uint32_t* v = &a.triangles[lung.first_index + t];
-    m.triangles.push_back({v[0] - lung.first_vertex, v[1] - lung.first_vertex, v[2] - lung.first_vertex});
-  }
-  return m;
-}
 
 std::vector<SurfaceRegion> asset_regions(const BakedAsset& a) {
   std::vector<SurfaceRegion> out;

@@ -43,6 +43,20 @@ inline const BakeOutput& sliding_bake() {
   return out;
 }
 
+/// One lung's surface rebuilt from the asset (what the runtime has), to solve eq. (1) afresh from it.
+inline TriMesh lung_mesh(const BakedAsset& a, const BakedLung& lung) {
+  TriMesh m;
+  for (std::uint32_t i = 0; i < lung.vertex_count; ++i) {
+    const float* p = &a.positions[3 * (lung.first_vertex + i)];
+    m.positions.emplace_back(p[0], p[1], p[2]);
+  }
+  for (std::uint32_t t = 0; t < lung.index_count; t += 3) {
+    const std::uint32_t* v = &a.triangles[lung.first_index + t];
+    m.triangles.push_back({v[0] - lung.first_vertex, v[1] - lung.first_vertex, v[2] - lung.first_vertex});
+  }
+  return m;
+}
+
 /// A fresh, empty folder under the system's temporary folder, removed with the object.
 class TempDir {
  public:

@@ -7,9 +7,18 @@
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "sim/breathing/driver.h"
 
 namespace lungar::sim::testing {
+
+/// The driver for `p`, shared by the breathing suites; the test fails when `p` is refused.
+inline BreathingDriver make(const BreathingParams& p) {
+  auto c = BreathingDriver::create(p);
+  EXPECT_TRUE(c) << c.error();
+  return std::move(*c);
+}
 
 inline std::vector<BreathingSample> trace(const BreathingDriver& d, double t0, double t1, double dt) {
   std::vector<BreathingSample> out;

@@ -15,12 +15,6 @@ using namespace lungar::sim::testing;
 
 namespace {
 
-BreathingDriver make(const BreathingParams& p) {
-  auto c = BreathingDriver::create(p);
-  EXPECT_TRUE(c) << c.error();
-  return std::move(*c);
-}
-
 PatternChange preset(Preset p) {
   PatternChange c;
   c.preset = p;

@@ -18,12 +18,6 @@ using namespace lungar::sim::testing;
 
 namespace {
 
-BreathingDriver make(const BreathingParams& p) {
-  auto c = BreathingDriver::create(p);
-  EXPECT_TRUE(c) << c.error();
-  return std::move(*c);
-}
-
 Pattern solved(const BreathingParams& p) {
   Pattern pat;
   pat.params = p;

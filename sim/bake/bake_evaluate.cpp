@@ -275,9 +275,8 @@ void physiology(const BakedAsset& a, BakeReport& report) {
   report.displacement_max_mm_at_tidal = max_mm;
   std::vector<float> displaced(3 * n);
   deform_eq7(a, force, upright, kTidalMl, displaced);
-  std::vector<Triangle> tris(a.triangles.size() / 3);
-  for (std::size_t t = 0; t < tris.size(); ++t) tris[t] = {a.triangles[3 * t], a.triangles[3 * t + 1], a.triangles[3 * t + 2]};
-  const double rest = enclosed_volume(tris, a.positions.data()), moved = enclosed_volume(tris, displaced.data());
+  const double rest = enclosed_volume(a.triangles, a.positions.data());
+  const double moved = enclosed_volume(a.triangles, displaced.data());
   report.tidal_volume_rel_error = ((moved - rest) / 1000.0 - kTidalMl) / kTidalMl;
   const double apex_base = end_ratio(a, d7, 2, 0.15);  // apex is high z
   report.base_apex_displacement_ratio = apex_base > 0 ? 1.0 / apex_base : 0.0;

@@ -33,14 +33,12 @@ Result<Eigen::Vector3d> command_gravity(const ExportCommand& c) {
 std::vector<float> exact_volume_displacement(const BakedAsset& a, const Eigen::Vector3d& g, double volume_ml,
                                              std::vector<float>& moved) {
   std::vector<float> d = displacement_vectors(a, g, volume_ml);
-  std::vector<Triangle> tris(a.triangles.size() / 3);
-  for (std::size_t t = 0; t < tris.size(); ++t) tris[t] = {a.triangles[3 * t], a.triangles[3 * t + 1], a.triangles[3 * t + 2]};
-  const double rest = enclosed_volume(tris, a.positions.data()), target = volume_ml * 1000.0;
+  const double rest = enclosed_volume(a.triangles, a.positions.data()), target = volume_ml * 1000.0;
   double k = 1.0;
   moved.resize(a.positions.size());
   for (int step = 0; step < 6; ++step) {
     for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + static_cast<float>(k) * d[i];
-    const double change = enclosed_volume(tris, moved.data()) - rest;
+    const double change = enclosed_volume(a.triangles, moved.data()) - rest;
     if (target == 0 || change == 0 || std::abs(change - target) <= 1e-6 * std::abs(target)) break;
     k *= target / change;
   }

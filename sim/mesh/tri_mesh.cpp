@@ -33,9 +33,10 @@ double enclosed_volume(const TriMesh& mesh) {
   return six_v / 6.0;
 }
 
-double enclosed_volume(const std::vector<Triangle>& triangles, const float* xyz) {
+double enclosed_volume(std::span<const std::uint32_t> indices, const float* xyz) {
   double six_v = 0;
-  for (const Triangle& t : triangles) {
+  for (std::size_t k = 0; k + 2 < indices.size(); k += 3) {
+    const std::uint32_t* t = &indices[k];
     const Eigen::Vector3d a(xyz[3 * t[0]], xyz[3 * t[0] + 1], xyz[3 * t[0] + 2]);
     const Eigen::Vector3d b(xyz[3 * t[1]], xyz[3 * t[1] + 1], xyz[3 * t[1] + 2]);
     const Eigen::Vector3d c(xyz[3 * t[2]], xyz[3 * t[2] + 1], xyz[3 * t[2] + 2]);

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,9 @@ VertexGeometry vertex_geometry(const TriMesh& mesh);
 /// Signed enclosed volume (divergence theorem), mm^3; positive when the triangles face outward.
 double enclosed_volume(const TriMesh& mesh);
 
-/// Enclosed volume of the same connectivity with other vertex positions (3 floats a vertex), mm^3.
-double enclosed_volume(const std::vector<Triangle>& triangles, const float* positions_xyz);
+/// Enclosed volume of a flat index list (3 vertex indices a triangle, as a baked asset stores them) with vertex
+/// positions `positions_xyz` (3 floats a vertex), mm^3.
+double enclosed_volume(std::span<const std::uint32_t> triangle_indices, const float* positions_xyz);
 
 /// Centroid of the enclosed solid (mm); needs a non-zero volume.
 Eigen::Vector3d volume_centroid(const TriMesh& mesh);

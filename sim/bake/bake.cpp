@@ -69,7 +69,8 @@ Status bake_one(LungWork& w, const BakeOptions& opt, const Workers& workers, std
   check_cancel(workers);
 
   t0 = Clock::now();
-  w.k = model_stiffness(w, opt.model, opt);
+  w.regions = surface_regions(w, opt);
+  w.k = model_stiffness(w, opt.model, opt, w.drive);
   if (progress) progress("factorise", 0.0);
   w.solver = std::make_unique<TransferSolver>(w.k);
   if (!w.solver->error().empty()) return fail(who + ": " + w.solver->error());
@@ -178,12 +179,10 @@ void fill_paper_forces(BakedAsset& a) {
 double tidal_calibration(const LungWork& w, const BakeOptions& opt, double share) {
   const Eigen::Index c = w.c_solved;
   const Eigen::VectorXd d = opt.p0 * w.x.col(c) - opt.gamma_per_mm * w.x.col(c + 3);  // g = (0, 0, -1)
-  Eigen::MatrixXd off = Eigen::MatrixXd::Zero(d.size(), 3);  // the off-axis part, upright
-  for (int k = 0; k < 3 && w.off_axis.size() > 0; ++k)
-    off.col(k) = opt.p0 * w.off_axis.col(4 * k) - opt.gamma_per_mm * w.off_axis.col(4 * k + 3);
-  double off_volume = 0;
-  for (Eigen::Index i = 0; i < d.size(); ++i) off_volume += w.areas[i] * off.row(i).dot(w.geometry.normals[static_cast<std::size_t>(i)]);
-  const double linear = w.volume_weights.dot(d) + off_volume;
+  const Eigen::MatrixXd off = w.off_axis.size() > 0  // the off-axis part, upright
+                                  ? linear_displacement(w.off_axis, opt.p0, opt.gamma_per_mm, Eigen::Vector3d(0, 0, -1))
+                                  : Eigen::MatrixXd::Zero(d.size(), 3);
+  const double linear = w.volume_weights.dot(d) + swept_volume(w, off);
   const double target = kTidalVolumeMl * 1000.0 * share;
   if (!(linear > 0)) return 1.0;
   TriMesh moved = w.mesh;

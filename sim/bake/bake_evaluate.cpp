@@ -87,17 +87,6 @@ ExactEq1 exact_eq1(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   return e;
 }
 
-/// The sliding model's exact vector displacement of local vertex i of a lung for gravity g, mm per mL.
-Eigen::Vector3d exact_vector(const LungWork& w, const BakeOptions& opt, Eigen::Index i, const Eigen::Vector3d& g,
-                             double scale) {
-  Eigen::Vector3d u;
-  for (int c = 0; c < 3; ++c) {
-    const auto col = [&](int j) { return w.vector_linear(i, 4 * c + j); };
-    u[c] = scale * (opt.p0 * col(0) + opt.gamma_per_mm * (g.x() * col(1) + g.y() * col(2) + g.z() * col(3)));
-  }
-  return u;
-}
-
 /// eq. (7), the paper's interpolation, the linear basis and the truncated rows through the float asset, as the
 /// runtime computes them, against the exact eq. (1); eq. (7) also per lung. For the sliding model eq. (7) is the
 /// vector the runtime moves a vertex by, D e_I plus the off-axis part, against the exact vector Green's function;
@@ -119,7 +108,13 @@ void float_errors(const std::vector<std::unique_ptr<LungWork>>& work, const Bake
     displacement_eq7(a, paper_force, dp);
     displacement_linear(a, g, dl);
     std::vector<std::array<float, 4>> weights;
-    for (const BakedLung& lung : a.lungs) weights.push_back(linear_weights(a, lung, g));
+    std::vector<Eigen::MatrixXd> exact_vectors;  // sliding: each lung's exact vector displacement, mm per mL
+    for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+      weights.push_back(linear_weights(a, a.lungs[l], g));
+      if (opt.model == MotionModel::sliding)
+        exact_vectors.push_back(exact.scales[l][static_cast<Eigen::Index>(k)] *
+                                linear_displacement(work[l]->vector_linear, opt.p0, opt.gamma_per_mm, g));
+    }
     if (a.has_transfer_rows()) {
       applied_force(a, g, f1);
       displacement_eq1(a, f1, d1);
@@ -131,7 +126,7 @@ void float_errors(const std::vector<std::unique_ptr<LungWork>>& work, const Bake
         // The vector as the runtime moves the vertex, D e + r . w, against the exact vector displacement.
         const std::size_t l = a.lung_of_vertex[i];
         const auto local = static_cast<Eigen::Index>(i - a.lungs[l].first_vertex);
-        const Eigen::Vector3d u = exact_vector(*work[l], opt, local, g, exact.scales[l][col]);
+        const Eigen::Vector3d u = exact_vectors[l].row(local).transpose();
         const Eigen::Vector3d dir = work[l]->directions.row(local).transpose();
         float moved[3] = {d7[i] * a.directions[3 * i], d7[i] * a.directions[3 * i + 1], d7[i] * a.directions[3 * i + 2]};
         add_off_axis(a, i, weights[l], 1.0f, moved);
@@ -297,11 +292,8 @@ std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& ba
   for (std::size_t l = 0; l < work.size(); ++l) {
     const BakedLung& lung = a.lungs[l];
     const Eigen::Index n = basis[l].rows();
-    Eigen::MatrixXd u(n, 3);
-    for (int c = 0; c < 3; ++c)
-      u.col(c) = opt.p0 * basis[l].col(4 * c) + opt.gamma_per_mm * (basis[l].middleCols(4 * c + 1, 3) * g);
-    double swept = 0;
-    for (Eigen::Index i = 0; i < n; ++i) swept += work[l]->areas[i] * u.row(i).dot(work[l]->geometry.normals[static_cast<std::size_t>(i)]);
+    const Eigen::MatrixXd u = linear_displacement(basis[l], opt.p0, opt.gamma_per_mm, g);
+    const double swept = swept_volume(*work[l], u);
     const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * lung.volume_share / swept : 0.0;
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) out[3 * (lung.first_vertex + static_cast<std::size_t>(i)) + c] = static_cast<float>(scale * u(i, c));

@@ -43,15 +43,19 @@ Eigen::MatrixXd normals_matrix(const LungWork& w) {
 
 }  // namespace
 
-Eigen::SparseMatrix<double> model_stiffness(LungWork& w, MotionModel model, const BakeOptions& opt) {
-  const double centre_x = w.centre.x();
-  w.regions = classify_surface(w.mesh, w.geometry.normals, medial_direction(w.name, centre_x, w.midline_x),
-                               opt.regions);
+std::vector<SurfaceRegion> surface_regions(const LungWork& w, const BakeOptions& opt) {
+  return classify_surface(w.mesh, w.geometry.normals, medial_direction(w.name, w.centre.x(), w.midline_x),
+                          opt.regions);
+}
+
+Eigen::SparseMatrix<double> model_stiffness(const LungWork& w, MotionModel model, const BakeOptions& opt,
+                                            Eigen::MatrixXd& drive) {
   std::vector<double> tether_areas = w.geometry.areas;
+  drive.resize(0, 3);
   if (model == MotionModel::sliding) {
     MotionBoundary b = sliding_boundary(w.regions, w.mesh, w.geometry.normals, opt.faces);
     for (std::size_t i = 0; i < tether_areas.size(); ++i) tether_areas[i] *= b.tether_scale[i];
-    w.drive = std::move(b.drive);
+    drive = std::move(b.drive);
   }
   return stiffness_matrix(w.mesh, youngs_modulus(w.mesh), tether_areas, opt.decay_length_mm);
 }
@@ -107,24 +111,30 @@ Eigen::MatrixXd solve_sh_fields(const LungWork& w, MotionModel model, const Eige
   return x;
 }
 
+Eigen::MatrixXd linear_displacement(const Eigen::MatrixXd& basis, double p0, double gamma, const Eigen::Vector3d& g) {
+  Eigen::MatrixXd u(basis.rows(), 3);
+  for (int c = 0; c < 3; ++c) u.col(c) = p0 * basis.col(4 * c) + gamma * (basis.middleCols(4 * c + 1, 3) * g);
+  return u;
+}
+
+double swept_volume(const LungWork& w, const Eigen::MatrixXd& u) {
+  double v = 0;
+  for (Eigen::Index i = 0; i < u.rows(); ++i)
+    v += w.areas[i] * u.row(i).dot(w.geometry.normals[static_cast<std::size_t>(i)]);
+  return v;
+}
+
 Eigen::MatrixXd exact_linear_motion(const LungWork& w, MotionModel model, const BakeOptions& opt,
                                     const Workers& workers) {
-  LungWork copy;
-  copy.name = w.name;
-  copy.mesh = w.mesh;
-  copy.centre = w.centre;
-  copy.midline_x = w.midline_x;
-  copy.geometry = w.geometry;
-  copy.areas = w.areas;
-  copy.offsets = w.offsets;
-  const TransferSolver solver(model_stiffness(copy, model, opt));
+  Eigen::MatrixXd drive;
+  const TransferSolver solver(model_stiffness(w, model, opt, drive));
   if (model == MotionModel::sliding) {
     Eigen::MatrixXd rhs(w.areas.size(), 12);
-    for (int k = 0; k < 3; ++k) rhs.middleCols(4 * k, 4) = linear_rhs(copy, copy.areas.cwiseProduct(copy.drive.col(k)));
+    for (int k = 0; k < 3; ++k) rhs.middleCols(4 * k, 4) = linear_rhs(w, w.areas.cwiseProduct(drive.col(k)));
     return solver.solve(rhs, workers);
   }
-  const Eigen::MatrixXd tau = solver.solve(linear_rhs(copy, copy.areas), workers);
-  const Eigen::MatrixXd normals = normals_matrix(copy);
+  const Eigen::MatrixXd tau = solver.solve(linear_rhs(w, w.areas), workers);
+  const Eigen::MatrixXd normals = normals_matrix(w);
   Eigen::MatrixXd out(tau.rows(), 12);
   for (int k = 0; k < 3; ++k) out.middleCols(4 * k, 4) = normals.col(k).asDiagonal() * tau;
   return out;

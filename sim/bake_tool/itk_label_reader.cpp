@@ -2,8 +2,7 @@
 /// @brief ITK reads the header and the voxels; the labels are cropped here in one pass over the voxels.
 #include "sim/bake_tool/itk_label_reader.h"
 
-#include <itkImage.h>
-#include <itkImageFileReader.h>
+#include <itkImageIOBase.h>
 #include <itkImageIOFactory.h>
 #include <itkMetaImageIOFactory.h>
 #include <itkNiftiImageIOFactory.h>
@@ -41,12 +40,12 @@ struct Box {
 };
 
 /// The grid's placement: origin and the voxel steps (direction cosines times spacing), LPS mm.
-template <class Image>
-lungar::Status place(const std::string& path, const Image& image, LabelImage& out) {
-  for (int a = 0; a < 3; ++a) {
-    out.size[a] = static_cast<int>(image.GetLargestPossibleRegion().GetSize()[a]);
-    out.origin[a] = image.GetOrigin()[a];
-    for (int b = 0; b < 3; ++b) out.axes[3 * b + a] = image.GetDirection()(b, a) * image.GetSpacing()[a];
+lungar::Status place(const std::string& path, const itk::ImageIOBase& io, LabelImage& out) {
+  for (unsigned a = 0; a < 3; ++a) {
+    out.size[a] = static_cast<int>(io.GetDimensions(a));
+    out.origin[a] = io.GetOrigin(a);
+    const std::vector<double> cosines = io.GetDirection(a);  // axis a's direction, one entry per LPS row
+    for (unsigned b = 0; b < 3; ++b) out.axes[3 * b + a] = (b < cosines.size() ? cosines[b] : 0.0) * io.GetSpacing(a);
   }
   const auto& m = out.axes;
   const double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
@@ -58,20 +57,30 @@ lungar::Status place(const std::string& path, const Image& image, LabelImage& ou
   return ok();
 }
 
-/// Reads the voxels as T, finds each value's bounding box in one pass, then copies the boxes out.
+/// Reads the voxels as T straight through the file's ImageIO (no itk::Image: its reader's templates cost the build
+/// more than the rest of the bake tool), finds each value's bounding box in one pass, then copies the boxes out.
 template <class T>
-lungar::Result<LabelImage> crop_labels(const std::string& path, const std::vector<std::int64_t>& values) {
-  using Image = itk::Image<T, 3>;
-  auto reader = itk::ImageFileReader<Image>::New();
-  reader->SetFileName(path);
+lungar::Result<LabelImage> crop_labels(const std::string& path, itk::ImageIOBase& io,
+                                       const std::vector<std::int64_t>& values) {
+  LabelImage out;
+  if (lungar::Status s = place(path, io, out); !s) return fail(s.error());
+  std::vector<T> voxels;
   try {
-    reader->Update();
+    itk::ImageIORegion region(3);
+    for (unsigned a = 0; a < 3; ++a) {
+      region.SetIndex(a, 0);
+      region.SetSize(a, io.GetDimensions(a));
+    }
+    io.SetIORegion(region);
+    voxels.resize(static_cast<std::size_t>(std::int64_t{out.size[0]} * out.size[1] * out.size[2]));
+    io.Read(voxels.data());
   } catch (const itk::ExceptionObject& e) {
     return fail(path + ": voxels: cannot read them: " + itk_reason(e) + "; expected an intact label map");
+  } catch (const std::bad_alloc&) {
+    return fail(path + ": voxels: not enough memory for " + std::to_string(out.size[0]) + " x " +
+                std::to_string(out.size[1]) + " x " + std::to_string(out.size[2]) + " voxels");
   }
-  LabelImage out;
-  if (lungar::Status s = place(path, *reader->GetOutput(), out); !s) return fail(s.error());
-  const T* voxel = reader->GetOutput()->GetBufferPointer();
+  const T* voxel = voxels.data();
   const auto at = [&](int i, int j, int k) {
     return static_cast<std::int64_t>(voxel[(std::int64_t{k} * out.size[1] + j) * out.size[0] + i]);
   };
@@ -128,13 +137,13 @@ lungar::Result<LabelImage> read_label_image(const std::string& path, const std::
     if (io->GetDimensions(a) < 2) return fail(path + ": sizes: expected at least 2 voxels along each axis");
   using C = itk::IOComponentEnum;
   switch (io->GetComponentType()) {
-    case C::UCHAR: return crop_labels<std::uint8_t>(path, values);
-    case C::CHAR: return crop_labels<std::int8_t>(path, values);
-    case C::USHORT: return crop_labels<std::uint16_t>(path, values);
-    case C::SHORT: return crop_labels<std::int16_t>(path, values);
-    case C::UINT: return crop_labels<std::uint32_t>(path, values);
-    case C::INT: return crop_labels<std::int32_t>(path, values);
-    case C::ULONG: case C::LONG: case C::ULONGLONG: case C::LONGLONG: return crop_labels<std::int64_t>(path, values);
+    case C::UCHAR: return crop_labels<std::uint8_t>(path, *io, values);
+    case C::CHAR: return crop_labels<std::int8_t>(path, *io, values);
+    case C::USHORT: return crop_labels<std::uint16_t>(path, *io, values);
+    case C::SHORT: return crop_labels<std::int16_t>(path, *io, values);
+    case C::UINT: return crop_labels<std::uint32_t>(path, *io, values);
+    case C::INT: return crop_labels<std::int32_t>(path, *io, values);
+    case C::ULONG: case C::LONG: case C::ULONGLONG: case C::LONGLONG: return crop_labels<std::int64_t>(path, *io, values);
     default:
       return fail(path + ": voxel type: expected integer labels, got " +
                   itk::ImageIOBase::GetComponentTypeAsString(io->GetComponentType()));

@@ -30,9 +30,11 @@ Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& mode
     dst.col(k) = tracked[static_cast<std::size_t>(k)];
   }
   // Collinear (or coincident) model points leave the rotation about their line undetermined.
+  // The spread's singular values are the square roots of the 3x3 scatter matrix's eigenvalues (ascending here); a
+  // fixed-size eigen solver rather than an SVD of the 3 x n points, which costs the build far more to instantiate.
   const Eigen::Matrix3Xd centred = src.colwise() - src.rowwise().mean();
-  const Eigen::JacobiSVD<Eigen::Matrix3Xd> svd(centred);
-  const Eigen::Vector3d sv = svd.singularValues();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> scatter(centred * centred.transpose(), Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d sv = scatter.eigenvalues().cwiseMax(0.0).cwiseSqrt().reverse();
   if (sv(1) < 1e-6 * std::max(1.0, sv(0))) {
     return fail("fiducials: expected model points spanning a plane, got collinear points");
   }

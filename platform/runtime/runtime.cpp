@@ -9,6 +9,7 @@
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/gravity.h"
 
 namespace lungar::platform {
@@ -134,8 +135,10 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
     deform_on_cpu(state);
     if (Status up = parts_.scene->drawable().upload_positions(cpu_positions_); !up) return up;
   }
+  // Each lung sweeps its posture's share of the breath (lying on a side, the lower lung takes more).
+  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
-    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * asset_.lungs[l].volume_share);
+    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * sim::breath_share(asset_, l, g));
   }
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
   draw_status_line(state.now_ns, state.breath.dv_ml, views);

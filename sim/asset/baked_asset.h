@@ -50,9 +50,10 @@ struct BakedLung {
   /// upright patient; index [axis * kPaperAngles + angle][lm].
   std::vector<std::vector<float>> paper_force;
 
-  /// This lung's share of the pair's rest volume (the shares sum to 1). The breathing
-  /// driver's dV(t) is the pair's volume change; each lung sweeps dV * volume_share, so the runtime multiplies
-  /// this lung's force SH by dV(t) * volume_share (sim/deform does so for the CPU paths).
+  /// This lung's share of the pair's rest volume (the shares sum to 1). The breathing driver's dV(t) is the pair's
+  /// volume change; each lung sweeps dV times its share of the breath in the posture, which starts from this one
+  /// and tilts towards the dependent lung (sim/force/breath_share.h); the runtime multiplies the lung's force SH by
+  /// it, and sim/deform does so for the CPU paths.
   double volume_share = 1.0;
 };
 

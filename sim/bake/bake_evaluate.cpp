@@ -11,6 +11,7 @@
 #include "sim/bake/motion_fields.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
@@ -294,7 +295,7 @@ std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& ba
     const Eigen::Index n = basis[l].rows();
     const Eigen::MatrixXd u = linear_displacement(basis[l], opt.p0, opt.gamma_per_mm, g);
     const double swept = swept_volume(*work[l], u);
-    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * lung.volume_share / swept : 0.0;
+    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * breath_share(a, l, g) / swept : 0.0;
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) out[3 * (lung.first_vertex + static_cast<std::size_t>(i)) + c] = static_cast<float>(scale * u(i, c));
   }

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::sim {
@@ -42,8 +43,9 @@ Eq1Deformer::Eq1Deformer(const BakedAsset& asset)
 void Eq1Deformer::deform(const Eigen::Vector3d& g, double delta_volume_ml, std::span<float> positions_out) {
   applied_force(asset_, g, force_);
   displacement_eq1(asset_, force_, d_);
-  for (const BakedLung& lung : asset_.lungs) {
-    const auto scale = static_cast<float>(delta_volume_ml * lung.volume_share);
+  for (std::size_t l = 0; l < asset_.lungs.size(); ++l) {
+    const BakedLung& lung = asset_.lungs[l];
+    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset_, l, g));
     const std::array<float, 4> w = linear_weights(asset_, lung, g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)

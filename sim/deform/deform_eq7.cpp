@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cassert>
 
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::sim {
@@ -33,7 +34,7 @@ void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, const 
   assert(positions_out.size() >= 3 * std::size_t{asset.vertex_count()});
   for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
     const BakedLung& lung = asset.lungs[l];
-    const auto scale = static_cast<float>(delta_volume_ml * lung.volume_share);
+    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset, l, g));
     const std::array<float, 4> w = linear_weights(asset, lung, g);
     const Eigen::Map<const Eigen::VectorXf> f(force_sh.data() + l * c, static_cast<Eigen::Index>(c));
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {

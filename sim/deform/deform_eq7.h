@@ -1,7 +1,8 @@
 /// @file deform_eq7.h
 /// @brief CPU eq. (7): the per-vertex SH dot product D_I = sum_lm f_lm T^I_lm (mm per mL), and the displaced
-///        positions p'_I = p_I + dV * volume_share * (D_I e_I + r_I . w) (e_I the direction of motion, r_I . w
-///        the off-axis part of the sliding model for gravity g). The reference for the vertex shader.
+///        positions p'_I = p_I + dV * share * (D_I e_I + r_I . w) (e_I the direction of motion, r_I . w
+///        the off-axis part of the sliding model for gravity g, share the lung's part of the breath in that
+///        posture, sim/force/breath_share.h). The reference for the vertex shader.
 #pragma once
 
 #include <array>

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::sim {
@@ -79,8 +80,9 @@ std::vector<float> displacement_vectors(const BakedAsset& a, const Eigen::Vector
   std::vector<float> force(a.lungs.size() * c), scalar(n), out(3 * n);
   for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
   displacement_eq7(a, force, scalar);
-  for (const BakedLung& lung : a.lungs) {
-    const double scale = delta_volume_ml * lung.volume_share;
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    const BakedLung& lung = a.lungs[l];
+    const double scale = delta_volume_ml * breath_share(a, l, g);
     const std::array<float, 4> w = linear_weights(a, lung, g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)

@@ -14,6 +14,7 @@
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "tests/render/gl_fixture.h"
 
@@ -78,7 +79,7 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
     std::vector<LungFrame> lungs;
     for (std::size_t i = 0; i < a.lungs.size(); ++i) {
       lungs.push_back({std::span<const float>(force).subspan(i * nc, nc),
-                       static_cast<float>(dv * a.lungs[i].volume_share), {}, sim::linear_weights(a, a.lungs[i], g)});
+                       static_cast<float>(dv * sim::breath_share(a, i, g)), {}, sim::linear_weights(a, a.lungs[i], g)});
     }
     std::vector<float> captured;
     ASSERT_TRUE(renderer->capture_deformed(*drawable, lungs, captured));

@@ -9,6 +9,7 @@
 
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "sim/mesh/lod_order.h"
 #include "sim/mesh/mesh_repair.h"
@@ -151,7 +152,7 @@ TEST(Deform, PositionsMoveAlongNormalsByTheirShareOfTheVolume) {
   displacement_eq7(a, force, d);
   deform_eq7(a, force, g, 250.0, moved);
   for (std::uint32_t i = 0; i < a.vertex_count(); i += 97) {
-    const double share = a.lungs[a.lung_of_vertex[i]].volume_share;
+    const double share = breath_share(a, a.lung_of_vertex[i], g);
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(moved[3 * i + k], a.positions[3 * i + k] + 250.0 * share * d[i] * a.directions[3 * i + k], 1e-3);
   }

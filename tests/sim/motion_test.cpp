@@ -8,6 +8,7 @@
 
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "sim/mesh/procedural_lungs.h"
 #include "sim/motion/motion_figures.h"
@@ -159,7 +160,7 @@ TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
     const std::vector<float> moved = displacement_vectors(a, g, 1.0);
     double vnum = 0, vden = 0, along_num = 0;
     for (std::size_t i = 0; i < a.vertex_count(); ++i) {
-      const double share = a.lungs[a.lung_of_vertex[i]].volume_share;
+      const double share = breath_share(a, a.lung_of_vertex[i], g);
       for (int k = 0; k < 3; ++k) {
         const double exact_k = share * u[3 * i + k];
         vnum += (moved[3 * i + k] - exact_k) * (moved[3 * i + k] - exact_k);

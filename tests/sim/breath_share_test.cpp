@@ -1,0 +1,110 @@
+/// @file breath_share_test.cpp
+/// @brief The posture's split of the breath between the lungs: the model on its own (EIT's lateral decubitus
+///        figures, shares summing to one, side by side across gravity), then through the deformation of a baked
+///        pair, measured as each lung's enclosed volume change.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "sim/force/breath_share.h"
+#include "sim/mesh/tri_mesh.h"
+#include "sim/motion/motion_figures.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+/// Gravity in the lung frame (LPS, +x the patient's left): lying on the left side, on the right side, on the back.
+const Eigen::Vector3d kLeftSideDown(1, 0, 0), kRightSideDown(-1, 0, 0), kSupine(0, 1, 0), kUpright(0, 0, -1);
+
+/// Two lungs placed like the CT demo's: the left one smaller (47 % of the rest volume), a hand's width apart.
+BakedAsset demo_like_pair() {
+  BakedAsset a;
+  BakedLung left, right;
+  left.name = "left";
+  left.centre = {95.f, 5.f, 10.f};
+  left.volume_share = 0.47;
+  right.name = "right";
+  right.centre = {-90.f, 0.f, 0.f};
+  right.volume_share = 0.53;
+  a.lungs = {left, right};
+  return a;
+}
+
+std::size_t index_of(const BakedAsset& a, const std::string& name) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    if (a.lungs[l].name == name) return l;
+  ADD_FAILURE() << "no lung named " << name;
+  return 0;
+}
+
+TEST(BreathShare, TheDependentLungTakesWhatEitMeasuresLyingOnEitherSide) {
+  const BakedAsset a = demo_like_pair();
+  const double left_down = breath_share(a, 0, kLeftSideDown);
+  const double right_down = breath_share(a, 1, kRightSideDown);
+  // Volk et al. 2011: 57.6 % left side down, 64.7 % right side down (awake, spontaneous breathing).
+  EXPECT_GE(left_down, 0.55);
+  EXPECT_LE(left_down, 0.62);
+  EXPECT_GE(right_down, 0.60);
+  EXPECT_LE(right_down, 0.70);
+  EXPECT_GT(right_down, left_down) << "the larger right lung gains more when it is the lower one";
+  EXPECT_NEAR(breath_share(a, 1, kLeftSideDown), 1.0 - left_down, 1e-12) << "the upper lung takes the rest";
+}
+
+TEST(BreathShare, SideBySideAcrossGravityTheSplitIsTheRestVolumes) {
+  BakedAsset a = demo_like_pair();
+  a.lungs[0].centre = {95.f, 0.f, 0.f};
+  a.lungs[1].centre = {-90.f, 0.f, 0.f};
+  for (const Eigen::Vector3d& g : {kSupine, Eigen::Vector3d(-kSupine), kUpright}) {
+    EXPECT_NEAR(breath_share(a, 0, g), 0.47, 1e-12) << "g = " << g.transpose();
+    EXPECT_NEAR(breath_share(a, 1, g), 0.53, 1e-12) << "g = " << g.transpose();
+  }
+}
+
+TEST(BreathShare, SharesSumToOneInEveryDirectionAndFallBackWithoutGravity) {
+  const BakedAsset a = demo_like_pair();
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Eigen::Vector3d g(i, j, k);
+        const double sum = breath_share(a, 0, g) + breath_share(a, 1, g);
+        EXPECT_NEAR(sum, 1.0, 1e-12) << "g = " << g.transpose();
+      }
+  EXPECT_DOUBLE_EQ(breath_share(a, 0, Eigen::Vector3d::Zero()), 0.47);
+  EXPECT_DOUBLE_EQ(breath_share(a, 0, Eigen::Vector3d(NAN, 0, 0)), 0.47);
+  BakedAsset one = a;
+  one.lungs.resize(1);
+  one.lungs[0].volume_share = 1.0;
+  EXPECT_DOUBLE_EQ(breath_share(one, 0, kLeftSideDown), 1.0);
+}
+
+/// Each lung's enclosed volume change, mL, when the baked pair breathes 500 mL with gravity g.
+std::vector<double> lung_volume_changes(const BakedAsset& a, const Eigen::Vector3d& g) {
+  const std::vector<float> d = displacement_vectors(a, g, 500);
+  std::vector<float> moved(a.positions.size());
+  for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
+  std::vector<double> out;
+  for (const BakedLung& lung : a.lungs) {
+    const std::span<const std::uint32_t> tris(a.triangles.data() + lung.first_index, lung.index_count);
+    out.push_back((enclosed_volume(tris, moved.data()) - enclosed_volume(tris, a.positions.data())) / 1000.0);
+  }
+  return out;
+}
+
+TEST(BreathShare, TheBakedPairBreathesIntoItsLowerLungAndKeepsTheTidalVolume) {
+  const BakedAsset& a = test::sliding_bake().asset;
+  ASSERT_EQ(a.lungs.size(), 2u);
+  const std::size_t left = index_of(a, "left"), right = index_of(a, "right");
+  const std::vector<double> left_down = lung_volume_changes(a, kLeftSideDown);
+  const std::vector<double> right_down = lung_volume_changes(a, kRightSideDown);
+  const std::vector<double> supine = lung_volume_changes(a, kSupine);
+  for (const auto* v : {&left_down, &right_down, &supine}) EXPECT_NEAR((*v)[0] + (*v)[1], 500.0, 10.0);
+  EXPECT_GE(left_down[left] / 500.0, a.lungs[left].volume_share + 0.08) << "left side down, the left lung gains";
+  EXPECT_GE(right_down[right] / 500.0, a.lungs[right].volume_share + 0.08) << "right side down, the right lung gains";
+  EXPECT_NEAR(supine[left] / 500.0, breath_share(a, left, kSupine), 0.02);
+  EXPECT_NEAR(breath_share(a, left, kSupine), a.lungs[left].volume_share, 0.03) << "on the back, about the volumes";
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -18,6 +18,21 @@ void FrameStats::record(double frame_ms, double pose_age_ms, double volume_ml,
   any_volume_ = true;
 }
 
+void FrameStats::name_lungs(const std::vector<std::string>& names) {
+  lung_count_ = std::min(names.size(), kMaxStatsLungs);
+  for (std::size_t l = 0; l < lung_count_; ++l) lungs_[l] = {names[l], 0, 0, false};
+}
+
+void FrameStats::record_lungs(std::span<const double> lung_volume_ml) {
+  for (std::size_t l = 0; l < std::min(lung_volume_ml.size(), lung_count_); ++l) {
+    LungRange& r = lungs_[l];
+    const double v = lung_volume_ml[l];
+    r.min_ml = r.any ? std::min(r.min_ml, v) : v;
+    r.max_ml = r.any ? std::max(r.max_ml, v) : v;
+    r.any = true;
+  }
+}
+
 nlohmann::ordered_json FrameStats::to_json() const {
   const double p50 = frame_ms_.percentile(50);
   nlohmann::ordered_json j;
@@ -32,6 +47,15 @@ nlohmann::ordered_json FrameStats::to_json() const {
   j["volume_ml_max"] = volume_max_;
   j["gravity_lung_first"] = gravity_first_;
   j["gravity_lung_last"] = gravity_last_;
+  if (lung_count_ > 0) {
+    nlohmann::ordered_json lungs = nlohmann::ordered_json::array();
+    for (std::size_t l = 0; l < lung_count_; ++l) {
+      const LungRange& r = lungs_[l];
+      lungs.push_back({{"name", r.name}, {"tidal_ml", r.max_ml - r.min_ml}, {"volume_ml_min", r.min_ml},
+                       {"volume_ml_max", r.max_ml}});
+    }
+    j["per_lung"] = lungs;
+  }
   return j;
 }
 

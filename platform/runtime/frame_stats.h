@@ -5,14 +5,20 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "platform/runtime/log_histogram.h"
 
 namespace lungar::platform {
+
+/// Lungs followed one by one in the stats: as many as the renderer draws (render::kMaxLungs).
+inline constexpr std::size_t kMaxStatsLungs = 8;
 
 class FrameStats {
  public:
@@ -21,13 +27,19 @@ class FrameStats {
   /// gravity in the lung frame (LPS: upright is -z, supine +y). Allocates nothing.
   void record(double frame_ms, double pose_age_ms, double volume_ml, const std::array<double, 3>& gravity_lung);
 
+  /// The lungs' names, in the asset's order, for the per-lung keys (at most kMaxStatsLungs are followed).
+  void name_lungs(const std::vector<std::string>& names);
+  /// Each lung's own volume change this frame, mL (its share of the breath in the posture), in name_lungs' order.
+  void record_lungs(std::span<const double> lung_volume_ml);
+
   std::uint64_t frames() const { return frame_ms_.count(); }
   const LogHistogram& frame_ms() const { return frame_ms_; }
   const LogHistogram& pose_age_ms() const { return pose_age_ms_; }
 
   /// The frame keys of the stats JSON (docs/design.md, Contracts: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
   /// frame_ms_p99, frame_ms_mean, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max, and gravity_lung_first,
-  /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame).
+  /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame), and per_lung: one
+  /// {name, tidal_ml, volume_ml_min, volume_ml_max} a lung, tidal_ml its swing over the run (max - min).
   nlohmann::ordered_json to_json() const;
   /// "N frames, F fps median (p50 .. ms, p99 .. ms); pose age p50 .. ms; dV a..b mL".
   std::string summary() const;
@@ -37,6 +49,13 @@ class FrameStats {
   double volume_min_ = 0, volume_max_ = 0;
   bool any_volume_ = false;
   std::array<double, 3> gravity_first_{}, gravity_last_{};
+  struct LungRange {
+    std::string name;
+    double min_ml = 0, max_ml = 0;
+    bool any = false;
+  };
+  std::array<LungRange, kMaxStatsLungs> lungs_{};
+  std::size_t lung_count_ = 0;
 };
 
 }  // namespace lungar::platform

@@ -4,7 +4,11 @@
 
 #include <GLES3/gl3.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
@@ -71,6 +75,9 @@ Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, Ru
     // LPS: +x is the patient's left, so the lung whose centre has the larger x is the left one.
     r->lung_frames_[l].color = asset.lungs[l].centre[0] >= 0 ? config.color_left : config.color_right;
   }
+  std::vector<std::string> names;
+  for (const sim::BakedLung& lung : asset.lungs) names.push_back(lung.name);
+  r->stats_.name_lungs(names);
   if (config.hud) r->hud_.emplace();
   r->last_patient_ = config.initial_patient;
   r->last_head_ = config.initial_head;
@@ -213,6 +220,10 @@ Status Runtime::present_and_record(const FrameState& state) {
   const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, submitted) : -1.0;
   const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
   stats_.record(frame_ms, age_ms, state.breath.dv_ml, {g.x(), g.y(), g.z()});
+  std::array<double, kMaxStatsLungs> lung_ml{};
+  const std::size_t lungs = std::min(lung_frames_.size(), kMaxStatsLungs);
+  for (std::size_t l = 0; l < lungs; ++l) lung_ml[l] = lung_frames_[l].volume_change_ml;
+  stats_.record_lungs(std::span<const double>(lung_ml.data(), lungs));
   ++frames_;
   return ok();
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -82,4 +83,24 @@ TEST(FrameStats, JsonCarriesTheFrameKeysWithRecordedValues) {
   EXPECT_DOUBLE_EQ(j["volume_ml_max"].get<double>(), 850.0);
   EXPECT_DOUBLE_EQ(j["gravity_lung_first"][1].get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(j["gravity_lung_last"][1].get<double>(), 0.9);
+}
+
+TEST(FrameStats, PerLungKeysFollowEachLungsOwnSwing) {
+  FrameStats stats;
+  EXPECT_FALSE(stats.to_json().contains("per_lung")) << "no lungs named, no per-lung keys";
+  stats.name_lungs({"left", "right"});
+  for (int k = 0; k <= 10; ++k) {
+    const double dv = 50.0 * k;  // 0 .. 500 mL
+    const std::array<double, 2> lungs{0.58 * dv, 0.42 * dv};
+    stats.record(16.0, 2.0, dv, {1.0, 0.0, 0.0});
+    stats.record_lungs(lungs);
+  }
+  const auto j = stats.to_json();
+  ASSERT_TRUE(j.contains("per_lung"));
+  ASSERT_EQ(j["per_lung"].size(), 2u);
+  EXPECT_EQ(j["per_lung"][0]["name"], "left");
+  EXPECT_DOUBLE_EQ(j["per_lung"][0]["tidal_ml"].get<double>(), 290.0);
+  EXPECT_DOUBLE_EQ(j["per_lung"][0]["volume_ml_min"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j["per_lung"][1]["volume_ml_max"].get<double>(), 210.0);
+  EXPECT_DOUBLE_EQ(j["per_lung"][1]["tidal_ml"].get<double>(), 210.0);
 }

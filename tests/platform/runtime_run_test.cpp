@@ -83,6 +83,34 @@ TEST_F(RuntimeRun, TheMockPatientTurnsSupineWhileTheLungsBreatheTheirTidalVolume
   EXPECT_GT(j["tracker_rate_hz"].get<double>(), 0.8 * 2 * settings.trackers.mock_rate_hz);  // head and patient
 }
 
+TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
+  // A scenario holds the mock patient on one side for more than a breath at 30 breaths/min; the stats give each
+  // lung's swing. Supine the split is the lungs' rest volumes; on the left side the left (lower) lung gains.
+  const auto left_share = [&](const char* pose) {
+    const std::string path = (dir / (std::string(pose) + ".toml")).string();
+    std::filesystem::create_directories(dir);
+    // The turn (to the pose it starts in) is what hands the mock patient's orientation to the scenario.
+    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose
+                        << "\"\n[[event]]\nat_s = 0.0\nkind = \"turn\"\nto = \"" << pose << "\"\nover_s = 0.1\n";
+    settings.breathing.scenario = path;
+    options.frames.reset();
+    options.seconds = 2.5;
+    EXPECT_EQ(platform::run_runtime(settings, options), 0) << pose;
+    const auto j = stats();
+    EXPECT_EQ(j["per_lung"].size(), 2u) << pose;
+    double left = 0, total = 0;
+    for (const auto& lung : j["per_lung"]) {
+      total += lung["tidal_ml"].get<double>();
+      if (lung["name"] == "left") left = lung["tidal_ml"].get<double>();
+    }
+    EXPECT_NEAR(total, 500.0, 25.0) << pose << ": the pair still breathes the tidal volume";
+    return total > 0 ? left / total : 0.0;
+  };
+  const double supine = left_share("supine");
+  const double left_side = left_share("left_lateral");
+  EXPECT_GT(left_side, supine + 0.08) << "supine " << supine << ", left side down " << left_side;
+}
+
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
   settings.trackers.source = drivers::TrackerSource::Replay;
   settings.trackers.replay_file = kData + "upright_to_supine.trk";

@@ -43,8 +43,8 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
   return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 
-/// This station's tracker, and the breathing script with the teaching scenario's turns when the mock tracker
-/// has no real patient to follow.
+/// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
+/// file, or a script with turns, lays the patient: its start pose, then its turns.
 Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
                    RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
@@ -56,7 +56,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
-  if (s.trackers.source == drivers::TrackerSource::Mock && !shared_script->orientation.turns().empty()) {
+  if (s.trackers.source == drivers::TrackerSource::Mock &&
+      (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
   parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);

@@ -89,9 +89,8 @@ TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
   const auto left_share = [&](const char* pose) {
     const std::string path = (dir / (std::string(pose) + ".toml")).string();
     std::filesystem::create_directories(dir);
-    // The turn (to the pose it starts in) is what hands the mock patient's orientation to the scenario.
-    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose
-                        << "\"\n[[event]]\nat_s = 0.0\nkind = \"turn\"\nto = \"" << pose << "\"\nover_s = 0.1\n";
+    // A start pose and no turn: the scenario still lays the mock patient down.
+    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose << "\"\n";
     settings.breathing.scenario = path;
     options.frames.reset();
     options.seconds = 2.5;

@@ -19,6 +19,7 @@ struct FrameState {
   drivers::PoseSample patient;              ///< the patient pose the frame used (world, mm)
   Eigen::Quaterniond lung_in_world = Eigen::Quaterniond::Identity();  ///< step 2: after the registration
   Eigen::Vector3d lung_origin_mm = Eigen::Vector3d::Zero();           ///< the lung frame's origin in the world
+  Eigen::Vector3d gravity_lung = Eigen::Vector3d(0, 0, -1);  ///< g-hat in the lung frame (of lung_in_world)
 };
 
 class FrameListener {

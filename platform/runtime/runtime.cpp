@@ -125,9 +125,11 @@ void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
   state.patient = last_patient_;
   state.lung_in_world = Eigen::Quaterniond(lung.rotation()).normalized();
   state.lung_origin_mm = lung.translation();
+  state.gravity_lung = sim::gravity_in_lung_frame(state.lung_in_world);
   patient_force_sh(asset_, config_.orientation, state.lung_in_world, force_);
-  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
-  for (std::size_t l = 0; l < lung_frames_.size(); ++l) lung_frames_[l].linear = sim::linear_weights(asset_, asset_.lungs[l], g);
+  for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
+    lung_frames_[l].linear = sim::linear_weights(asset_, asset_.lungs[l], state.gravity_lung);
+  }
 }
 
 const FrameViews& Runtime::head_views(std::int64_t now_ns, std::int64_t display_ns) {
@@ -143,9 +145,9 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
     if (Status up = parts_.scene->drawable().upload_positions(cpu_positions_); !up) return up;
   }
   // Each lung sweeps its posture's share of the breath (lying on a side, the lower lung takes more).
-  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
-    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * sim::breath_share(asset_, l, g));
+    lung_frames_[l].volume_change_ml =
+        static_cast<float>(state.breath.dv_ml * sim::breath_share(asset_, l, state.gravity_lung));
   }
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
   draw_status_line(state.now_ns, state.breath.dv_ml, views);
@@ -156,10 +158,9 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
 /// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
 void Runtime::deform_on_cpu(const FrameState& state) {
   if (config_.deform == Deform::Cpu7) {
-    sim::deform_eq7(asset_, force_, sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml,
-                    cpu_positions_);
+    sim::deform_eq7(asset_, force_, state.gravity_lung, state.breath.dv_ml, cpu_positions_);
   } else {
-    eq1_->deform(sim::gravity_in_lung_frame(state.lung_in_world), state.breath.dv_ml, cpu_positions_);
+    eq1_->deform(state.gravity_lung, state.breath.dv_ml, cpu_positions_);
   }
 }
 
@@ -218,7 +219,7 @@ Status Runtime::present_and_record(const FrameState& state) {
   previous_submit_ns_ = submitted;
   frame_estimate_ms_ = 0.9 * frame_estimate_ms_ + 0.1 * frame_ms;
   const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, submitted) : -1.0;
-  const Eigen::Vector3d g = sim::gravity_in_lung_frame(state.lung_in_world);
+  const Eigen::Vector3d& g = state.gravity_lung;
   stats_.record(frame_ms, age_ms, state.breath.dv_ml, {g.x(), g.y(), g.z()});
   std::array<double, kMaxStatsLungs> lung_ml{};
   const std::size_t lungs = std::min(lung_frames_.size(), kMaxStatsLungs);

@@ -109,6 +109,16 @@ void position_and_normal_attributes(const gl::Buffer& positions, const gl::Buffe
 
 }  // namespace
 
+bool coefficients_in_texture(CoeffStorage storage, std::uint32_t coefficients, std::string_view renderer) {
+  if (storage != CoeffStorage::Auto) return storage == CoeffStorage::Texture;
+  if (coefficients <= kAlwaysAttributeCoefficients) return false;
+  if (coefficients > kMaxAttributeCoefficients) return true;
+  for (std::string_view software : {"llvmpipe", "softpipe", "swrast", "SwiftShader"}) {
+    if (renderer.find(software) != std::string_view::npos) return false;
+  }
+  return true;
+}
+
 Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const DrawableOptions& options) {
   if (std::string error = validate(asset, options); !error.empty()) return fail(error);
   LungDrawable d;
@@ -118,8 +128,8 @@ Result<LungDrawable> LungDrawable::create(const sim::BakedAsset& asset, const Dr
   d.half_float_ = options.half_float;
   d.coefficients_ = options.basis == Basis::Linear ? 4u : asset.coefficients();
   d.index_count_ = static_cast<std::uint32_t>(asset.triangles.size());
-  d.uses_texture_ = options.storage == CoeffStorage::Texture ||
-                    (options.storage == CoeffStorage::Auto && d.coefficients_ > kMaxAttributeCoefficients);
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  d.uses_texture_ = coefficients_in_texture(options.storage, d.coefficients_, renderer ? renderer : "");
   if (options.storage == CoeffStorage::Attributes && d.coefficients_ > kMaxAttributeCoefficients) {
     return fail("drawable options: field 'storage': attributes hold at most " +
                 std::to_string(kMaxAttributeCoefficients) + " coefficients, the asset has " +

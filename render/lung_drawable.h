@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "config/base/enum_names.h"
 #include "config/base/result.h"
 #include "render/gl_objects.h"
 #include "sim/asset/baked_asset.h"
@@ -20,10 +22,14 @@ namespace lungar::render {
 enum class Basis { SphericalHarmonics, Linear };
 /// Where the coefficients live: vertex attributes (up to 36 coefficients), or a float texture read by gl_VertexID.
 enum class CoeffStorage { Auto, Attributes, Texture };
+inline constexpr EnumNames<CoeffStorage, 3> kCoeffStorageNames{{{{CoeffStorage::Auto, "auto"},
+                                                                 {CoeffStorage::Attributes, "attributes"},
+                                                                 {CoeffStorage::Texture, "texture"}}}};
+inline const char* to_string(CoeffStorage v) { return kCoeffStorageNames.name(v); }
 
 struct DrawableOptions {
   Basis basis = Basis::SphericalHarmonics;
-  CoeffStorage storage = CoeffStorage::Auto;  ///< Auto: attributes up to 36 coefficients, else the texture
+  CoeffStorage storage = CoeffStorage::Auto;  ///< Auto: see coefficients_in_texture()
   bool half_float = false;                     ///< coefficients as 16-bit floats (half the memory traffic)
 };
 
@@ -40,6 +46,16 @@ struct LungRange {
 
 /// Coefficients attributes are limited by GL_MAX_VERTEX_ATTRIBS (16 in GLES 3): 9 vec4 plus position and normal.
 inline constexpr std::uint32_t kMaxAttributeCoefficients = 36;
+/// Up to this many coefficients, Auto keeps them in attributes on every renderer.
+inline constexpr std::uint32_t kAlwaysAttributeCoefficients = 16;
+
+/// Whether the coefficients go to a texture. Auto follows what was measured at 400k nodes, stereo points
+/// (docs/measurements.md, "Where the coefficients live"): on a hardware GPU (an H200), 16 coefficients in attributes
+/// cost nothing over the undeformed frame, 36 in attributes 10 % and 36 in a texture 2 %; on a software rasteriser
+/// (llvmpipe), where each vertex fetch runs on the CPU, the texture is the slower at 36 (1.34 against 1.24). So:
+/// attributes up to 16 everywhere, up to 36 on a software rasteriser, else the texture. `renderer` is GL_RENDERER.
+bool coefficients_in_texture(CoeffStorage storage, std::uint32_t coefficients, std::string_view renderer);
+
 /// The attribute of each vertex's direction of motion e_I (render/shaders/deform.vert's a_direction), after the
 /// nine coefficient attributes 2 .. 10.
 inline constexpr unsigned kDirectionAttribute = 11;

@@ -86,7 +86,25 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{4, CoeffStorage::Auto, Basis::Linear, "linear_basis"}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
-TEST_F(DeformShaderTest, AutoStorageUsesTextureBeyond36Coefficients) {
+// Auto's rule alone, on the renderers it was measured on: the H200 fetches 36 coefficients faster from a texture,
+// llvmpipe from attributes; 16 stay in attributes on both, 49 go to the texture on both.
+TEST(CoefficientStorage, AutoFollowsWhatWasMeasuredOnEachKindOfRenderer) {
+  const char* gpu = "NVIDIA H200/PCIe/SSE2";
+  const char* software = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  EXPECT_FALSE(coefficients_in_texture(CoeffStorage::Auto, 16, gpu));
+  EXPECT_TRUE(coefficients_in_texture(CoeffStorage::Auto, 25, gpu));
+  EXPECT_TRUE(coefficients_in_texture(CoeffStorage::Auto, 36, gpu));
+  EXPECT_FALSE(coefficients_in_texture(CoeffStorage::Auto, 36, software));
+  EXPECT_TRUE(coefficients_in_texture(CoeffStorage::Auto, 49, software));
+  EXPECT_FALSE(coefficients_in_texture(CoeffStorage::Attributes, 36, gpu));
+  EXPECT_TRUE(coefficients_in_texture(CoeffStorage::Texture, 4, software));
+}
+
+// On this machine's llvmpipe: attributes up to 36 coefficients, the texture beyond, and asking for attributes
+// beyond 36 is refused.
+TEST_F(DeformShaderTest, AutoStorageUsesTextureBeyond36CoefficientsOnLlvmpipe) {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!renderer || !std::string_view(renderer).starts_with("llvmpipe")) GTEST_SKIP() << "not llvmpipe: " << renderer;
   auto small = LungDrawable::create(test::ellipsoid_pair(100, 6, 1));
   auto large = LungDrawable::create(test::ellipsoid_pair(100, 7, 1));
   ASSERT_TRUE(small && large);

@@ -58,7 +58,7 @@ Settings bench_settings(const FrameConfig& c) {
 }
 
 Result<std::unique_ptr<BenchScene>> BenchScene::create(std::shared_ptr<EglContext> context, sim::BakedAsset asset,
-                                                       std::string name) {
+                                                       std::string name, const render::DrawableOptions& options) {
   std::unique_ptr<BenchScene> b(new BenchScene());
   b->context_ = std::move(context);
   // The head looks at the middle of the pair's bounding box.
@@ -69,7 +69,7 @@ Result<std::unique_ptr<BenchScene>> BenchScene::create(std::shared_ptr<EglContex
     hi = hi.cwiseMax(p);
   }
   b->centre_ = 0.5 * (lo + hi);
-  auto scene = LungScene::create(std::move(asset), std::move(name));
+  auto scene = LungScene::create(std::move(asset), std::move(name), options);
   if (!scene) return scene.with_context("");
   b->scene_ = scene.take();
   return b;

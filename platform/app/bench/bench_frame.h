@@ -50,7 +50,7 @@ class BenchScene {
  public:
   /// Uploads `asset` once on `context` (current on this thread).
   static Result<std::unique_ptr<BenchScene>> create(std::shared_ptr<EglContext> context, sim::BakedAsset asset,
-                                                    std::string name);
+                                                    std::string name, const render::DrawableOptions& options = {});
 
   /// Times `config`'s frames (an error when it does not fit: CPU eq. 1 without transfer rows, a mesh without
   /// triangles).

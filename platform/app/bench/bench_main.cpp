@@ -41,6 +41,13 @@ int main(int argc, char** argv) {
                  "default 0.0065, 0 with --quick")
       ->check(CLI::Range(0.0, 0.5));
   app.add_flag("--bake-only", o.bake_only, "fill the asset cache (recording bake times) and measure nothing");
+  app.add_option("--coeff-storage", o.storage,
+                 "where the SH coefficients live on the GPU: auto (the program's choice), attributes (up to 36) or "
+                 "texture")
+      ->transform(CLI::CheckedTransformer(lungar::render::kCoeffStorageNames.map()).description("auto|attributes|texture"));
+  app.add_option("--fig6-bands", o.fig6_bands, "Fig. 6 at these band counts only (default 2 .. 8)")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 8));
   std::string all;
   for (const auto& s : kSections) all += (all.empty() ? "" : ",") + s;
   app.add_option("--sections", sections, "comma-separated subset of " + all + " (default: all)");

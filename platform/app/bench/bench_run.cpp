@@ -140,7 +140,8 @@ class Run {
     out_["settings"] = {{"nodes_1x", o_.nodes},        {"reps", timing_.reps},
                         {"rep_s", timing_.rep_s},      {"warmup_s", timing_.warmup_s},
                         {"eye_width_px", kEyeWidthPx}, {"eye_height_px", kEyeHeightPx},
-                        {"default_point_size_px", 5},  {"head_distance_mm", kHeadDistanceMm}};
+                        {"default_point_size_px", 5},  {"head_distance_mm", kHeadDistanceMm},
+                        {"coeff_storage", render::to_string(o_.storage)}};
     out_["paper_table2_fps"] = paper_table2();
     say("renderer: " + context_->describe());
     say("cpu: " + sys.cpu_model + ", " + std::to_string(sys.cores) + " cores, load " + std::to_string(sys.load_avg[0]));
@@ -156,7 +157,8 @@ class Run {
     if (baked_.insert(key_text(key)).second) out_["bake"].push_back(bake_json(got->record));
     say("asset: " + std::to_string(got->asset.vertex_count()) + " nodes, " + std::to_string(got->asset.coefficients()) +
         " coefficients" + (got->record.known ? ", baked in " + std::to_string(got->record.bake_s) + " s" : ""));
-    auto s = BenchScene::create(context_, std::move(got->asset), "bench " + key_text(key));
+    auto s = BenchScene::create(context_, std::move(got->asset), "bench " + key_text(key),
+                                {.storage = o_.storage});
     if (!s) {
       error(s.error());
       return nullptr;
@@ -377,7 +379,7 @@ class Run {
 
   /// Fig. 6: stereo points at 1x nodes, 2 .. 8 bands (4 .. 64 coefficients), GPU eq. (7) and CPU eq. (7).
   int coefficients() {
-    for (std::uint32_t bands : kBands) {
+    for (std::uint32_t bands : o_.fig6_bands.empty() ? kBands : o_.fig6_bands) {
       std::unique_ptr<BenchScene> own;
       if (!acquire({o_.nodes, bands, false}, own)) return 1;
       BenchScene& s = own ? *own : *base_;
@@ -410,7 +412,7 @@ class Run {
     for (double scale : kScales) {
       if (on("fig4")) keys.push_back({static_cast<std::uint32_t>(std::lround(scale * o_.nodes)), kBaseBands, false});
     }
-    for (std::uint32_t bands : kBands) {
+    for (std::uint32_t bands : o_.fig6_bands.empty() ? kBands : o_.fig6_bands) {
       if (on("fig6")) keys.push_back({o_.nodes, bands, false});
     }
     const bool has_base = !keys.empty() && keys.front().transfer_rows;

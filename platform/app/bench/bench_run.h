@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <vector>
+#include "render/lung_drawable.h"
 
 namespace lungar::platform::bench {
 
@@ -29,6 +30,9 @@ struct BenchOptions {
   std::optional<double> eq1_epsilon;
   bool bake_only = false;          ///< fill the asset cache (and record bake times), measure no frames
   std::set<std::string> sections;  ///< empty: all of kSections
+  /// Where the coefficients live on the GPU; Auto is what the program uses (render/lung_drawable.h).
+  render::CoeffStorage storage = render::CoeffStorage::Auto;
+  std::vector<std::uint32_t> fig6_bands;  ///< Fig. 6's band counts; empty: 2 .. 8
 };
 
 /// Runs the benchmark; progress goes to stderr. Returns the process exit code (0, or 1 with one error line).

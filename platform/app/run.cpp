@@ -20,6 +20,7 @@
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/runtime.h"
 #include "sim/asset/asset_io.h"
+#include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
 
@@ -40,6 +41,12 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
   Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
   if (!drawn) return drawn.with_context("");
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
+  // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
+  if (Status p = sim::apply_pathologies(drawn->asset, s.sim.pathologies); !p) return p.with_context("sim.pathology: ");
+  for (const std::string& spec : s.sim.pathologies) {
+    log_line("pathology: " + spec);
+    drawn->name += " with " + spec;  // the stats JSON's "asset" says what was drawn
+  }
   return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 

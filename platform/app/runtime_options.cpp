@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "config/base/clock.h"
+#include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
 
@@ -76,6 +77,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   auto* asset = app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the demo's CT lungs, cached)");
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);
+  app.add_option("--pathology", o.pathologies,
+                 "SPEC, repeatable: pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (default: sim.pathology)")
+      ->allow_extra_args(false);
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker,
@@ -109,6 +113,12 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
 
 Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
+  if (!o.pathologies.empty()) {
+    for (const std::string& spec : o.pathologies) {
+      if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) return p.with_context("--pathology: ");
+    }
+    s.sim.pathologies = o.pathologies;
+  }
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
   if (Status out = override_choice("--output", o.output, kOutputNames, s.display.output); !out) return out;
   if (o.fullscreen) s.display.output = Output::Fullscreen;

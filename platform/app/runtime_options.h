@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/App.hpp>
 
@@ -18,6 +19,7 @@ struct RuntimeOptions {
   std::string asset_path;
   bool procedural = false;    ///< draw the procedural pair, not the demo's CT lungs
   std::string scenario_path;  ///< breathing/orientation scenario TOML
+  std::vector<std::string> pathologies;  ///< --pathology, repeatable: replaces sim.pathology when given
   std::string tracker;        ///< "mock" | "hid" | "igtl[:HOST[:PORT]]" | "replay:FILE"; empty: from the config
   bool headless = false;
   bool fullscreen = false;        ///< display.output = "fullscreen" (the user unit's way to cover the HMD output)

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "config/base/enum_names.h"
 #include "config/breathing_settings.h"
@@ -50,6 +51,9 @@ struct RegistrationSettings {
 struct SimSettings {
   std::string asset;  ///< baked asset; empty: the demo's lungs, baked once and cached
   sim::ForceMode orientation_mode = sim::ForceMode::exact;
+  /// Pathologies applied to the asset when it is loaded, in order (sim/pathology/pathology.h), e.g.
+  /// "pneumothorax:right:30"; empty: healthy lungs.
+  std::vector<std::string> pathologies;
 };
 
 /// The whole tree. `source` names the file it came from ("<defaults>" when none).

@@ -9,6 +9,7 @@
 
 #include "config/toml_section.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
 
@@ -52,6 +53,10 @@ void read_registration(TomlSection s, RegistrationSettings& r) {
 void read_sim(TomlSection s, SimSettings& m) {
   s.text("asset", m.asset);
   s.choice("orientation_mode", m.orientation_mode, sim::kForceModeNames);
+  s.texts("pathology", m.pathologies);
+  for (const std::string& spec : m.pathologies) {
+    if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) s.fail("pathology", p.error());
+  }
   s.finish();
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -55,6 +56,13 @@ struct BakedLung {
   /// and tilts towards the dependent lung (sim/force/breath_share.h); the runtime multiplies the lung's force SH by
   /// it, and sim/deform does so for the CPU paths.
   double volume_share = 1.0;
+  /// A pathology's factor on the lung's weight in that split (sim/pathology/pathology.h): 1 when healthy. Set when
+  /// an asset is loaded with pathologies, never stored in the file.
+  double breath_weight = 1.0;
+  /// v0 and v before a pathology changed the lung's response (set with it, never stored): the lung's weight in the
+  /// split then also carries V(g) / V_healthy(g), the part of its healthy breath its surface can still take in
+  /// the posture, so that what is left of the lung breathes as before.
+  std::optional<std::array<double, 4>> healthy_volumes;
 };
 
 /// The whole asset.

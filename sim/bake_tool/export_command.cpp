@@ -13,6 +13,7 @@
 #include "sim/breathing/orientation.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/motion_figures.h"
+#include "sim/pathology/pathology.h"
 
 namespace lungar::sim {
 namespace {
@@ -88,7 +89,9 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
   if (!std::isfinite(c.volume_ml)) return fail("--volume-ml: expected a finite number of millilitres");
   Result<BakedAsset> asset = load_asset(c.asset);
   if (!asset) return asset.with_context("");
-  const std::string what = c.asset;
+  if (Status s = apply_pathologies(*asset, c.pathologies); !s) return s.with_context("--pathology: ");
+  std::string what = c.asset;
+  for (const std::string& spec : c.pathologies) what += " with " + spec;
   if (c.series <= 0) {
     if (Status s = write_one(*asset, *g, c.volume_ml, c.out, what); !s) return s.with_context("");
     return std::vector<ExportedFile>{{c.out, 0.0, c.volume_ml}};

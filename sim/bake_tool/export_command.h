@@ -20,6 +20,7 @@ struct ExportCommand {
   double volume_ml = 500.0;                ///< the pair's enclosed volume change from rest (negative: below it)
   std::string out;                         ///< the .ply to write (with --series: the stem of each phase's file)
   int series = 0;                          ///< > 0: that many phases of one breath of `volume_ml` tidal volume
+  std::vector<std::string> pathologies;    ///< specs of sim/pathology/pathology.h, applied in order
 };
 
 /// What was written: each file with its volume change.

@@ -141,6 +141,9 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
   sub.add_option("--out", cmd.out, "the .ply file to write (with --series: FILE_000.ply, FILE_001.ply, ...)")
       ->required();
   sub.add_option("--series", cmd.series, "N: one file per phase of a breath, N phases")->check(CLI::Range(1, 1000));
+  sub.add_option("--pathology", cmd.pathologies,
+                 "SPEC: pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (upper, middle, lower); repeatable")
+      ->allow_extra_args(false);
 }
 
 /// Runs the export and says what it wrote; the exit code.

@@ -110,6 +110,29 @@ TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
   EXPECT_GT(left_side, supine + 0.08) << "supine " << supine << ", left side down " << left_side;
 }
 
+TEST_F(RuntimeRun, ARightPneumothoraxLeavesTheRightLungUnderATenthOfEachBreath) {
+  const std::string path = (dir / "supine.toml").string();
+  std::filesystem::create_directories(dir);
+  std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"supine\"\n";
+  settings.breathing.scenario = path;
+  settings.sim.pathologies = {"pneumothorax:right:30"};
+  options.frames.reset();
+  options.seconds = 2.5;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_NE(j["asset"].get<std::string>().find("with pneumothorax:right:30"), std::string::npos) << j["asset"];
+  double right = -1, total = 0;
+  for (const auto& lung : j["per_lung"]) {
+    total += lung["tidal_ml"].get<double>();
+    if (lung["name"] == "right") right = lung["tidal_ml"].get<double>();
+  }
+  EXPECT_NEAR(total, 500.0, 25.0) << "the pair still breathes the tidal volume";
+  EXPECT_GE(right, 0.0);
+  EXPECT_LE(right, 0.10 * total) << "the collapsed lung";
+  settings.sim.pathologies = {"pneumothorax:middle:30"};
+  EXPECT_NE(platform::run_runtime(settings, options), 0) << "a bad spec stops the run before it starts";
+}
+
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
   settings.trackers.source = drivers::TrackerSource::Replay;
   settings.trackers.replay_file = kData + "upright_to_supine.trk";

@@ -50,6 +50,7 @@ TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   EXPECT_EQ(s.display.openxr.head, d.display.openxr.head);
   EXPECT_EQ(s.display.openxr.reference_space, d.display.openxr.reference_space);
   EXPECT_EQ(s.sim.orientation_mode, d.sim.orientation_mode);
+  EXPECT_EQ(s.sim.pathologies, d.sim.pathologies);
 }
 
 TEST(Settings, EveryKeyOfTheShippedProfileIsDocumentedWithAComment) {
@@ -82,6 +83,19 @@ TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
   EXPECT_EQ(r->hmd.view, lungar::platform::View::Mono);
   EXPECT_DOUBLE_EQ(r->hmd.ipd_mm, Settings{}.hmd.ipd_mm);
   EXPECT_EQ(r->source, "x.toml");
+}
+
+TEST(Settings, PathologiesAreReadAndABadOneNamesTheFileTheFieldAndTheSpec) {
+  auto r = load_settings_from_string(
+      "[sim]\npathology = [\"pneumothorax:right:30\", \"consolidation:left:lower\"]\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->sim.pathologies, (std::vector<std::string>{"pneumothorax:right:30", "consolidation:left:lower"}));
+  EXPECT_TRUE(Settings{}.sim.pathologies.empty()) << "healthy by default";
+  const std::string e = error_of("[sim]\npathology = [\"pneumothorax:right:300\"]\n");
+  EXPECT_NE(e.find("bad.toml"), std::string::npos) << e;
+  EXPECT_NE(e.find("pathology"), std::string::npos) << e;
+  EXPECT_NE(e.find("'pneumothorax:right:300'"), std::string::npos) << e;
+  EXPECT_NE(e.find("PERCENT"), std::string::npos) << e;
 }
 
 TEST(Settings, OpenXrOutputAndItsHead) {

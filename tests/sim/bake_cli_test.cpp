@@ -4,6 +4,8 @@
 ///        asset and every key of the report; Ctrl-C stops a bake with 130 and leaves no file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -189,6 +191,17 @@ TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
   ASSERT_EQ(run(args + " --series 4", dir.file("err")), 0) << slurp(dir.file("err"));
   EXPECT_TRUE(std::filesystem::exists(dir.file("e_003.ply")));
+  // Pathologies: two in one export, then a bad one refused in one line naming it, writing nothing.
+  ASSERT_EQ(run(args + " --pathology pneumothorax:left:20 --pathology consolidation:right:upper", dir.file("err")), 0)
+      << slurp(dir.file("err"));
+  EXPECT_NE(slurp(dir.file("e.ply")).find("with pneumothorax:left:20 with consolidation:right:upper"),
+            std::string::npos);
+  std::filesystem::remove(dir.file("e.ply"));
+  EXPECT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 1);
+  const std::string err = slurp(dir.file("err"));
+  EXPECT_NE(err.find("'emphysema:0.4'"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
 }
 
 /// Two balls of 30 mm radius on a 2 mm grid: label 2 at x = -40 mm (the right lung, LPS), label 3 at x = +40 mm.

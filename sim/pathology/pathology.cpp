@@ -1,0 +1,197 @@
+/// @file pathology.cpp
+/// @brief The pathology models of pathology.h, applied to a baked asset's per-vertex response and per-lung figures.
+#include "sim/pathology/pathology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "sim/motion/surface_regions.h"
+
+namespace lungar::sim {
+namespace {
+
+const char* const kExpected =
+    "expected pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (SIDE left or right, PERCENT 1 to 90, REGION "
+    "upper, middle or lower)";
+
+std::vector<std::string_view> split(std::string_view text, char sep) {
+  std::vector<std::string_view> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = text.find(sep, start);
+    out.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+    if (end == std::string_view::npos) return out;
+    start = end + 1;
+  }
+}
+
+Error bad(std::string_view spec, const std::string& why) {
+  return fail("pathology '" + std::string(spec) + "': " + why);
+}
+
+std::size_t find_lung(const BakedAsset& a, const std::string& name) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    if (a.lungs[l].name == name) return l;
+  return a.lungs.size();
+}
+
+Eigen::Vector3d vec(const float* p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
+
+/// The lung's first-order swept volume for the unnormalised force SH `f`, mm^3 (unscaled): sum over its vertices
+/// of A_I (e_I . n_I) sum_lm T^I_lm f_lm, the sum BakedLung's volume_const and volume_grad are made of.
+double swept(const BakedAsset& a, const BakedLung& lung, const std::vector<float>& f) {
+  const std::uint32_t c = a.coefficients();
+  double sum = 0;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    double d = 0;
+    for (std::uint32_t k = 0; k < c; ++k) d += double{a.sh_coeffs[i * c + k]} * f[k];
+    sum += a.areas[i] * vec(&a.directions[3 * i]).dot(vec(&a.normals[3 * i])) * d;
+  }
+  return sum;
+}
+
+/// The lung's height extent (z, lung frame: +z superior).
+std::pair<double, double> height_range(const BakedAsset& a, const BakedLung& lung) {
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    lo = std::min(lo, double{a.positions[3 * i + 2]});
+    hi = std::max(hi, double{a.positions[3 * i + 2]});
+  }
+  return {lo, hi};
+}
+
+/// The hilum: the area-weighted centre of the lung's medial face (normals within 60 degrees of the midline) in
+/// the middle third of its height, where the bronchus and vessels enter; the lung's centre when it has none.
+Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l) {
+  const BakedLung& lung = a.lungs[l];
+  double midline_x = 0, shares = 0;
+  for (const BakedLung& other : a.lungs) {
+    midline_x += other.volume_share * other.centre[0];
+    shares += other.volume_share;
+  }
+  const Eigen::Vector3d medial = medial_direction(lung.name, lung.centre[0], shares > 0 ? midline_x / shares : 0);
+  const auto [lo, hi] = height_range(a, lung);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    const double z = a.positions[3 * i + 2];
+    if (z < lo + (hi - lo) / 3 || z > hi - (hi - lo) / 3 || vec(&a.normals[3 * i]).dot(medial) < 0.5) continue;
+    sum += a.areas[i] * vec(&a.positions[3 * i]);
+    area += a.areas[i];
+  }
+  return area > 0 ? Eigen::Vector3d(sum / area) : vec(lung.centre.data());
+}
+
+/// Shrinks lung l about its hilum to (1 - percent/100) of its volume; its breath weight falls to the collapsed
+/// lung's. The first-order swept volumes scale with the area (s^2): the per-vertex response T is kept, so a
+/// unit of force moves the same millimetres over a smaller surface.
+void collapse(BakedAsset& a, std::size_t l, double percent) {
+  BakedLung& lung = a.lungs[l];
+  const double s = std::cbrt(1.0 - percent / 100.0);
+  const Eigen::Vector3d h = hilum(a, l);
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    for (int k = 0; k < 3; ++k)
+      a.positions[3 * i + k] = static_cast<float>(h[k] + s * (a.positions[3 * i + k] - h[k]));
+    a.areas[i] = static_cast<float>(a.areas[i] * s * s);
+  }
+  for (int k = 0; k < 3; ++k) lung.centre[k] = static_cast<float>(h[k] + s * (lung.centre[k] - h[k]));
+  lung.rest_volume_ml *= s * s * s;
+  lung.volume_const *= s * s;
+  for (double& v : lung.volume_grad) v *= s * s;
+  if (lung.healthy_volumes)
+    for (double& v : *lung.healthy_volumes) v *= s * s;
+  lung.breath_weight *= kCollapsedLungBreathWeight;
+}
+
+/// 1 - how much of the region's weight a vertex at height z carries: 1 inside the third, 0 beyond the ramp.
+double region_weight(double z, double lo, double hi, LungThird third) {
+  const double h = hi - lo, ramp = kConsolidationRamp * h;
+  const int index = third == LungThird::lower ? 0 : third == LungThird::middle ? 1 : 2;
+  const double bottom = lo + index * h / 3, top = lo + (index + 1) * h / 3;
+  const double outside = std::max({0.0, bottom - z, z - top});  // distance beyond the third, mm
+  return ramp > 0 ? std::clamp(1.0 - outside / ramp, 0.0, 1.0) : (outside > 0 ? 0.0 : 1.0);
+}
+
+/// Scales the response of lung l's vertices in the region to kConsolidatedResponse and its swept volumes with it,
+/// keeping the healthy ones for its weight in the split (breath_share.h); an error (nothing changed) when its
+/// swept volume is not positive.
+Status consolidate(BakedAsset& a, std::size_t l, LungThird third, std::string_view spec) {
+  BakedLung& lung = a.lungs[l];
+  const double before = swept(a, lung, lung.force_const);
+  if (!(before > 0)) return bad(spec, "lung '" + lung.name + "' of the asset sweeps no volume to consolidate");
+  const auto [lo, hi] = height_range(a, lung);
+  const std::uint32_t c = a.coefficients();
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    const double w = region_weight(a.positions[3 * i + 2], lo, hi, third);
+    if (w == 0) continue;
+    const auto m = static_cast<float>(1.0 - (1.0 - kConsolidatedResponse) * w);
+    for (std::uint32_t k = 0; k < c; ++k) a.sh_coeffs[i * c + k] *= m;
+    if (!a.linear_coeffs.empty())
+      for (int k = 0; k < 4; ++k) a.linear_coeffs[4 * i + k] *= m;
+    if (a.has_off_axis())
+      for (int k = 0; k < 12; ++k) a.off_axis[12 * i + k] *= m;
+  }
+  if (!lung.healthy_volumes)
+    lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
+  // The bake's per-lung factor from the first-order sum to the enclosed volume (about 1.03) is kept.
+  const double factor = lung.volume_const / before;
+  lung.volume_const = factor * swept(a, lung, lung.force_const);
+  for (int k = 0; k < 3; ++k) lung.volume_grad[k] = factor * swept(a, lung, lung.force_grad[k]);
+  return {};
+}
+
+}  // namespace
+
+Result<Pathology> parse_pathology(std::string_view spec) {
+  const std::vector<std::string_view> parts = split(spec, ':');
+  Pathology p;
+  p.spec = std::string(spec);
+  const std::optional<PathologyKind> kind = kPathologyKindNames.parse(parts[0]);
+  if (!kind) {
+    if (parts[0] == "ards" || parts[0] == "emphysema")
+      return bad(spec, "'" + std::string(parts[0]) + "' is not modelled yet; lungar models pneumothorax and "
+                                                     "consolidation");
+    return bad(spec, kExpected);
+  }
+  p.kind = *kind;
+  if (parts.size() != 3) return bad(spec, kExpected);
+  if (parts[1] != "left" && parts[1] != "right") return bad(spec, "SIDE: expected left or right");
+  p.side = std::string(parts[1]);
+  if (p.kind == PathologyKind::pneumothorax) {
+    const std::string number(parts[2]);
+    char* end = nullptr;
+    p.percent = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(p.percent) ||
+        p.percent < kMinPneumothoraxPercent || p.percent > kMaxPneumothoraxPercent)
+      return bad(spec, "PERCENT: expected a number from 1 to 90 (the share of the lung's volume lost)");
+    return p;
+  }
+  const std::optional<LungThird> third = kLungThirdNames.parse(parts[2]);
+  if (!third) return bad(spec, "REGION: expected " + kLungThirdNames.expected());
+  p.region = *third;
+  return p;
+}
+
+Status apply_pathology(BakedAsset& asset, const Pathology& p) {
+  const std::size_t l = find_lung(asset, p.side);
+  if (l == asset.lungs.size()) return bad(p.spec, "the asset has no lung named '" + p.side + "'");
+  if (p.kind == PathologyKind::pneumothorax) {
+    collapse(asset, l, p.percent);
+    return {};
+  }
+  return consolidate(asset, l, p.region, p.spec);
+}
+
+Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {
+  if (specs.empty()) return {};
+  BakedAsset changed = asset;
+  for (const std::string& spec : specs) {
+    Result<Pathology> p = parse_pathology(spec);
+    if (!p) return p.with_context("");
+    if (Status s = apply_pathology(changed, *p); !s) return s;
+  }
+  asset = std::move(changed);
+  return {};
+}
+
+}  // namespace lungar::sim

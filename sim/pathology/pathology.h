@@ -1,0 +1,69 @@
+/// @file pathology.h
+/// @brief The diseases a trainer switches on, each a named model applied to a baked asset when it is loaded: the
+///        runtime, `lungar-bake export` and the CPU paths all draw the changed asset, so they agree.
+///
+/// - `pneumothorax:SIDE:PERCENT`: air in the pleural space lets the lung on SIDE collapse towards its hilum. It
+///   keeps its shape and shrinks about the hilum until it has lost PERCENT of its volume, which is what Light's
+///   index measures from a chest film (%PTX = 100 (1 - L^3 / H^3), L the lung's and H the hemithorax's diameter:
+///   a shape-keeping collapse). The collapsed lung takes kCollapsedLungBreathWeight of its healthy weight in the
+///   split of each breath (sim/force/breath_share.h), under a tenth of the tidal volume: the other lung takes the
+///   rest.
+/// - `consolidation:SIDE:REGION` (upper, middle or lower third of the lung's height): the region fills with fluid
+///   or cells, stops ventilating and stiffens. Its surface moves kConsolidatedResponse of its healthy motion (each
+///   vertex's transfer row, T^I_lm, its linear basis and its off-axis part scaled), with a ramp of
+///   kConsolidationRamp of the height outside the region so that the surface does not tear. The lung's weight in
+///   the split falls by the share of its swept volume it lost in the posture (V(g) / V_healthy(g)): the tidal
+///   volume stays what the breathing delivers, so the part of it the region no longer takes spreads over
+///   everything that still ventilates, in both lungs, in proportion.
+///
+/// Both are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at load: no
+/// second bake, no larger asset, no work in the frame (docs/design.md, "Pathologies").
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/base/enum_names.h"
+#include "config/base/result.h"
+#include "sim/asset/baked_asset.h"
+
+namespace lungar::sim {
+
+enum class PathologyKind { pneumothorax, consolidation };
+enum class LungThird { upper, middle, lower };
+
+inline constexpr EnumNames<PathologyKind, 2> kPathologyKindNames{
+    {{{PathologyKind::pneumothorax, "pneumothorax"}, {PathologyKind::consolidation, "consolidation"}}}};
+inline constexpr EnumNames<LungThird, 3> kLungThirdNames{
+    {{{LungThird::upper, "upper"}, {LungThird::middle, "middle"}, {LungThird::lower, "lower"}}}};
+
+/// A collapsed lung's weight in the split of the breath, as a fraction of its healthy one: with the CT demo's
+/// 53 % right lung, 5 % of its weight is 6 % of the breath supine and 8 % lying on it.
+inline constexpr double kCollapsedLungBreathWeight = 0.05;
+/// How much of its healthy motion a consolidated region's surface keeps.
+inline constexpr double kConsolidatedResponse = 0.1;
+/// The ramp from consolidated to healthy outside the region, as a fraction of the lung's height.
+inline constexpr double kConsolidationRamp = 0.05;
+/// Pneumothorax sizes accepted, percent of the lung's volume.
+inline constexpr double kMinPneumothoraxPercent = 1.0, kMaxPneumothoraxPercent = 90.0;
+
+struct Pathology {
+  PathologyKind kind = PathologyKind::pneumothorax;
+  std::string side;                      ///< the lung's name in the asset: "left" or "right"
+  double percent = 0;                    ///< pneumothorax: the volume lost, percent
+  LungThird region = LungThird::lower;  ///< consolidation: which third of the height
+  std::string spec;                      ///< as the user wrote it
+};
+
+/// "pneumothorax:right:30" or "consolidation:left:upper" -> a Pathology, or one line saying what was expected.
+Result<Pathology> parse_pathology(std::string_view spec);
+
+/// Applies `p` to `asset`; an error (asset untouched) when the asset has no lung on that side.
+Status apply_pathology(BakedAsset& asset, const Pathology& p);
+
+/// Parses and applies each spec in order; the error names the spec. All or nothing: on an error `asset` is
+/// unchanged.
+Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs);
+
+}  // namespace lungar::sim

@@ -1,0 +1,167 @@
+/// @file pathology_test.cpp
+/// @brief The pathology models on a baked pair, measured as a user measures an export: each lung's enclosed rest
+///        volume and volume change, and the volume swept by each third of a lung's height; and the specs a user
+///        types, refused in one line when wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <span>
+#include <string>
+
+#include "sim/mesh/tri_mesh.h"
+#include "sim/motion/motion_figures.h"
+#include "sim/pathology/pathology.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+const Eigen::Vector3d kSupine(0, 1, 0);
+
+std::size_t index_of(const BakedAsset& a, const std::string& name) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    if (a.lungs[l].name == name) return l;
+  ADD_FAILURE() << "no lung named " << name;
+  return 0;
+}
+
+std::span<const std::uint32_t> triangles_of(const BakedAsset& a, const BakedLung& lung) {
+  return {a.triangles.data() + lung.first_index, lung.index_count};
+}
+
+/// What a user reads from the asset breathing `ml` supine: each lung's rest volume and volume change (mL), and the
+/// volume each third of a lung's height sweeps (mL; triangles by their rest height, swept volume = area vector
+/// times mean displacement).
+struct Breath {
+  std::vector<double> rest_ml, change_ml;
+  std::vector<std::array<double, 3>> thirds_ml;
+};
+
+Breath breathe(const BakedAsset& a, double ml) {
+  const std::vector<float> d = displacement_vectors(a, kSupine, ml);
+  std::vector<float> moved(a.positions.size());
+  for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
+  Breath b;
+  for (const BakedLung& lung : a.lungs) {
+    const auto tris = triangles_of(a, lung);
+    const double rest = enclosed_volume(tris, a.positions.data());
+    b.rest_ml.push_back(rest / 1000.0);
+    b.change_ml.push_back((enclosed_volume(tris, moved.data()) - rest) / 1000.0);
+    double lo = 1e300, hi = -1e300;
+    for (std::uint32_t v : tris) {
+      lo = std::min(lo, double{a.positions[3 * v + 2]});
+      hi = std::max(hi, double{a.positions[3 * v + 2]});
+    }
+    std::array<double, 3> thirds{};
+    for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
+      Eigen::Vector3d p[3], mean_d = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k) {
+        p[k] = Eigen::Vector3d(a.positions[3 * tris[t + k]], a.positions[3 * tris[t + k] + 1],
+                               a.positions[3 * tris[t + k] + 2]);
+        mean_d += Eigen::Vector3d(d[3 * tris[t + k]], d[3 * tris[t + k] + 1], d[3 * tris[t + k] + 2]) / 3.0;
+      }
+      const double z = (p[0].z() + p[1].z() + p[2].z()) / 3.0;
+      const int third = std::min(2, static_cast<int>(3.0 * (z - lo) / (hi - lo)));
+      thirds[third] += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).dot(mean_d) / 1000.0;
+    }
+    b.thirds_ml.push_back(thirds);
+  }
+  return b;
+}
+
+BakedAsset with(const std::vector<std::string>& specs) {
+  BakedAsset a = test::sliding_bake().asset;
+  const Status s = apply_pathologies(a, specs);
+  EXPECT_TRUE(s) << s.error();
+  return a;
+}
+
+TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTheBreath) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset ptx = with({"pneumothorax:right:30"});
+  const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
+  const Breath before = breathe(healthy, 500), after = breathe(ptx, 500);
+  EXPECT_NEAR(after.rest_ml[right] / before.rest_ml[right], 0.70, 0.005) << "Light's index: 70 % of the volume left";
+  EXPECT_NEAR(after.rest_ml[left], before.rest_ml[left], 1e-9) << "the other lung keeps its shape";
+  EXPECT_NEAR(after.change_ml[right] + after.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
+  EXPECT_LE(after.change_ml[right], 0.10 * 500.0) << "a collapsed lung barely ventilates";
+  EXPECT_GT(after.change_ml[right], 0.0);
+  EXPECT_GE(after.change_ml[left], 0.88 * 500.0) << "the other lung takes the rest";
+  // Towards the hilum: the lateral side (the right lung's is at -x) moves in much further than the medial side.
+  double lateral_before = 1e300, lateral_after = 1e300, medial_before = -1e300, medial_after = -1e300;
+  const BakedLung& lung = healthy.lungs[right];
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    lateral_before = std::min(lateral_before, double{healthy.positions[3 * i]});
+    lateral_after = std::min(lateral_after, double{ptx.positions[3 * i]});
+    medial_before = std::max(medial_before, double{healthy.positions[3 * i]});
+    medial_after = std::max(medial_after, double{ptx.positions[3 * i]});
+  }
+  EXPECT_GT(lateral_after - lateral_before, 2.0 * std::abs(medial_after - medial_before));
+}
+
+TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKeepsBreathing) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
+  const Breath before = breathe(healthy, 500);
+  for (LungThird third : {LungThird::lower, LungThird::upper}) {
+    const int t = third == LungThird::lower ? 0 : 2;
+    const BakedAsset sick = with({std::string("consolidation:right:") + kLungThirdNames.name(third)});
+    const Breath after = breathe(sick, 500);
+    SCOPED_TRACE(kLungThirdNames.name(third));
+    ASSERT_GT(before.thirds_ml[right][t], 1.0);
+    EXPECT_LE(after.thirds_ml[right][t], 0.20 * before.thirds_ml[right][t]) << "the consolidated third";
+    EXPECT_NEAR(after.change_ml[right] + after.change_ml[left], 500.0, 15.0);
+    // The breath it lost goes to what still ventilates: the right lung's far third (beyond the ramp into the
+    // middle one) and the left lung gain.
+    EXPECT_GT(after.thirds_ml[right][2 - t], before.thirds_ml[right][2 - t]);
+    EXPECT_GT(after.change_ml[left], before.change_ml[left]);
+    EXPECT_NEAR(after.rest_ml[right], before.rest_ml[right], 1e-9) << "a consolidation does not collapse the lung";
+  }
+}
+
+TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
+  auto p = parse_pathology("pneumothorax:left:25.5");
+  ASSERT_TRUE(p) << p.error();
+  EXPECT_EQ(p->kind, PathologyKind::pneumothorax);
+  EXPECT_EQ(p->side, "left");
+  EXPECT_DOUBLE_EQ(p->percent, 25.5);
+  auto c = parse_pathology("consolidation:right:middle");
+  ASSERT_TRUE(c) << c.error();
+  EXPECT_EQ(c->region, LungThird::middle);
+  const std::pair<const char*, const char*> refused[] = {
+      {"pneumothorax:right", "expected pneumothorax:SIDE:PERCENT"},
+      {"pneumothorax:centre:30", "SIDE"},
+      {"pneumothorax:right:0", "PERCENT"},
+      {"pneumothorax:right:95", "PERCENT"},
+      {"pneumothorax:right:30%", "PERCENT"},
+      {"pneumothorax:right:nan", "PERCENT"},
+      {"consolidation:left:lobe", "REGION: expected upper, middle or lower"},
+      {"ards:0.6", "not modelled yet"},
+      {"asthma", "expected pneumothorax:SIDE:PERCENT"},
+      {"", "expected"}};
+  for (const auto& [spec, why] : refused) {
+    auto r = parse_pathology(spec);
+    ASSERT_FALSE(r) << spec;
+    EXPECT_NE(r.error().find(why), std::string::npos) << r.error();
+    EXPECT_NE(r.error().find(std::string("'") + spec + "'"), std::string::npos) << "names the spec: " << r.error();
+    EXPECT_EQ(r.error().find('\n'), std::string::npos);
+  }
+}
+
+TEST(Pathology, AListWithOneBadSpecLeavesTheAssetAsItWas) {
+  BakedAsset a = test::sliding_bake().asset;
+  const Status s = apply_pathologies(a, {"pneumothorax:right:30", "consolidation:left:side"});
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().find("consolidation:left:side"), std::string::npos) << s.error();
+  EXPECT_EQ(a.positions, test::sliding_bake().asset.positions);
+  EXPECT_EQ(a.lungs[index_of(a, "right")].breath_weight, 1.0);
+  BakedAsset one = a;
+  one.lungs.resize(1);  // a single lung named by the bake: "left" or "right", not both
+  const std::string missing = one.lungs[0].name == "left" ? "right" : "left";
+  const Status no_lung = apply_pathologies(one, {"pneumothorax:" + missing + ":20"});
+  ASSERT_FALSE(no_lung);
+  EXPECT_NE(no_lung.error().find("no lung named '" + missing + "'"), std::string::npos) << no_lung.error();
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -56,6 +56,7 @@ nlohmann::ordered_json FrameStats::to_json() const {
     }
     j["per_lung"] = lungs;
   }
+  if (ventral_share_) j["ventral_share"] = *ventral_share_;
   return j;
 }
 

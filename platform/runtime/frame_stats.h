@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -31,6 +32,8 @@ class FrameStats {
   void name_lungs(const std::vector<std::string>& names);
   /// Each lung's own volume change this frame, mL (its share of the breath in the posture), in name_lungs' order.
   void record_lungs(std::span<const double> lung_volume_ml);
+  /// The anterior half's share of a breath in this frame's posture (sim/motion/ventral_share.h).
+  void record_ventral_share(double share) { ventral_share_ = share; }
 
   std::uint64_t frames() const { return frame_ms_.count(); }
   const LogHistogram& frame_ms() const { return frame_ms_; }
@@ -39,7 +42,8 @@ class FrameStats {
   /// The frame keys of the stats JSON (docs/design.md, Contracts: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
   /// frame_ms_p99, frame_ms_mean, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max, and gravity_lung_first,
   /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame), and per_lung: one
-  /// {name, tidal_ml, volume_ml_min, volume_ml_max} a lung, tidal_ml its swing over the run (max - min).
+  /// {name, tidal_ml, volume_ml_min, volume_ml_max} a lung, tidal_ml its swing over the run (max - min), and
+  /// ventral_share: the part of a breath the anterior half of the lungs sweeps, in the last frame's posture.
   nlohmann::ordered_json to_json() const;
   /// "N frames, F fps median (p50 .. ms, p99 .. ms); pose age p50 .. ms; dV a..b mL".
   std::string summary() const;
@@ -56,6 +60,7 @@ class FrameStats {
   };
   std::array<LungRange, kMaxStatsLungs> lungs_{};
   std::size_t lung_count_ = 0;
+  std::optional<double> ventral_share_;
 };
 
 }  // namespace lungar::platform

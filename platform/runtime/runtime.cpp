@@ -69,6 +69,7 @@ Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, Ru
   r->source_ = position_source(config.deform);
   if (r->source_ == render::PositionSource::Uploaded) r->cpu_positions_.assign(asset.positions.size(), 0.f);
   if (config.deform == Deform::Cpu1) r->eq1_.emplace(asset);
+  r->ventral_.emplace(asset);
   r->lung_frames_.resize(asset.lungs.size());
   for (std::size_t l = 0; l < r->lung_frames_.size(); ++l) {
     r->lung_frames_[l].force = std::span<const float>(r->force_.data() + l * c, c);
@@ -225,6 +226,7 @@ Status Runtime::present_and_record(const FrameState& state) {
   const std::size_t lungs = std::min(lung_frames_.size(), kMaxStatsLungs);
   for (std::size_t l = 0; l < lungs; ++l) lung_ml[l] = lung_frames_[l].volume_change_ml;
   stats_.record_lungs(std::span<const double>(lung_ml.data(), lungs));
+  stats_.record_ventral_share(ventral_->share(asset_, force_, state.gravity_lung));
   ++frames_;
   return ok();
 }

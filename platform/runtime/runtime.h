@@ -29,6 +29,7 @@
 #include "render/hud_line.h"
 #include "render/renderer.h"
 #include "sim/deform/deform_eq1.h"
+#include "sim/motion/ventral_share.h"
 
 namespace lungar::platform {
 
@@ -93,6 +94,7 @@ class Runtime {
   std::vector<float> force_;          ///< f_lm of every lung, lung-major
   std::vector<float> cpu_positions_;  ///< --deform cpu7 | cpu1
   std::optional<sim::Eq1Deformer> eq1_;
+  std::optional<sim::VentralShare> ventral_;  ///< the stats' ventral_share, from force_ alone
   std::vector<render::LungFrame> lung_frames_;
   render::PositionSource source_ = render::PositionSource::Shader;
 

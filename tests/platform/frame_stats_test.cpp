@@ -104,3 +104,11 @@ TEST(FrameStats, PerLungKeysFollowEachLungsOwnSwing) {
   EXPECT_DOUBLE_EQ(j["per_lung"][1]["volume_ml_max"].get<double>(), 210.0);
   EXPECT_DOUBLE_EQ(j["per_lung"][1]["tidal_ml"].get<double>(), 210.0);
 }
+
+TEST(FrameStats, VentralShareIsTheLastFramesPosture) {
+  FrameStats stats;
+  EXPECT_FALSE(stats.to_json().contains("ventral_share")) << "nothing recorded, no key";
+  stats.record_ventral_share(0.38);
+  stats.record_ventral_share(0.44);  // turned prone
+  EXPECT_DOUBLE_EQ(stats.to_json()["ventral_share"].get<double>(), 0.44);
+}

@@ -275,6 +275,7 @@ void visit(Io& s, SensorConfig& d) {
   s.integer("station", d.station, 0, 255, "(station byte value)");
   s.integer("offset", d.offset, 0, 1023, "bytes");
   s.numbers("fixed_position_mm", d.fixed_position_mm, -1e5, 1e5, "mm");
+  s.numbers("tip_offset_mm", d.tip_offset_mm, -1000.0, 1000.0, "mm");
   s.finish();
 }
 

@@ -9,6 +9,7 @@
 #include "drivers/decode/report_layout.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
+#include "platform/registration/pivot_calibration.h"
 
 namespace lungar::platform {
 
@@ -28,15 +29,22 @@ Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std:
 
 }  // namespace
 
-Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
-                                                            const std::string& config_path) {
+Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::string& config_path) {
   auto loaded = drivers::load_trk(log_path);
   if (!loaded) return loaded.with_context("");
   auto trackers = log_layout(*loaded, log_path, config_path);
   if (!trackers) return trackers.with_context("");
   auto layout = drivers::make_layout(*trackers);
   if (!layout) return layout.with_context(log_path + ": report layout: ");
-  std::vector<StylusSample> samples;
+  StylusLog out;
+  // The tip is the stylus's, not the log's: a --config (where `calibrate pivot` wrote it) wins over the header.
+  std::array<double, 3> tip = trackers->stylus.tip_offset_mm;
+  if (!config_path.empty()) {
+    auto s = load_settings(config_path);
+    if (!s) return s.with_context("");
+    tip = s->trackers.stylus.tip_offset_mm;
+  }
+  out.tip_offset_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
   Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
   Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
   const std::int64_t t0 = loaded->records.empty() ? 0 : loaded->records.front().t_arrival_ns;
@@ -50,23 +58,55 @@ Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& l
         patient_q = pose.orientation().normalized();
         patient_p = p;
       } else if (pose.role == drivers::Role::Stylus) {
-        samples.push_back({static_cast<double>(rec.t_arrival_ns - t0) * 1e-9, patient_q.conjugate() * (p - patient_p)});
+        Eigen::Isometry3d in_patient = Eigen::Isometry3d::Identity();
+        in_patient.linear() = (patient_q.conjugate() * pose.orientation().normalized()).toRotationMatrix();
+        in_patient.translation() = patient_q.conjugate() * (p - patient_p);
+        out.t_s.push_back(static_cast<double>(rec.t_arrival_ns - t0) * 1e-9);
+        out.poses.push_back(in_patient);
       }
     }
   }
-  if (samples.empty()) return fail(log_path + ": expected stylus poses in the log, got none");
+  if (out.poses.empty()) return fail(log_path + ": expected stylus poses in the log, got none");
+  return out;
+}
+
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
+                                                            const std::optional<Eigen::Vector3d>& tip_mm) {
+  auto log = stylus_poses_from_log(log_path, config_path);
+  if (!log) return log.with_context("");
+  const Eigen::Vector3d tip = tip_mm ? *tip_mm : log->tip_offset_mm;
+  std::vector<StylusSample> samples;
+  for (std::size_t i = 0; i < log->poses.size(); ++i) samples.push_back({log->t_s[i], log->poses[i] * tip});
   return find_dwell_points(samples);
+}
+
+int run_pivot(const PivotOptions& o) {
+  auto say = [](const std::string& message) { std::fprintf(stderr, "lungar calibrate pivot: %s\n", message.c_str()); };
+  auto log = stylus_poses_from_log(o.stylus_log, o.config_path);
+  if (!log) return say(log.error()), 2;
+  auto fit = fit_pivot(log->poses);
+  if (!fit) return say(fit.error() + " (" + o.stylus_log + ")"), 2;
+  if (Status written = write_tip_offset_toml(o.out_path, *fit); !written) return say(written.error()), 1;
+  std::printf("stylus tip from %d poses turning up to %.1f degrees: RMS error %.3f mm (worst %.3f mm)\n", fit->poses,
+              fit->spread_deg, fit->rms_mm, fit->max_mm);
+  std::printf("  tip_offset_mm = [%.3f, %.3f, %.3f] (stylus frame); pivot at [%.3f, %.3f, %.3f] (patient frame)\n",
+              fit->tip_mm.x(), fit->tip_mm.y(), fit->tip_mm.z(), fit->pivot_mm.x(), fit->pivot_mm.y(),
+              fit->pivot_mm.z());
+  std::printf("written to %s (include it with --config, or copy the section into your profile)\n", o.out_path.c_str());
+  return 0;
 }
 
 int run_calibrate(const CalibrateOptions& o) {
   auto say = [](const std::string& message) { std::fprintf(stderr, "lungar calibrate: %s\n", message.c_str()); };
+  if (o.model_csv.empty() || o.out_path.empty()) return say("expected --model FILE.csv and --out FILE.toml"), 2;
   auto model = read_points_csv(o.model_csv);
   if (!model) return say(model.error()), 2;
   if (o.stylus_csv.empty() == o.stylus_log.empty()) {
     return say("expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk"), 2;
   }
-  auto tracked =
-      o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path) : read_points_csv(o.stylus_csv);
+  if (o.stylus_tip_mm && !o.stylus_csv.empty()) return say("--stylus-tip-mm applies to --stylus-log, not to --stylus"), 2;
+  auto tracked = o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path, o.stylus_tip_mm)
+                                      : read_points_csv(o.stylus_csv);
   if (!tracked) return say(tracked.error()), 2;
   auto fitted = register_fiducials(*model, *tracked);
   if (!fitted) return say(fitted.error() + " (" + (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv) + ")"), 2;

@@ -2,6 +2,7 @@
 /// @brief `lungar calibrate`: model fiducials + stylus touches -> the [registration] section and its error.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,33 @@ struct CalibrateOptions {
   std::string stylus_log;   ///< a .trk log of the stylus dwelling on each fiducial
   std::string config_path;  ///< for the report layout when the log's header has none
   std::string out_path;
+  std::optional<Eigen::Vector3d> stylus_tip_mm;  ///< the tip in the stylus frame; unset: [trackers.stylus]'s
 };
 
-/// Stylus touches from a tracker log: each stylus sample is taken into the patient tracker's frame (by the newest
-/// patient pose, when the log has one), then dwells become fiducials. An error names the file.
-Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
-                                                            const std::string& config_path);
+/// `lungar calibrate pivot`: a log of the stylus pivoting about its tip -> [trackers.stylus] tip_offset_mm.
+struct PivotOptions {
+  std::string stylus_log;
+  std::string config_path;
+  std::string out_path;
+};
+
+/// A log's stylus poses in the patient tracker's frame (by the newest patient pose, when the log has one), their
+/// times (s from the first record), and the stylus's tip offset: the config's when one is given, else the log
+/// header's layout's.
+struct StylusLog {
+  std::vector<double> t_s;
+  std::vector<Eigen::Isometry3d> poses;
+  Eigen::Vector3d tip_offset_mm = Eigen::Vector3d::Zero();
+};
+Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::string& config_path);
+
+/// Stylus touches from a tracker log: each stylus pose's tip (`tip_mm`, else the layout's tip_offset_mm) in the
+/// patient tracker's frame, then dwells become fiducials. An error names the file.
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
+                                                            const std::optional<Eigen::Vector3d>& tip_mm = {});
+
+/// The pivot command; prints the tip and its error, returns the exit code.
+int run_pivot(const PivotOptions& o);
 
 /// The whole command; prints the registration and its error, returns the exit code.
 int run_calibrate(const CalibrateOptions& o);

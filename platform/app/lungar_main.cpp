@@ -37,18 +37,34 @@ int main(int argc, char** argv) {
   lungar::platform::CalibrateOptions c;
   CLI::App* calibrate = app.add_subcommand(
       "calibrate", "register the lung model onto the patient simulator from paired fiducials (Umeyama)");
-  calibrate->add_option("--model", c.model_csv, "model fiducials, CSV of x, y, z in mm (lung frame)")->required();
+  calibrate->add_option("--model", c.model_csv, "model fiducials, CSV of x, y, z in mm (lung frame); required");
   calibrate->add_option("--stylus", c.stylus_csv, "touched fiducials, CSV of x, y, z in mm (patient-tracker frame)");
   calibrate->add_option("--stylus-log", c.stylus_log,
                         "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
   calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
-  calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML)")->required();
+  calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML); required");
+  std::vector<double> tip;
+  calibrate
+      ->add_option("--stylus-tip-mm", tip,
+                   "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(-1000.0, 1000.0));
+  lungar::platform::PivotOptions pivot_options;
+  CLI::App* pivot = calibrate->add_subcommand(
+      "pivot", "find the stylus tip from a log of the stylus pivoting about it in a dimple (least squares)");
+  pivot->add_option("--stylus-log", pivot_options.stylus_log, "tracker log (.trk) of the stylus pivoting")->required();
+  pivot->add_option("--config", pivot_options.config_path, "settings TOML with the tracker report layout of the log");
+  pivot->add_option("--out", pivot_options.out_path, "where to write [trackers.stylus] tip_offset_mm (TOML)")
+      ->required();
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  if (*pivot) return lungar::platform::run_pivot(pivot_options);
+  if (tip.size() == 3) c.stylus_tip_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
   if (*calibrate) return lungar::platform::run_calibrate(c);
   if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);
 

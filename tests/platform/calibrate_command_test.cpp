@@ -12,6 +12,7 @@
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_writer.h"
 #include "platform/app/calibrate_command.h"
+#include "platform/registration/pivot_calibration.h"
 
 using namespace lungar;
 
@@ -93,4 +94,116 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   EXPECT_EQ(platform::run_calibrate(o), 2);
   EXPECT_FALSE(std::filesystem::exists(o.out_path));
   std::filesystem::remove_all(dir);
+}
+
+// A stylus whose sensor sits 150 mm up the handle from its tip: `lungar calibrate pivot` finds the tip from the
+// stylus swinging about it in a dimple, and the registration from dwells read at that tip recovers the truth,
+// where reading the sensor's origin does not.
+TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
+  drivers::TrackerConfig t;
+  t.stylus.enabled = true;
+  auto layout = drivers::make_layout(t);
+  ASSERT_TRUE(layout) << layout.error();
+  const Eigen::Vector3d tip(2.0, -1.5, -150.0);  // stylus frame: the tip down the handle
+  const Eigen::Quaterniond patient_q(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  const Eigen::Vector3d patient_p(-40.0, 300.0, 700.0);
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_pivot_test";
+  std::filesystem::create_directories(dir);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  std::uniform_real_distribution<double> angle(-0.6, 0.6);
+
+  // Writes a log of the stylus at the given tip positions (patient frame), each held with a random tilt.
+  const auto record = [&](const std::string& path, const std::vector<Eigen::Vector3d>& tips_in_patient, int hold) {
+    drivers::TrkWriter writer;
+    drivers::TrkHeader header;
+    header.description = "source=test";
+    header.layout_toml = drivers::tracker_config_to_toml(t);
+    ASSERT_EQ(writer.open(path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
+    std::vector<std::uint8_t> report(static_cast<std::size_t>(t.report.length));
+    std::int64_t t_ns = 1'000'000'000;
+    std::uint32_t ticks = 0;
+    const auto emit = [&](drivers::Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
+      drivers::PoseSample pose;
+      pose.role = role;
+      pose.set_position(p);
+      pose.set_orientation(q);
+      std::fill(report.begin(), report.end(), 0);
+      ASSERT_TRUE(drivers::encode_report(*layout, std::span(&pose, 1), ticks, report));
+      ASSERT_TRUE(writer.append(drivers::TrkSource::Hid, t_ns, report));
+    };
+    for (const Eigen::Vector3d& target : tips_in_patient) {
+      for (int k = 0; k < hold; ++k, t_ns += 16'000'000, ticks += 16000) {
+        const Eigen::Quaterniond q_rel(Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()) *
+                                       Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitY()));
+        const Eigen::Vector3d sensor_rel = target - q_rel * tip;  // the tip stays on the target
+        const Eigen::Vector3d jitter(noise(rng), noise(rng), noise(rng));
+        emit(drivers::Role::Patient, patient_p, patient_q);
+        emit(drivers::Role::Stylus, patient_q * (sensor_rel + jitter) + patient_p, patient_q * q_rel);
+      }
+    }
+    ASSERT_EQ(writer.commit().error(), "");
+  };
+
+  // Pivoting: 200 poses about one dimple.
+  const std::string pivot_log = (dir / "pivot.trk").string();
+  record(pivot_log, {Eigen::Vector3d(10.0, -20.0, 30.0)}, 200);
+  platform::PivotOptions p;
+  p.stylus_log = pivot_log;
+  p.out_path = (dir / "tip.toml").string();
+  ASSERT_EQ(platform::run_pivot(p), 0);
+  auto log = platform::stylus_poses_from_log(pivot_log, "");
+  ASSERT_TRUE(log) << log.error();
+  auto fit = platform::fit_pivot(log->poses);
+  ASSERT_TRUE(fit) << fit.error();
+  EXPECT_LT((fit->tip_mm - tip).norm(), 0.3) << fit->tip_mm.transpose();
+  EXPECT_LT((fit->pivot_mm - Eigen::Vector3d(10.0, -20.0, 30.0)).norm(), 0.3);
+  EXPECT_LT(fit->rms_mm, 0.5);
+  std::ifstream written(p.out_path);
+  const std::string toml((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
+  EXPECT_NE(toml.find("[trackers.stylus]\ntip_offset_mm = ["), std::string::npos) << toml;
+
+  // Touching four fiducials with the tilting stylus: read at the tip the registration is exact; read at the
+  // sensor's origin it is not.
+  const std::vector<Eigen::Vector3d> model = {{-80, -150, -100}, {90, -140, -110}, {0, -230, -300}, {70, -90, -60}};
+  const std::string touch_log = (dir / "touch.trk").string();
+  record(touch_log, model, 50);  // the model frame is the patient frame here: the registration is the identity
+  auto at_tip = platform::stylus_points_from_log(touch_log, "", fit->tip_mm);
+  ASSERT_TRUE(at_tip) << at_tip.error();
+  ASSERT_EQ(at_tip->size(), model.size());
+  auto r = platform::register_fiducials(model, *at_tip);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_LT(r->fre_rms_mm, 0.5);
+  EXPECT_LT(r->translation_mm.norm(), 1.0);
+  auto at_origin = platform::stylus_points_from_log(touch_log, "");
+  EXPECT_TRUE(!at_origin || at_origin->size() != model.size()) << "a tilting sensor 150 mm up the handle never dwells";
+  // The file `calibrate pivot` wrote, given as --config, carries the tip into the registration command.
+  const auto model_csv = dir / "model.csv";
+  {
+    std::ofstream o(model_csv);
+    for (const auto& m : model) o << m.x() << ", " << m.y() << ", " << m.z() << "\n";
+  }
+  platform::CalibrateOptions c;
+  c.model_csv = model_csv.string();
+  c.stylus_log = touch_log;
+  c.config_path = p.out_path;
+  c.out_path = (dir / "registration.toml").string();
+  EXPECT_EQ(platform::run_calibrate(c), 0);
+  c.config_path.clear();
+  c.out_path = (dir / "without-tip.toml").string();
+  EXPECT_EQ(platform::run_calibrate(c), 2) << "without the tip the dwells are not found";
+  EXPECT_FALSE(std::filesystem::exists(c.out_path));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PivotCalibration, RefusesTooFewPosesAndAStylusThatDidNotTurn) {
+  std::vector<Eigen::Isometry3d> poses(5, Eigen::Isometry3d::Identity());
+  auto few = platform::fit_pivot(poses);
+  ASSERT_FALSE(few);
+  EXPECT_NE(few.error().find("at least 8"), std::string::npos) << few.error();
+  poses.resize(20, Eigen::Isometry3d::Identity());
+  for (std::size_t i = 0; i < poses.size(); ++i) poses[i].translation() = Eigen::Vector3d(0.5 * i, 0, 0);
+  auto still = platform::fit_pivot(poses);
+  ASSERT_FALSE(still);
+  EXPECT_NE(still.error().find("turned at most 0.0 degrees"), std::string::npos) << still.error();
 }

@@ -1,0 +1,67 @@
+/// @file pivot_calibration.cpp
+/// @brief The least-squares pivot calibration of pivot_calibration.h.
+#include "platform/registration/pivot_calibration.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <Eigen/QR>
+
+#include "config/base/atomic_file.h"
+
+namespace lungar::platform {
+
+Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& poses) {
+  const auto n = static_cast<Eigen::Index>(poses.size());
+  if (n < kMinPivotPoses) {
+    return fail("pivot: expected at least " + std::to_string(kMinPivotPoses) + " stylus poses, got " +
+                std::to_string(n));
+  }
+  PivotFit fit;
+  fit.poses = static_cast<int>(n);
+  const Eigen::Quaterniond first(poses.front().rotation());
+  for (const Eigen::Isometry3d& p : poses)
+    fit.spread_deg = std::max(fit.spread_deg, Eigen::Quaterniond(p.rotation()).angularDistance(first) * 180.0 / M_PI);
+  if (fit.spread_deg < kMinPivotSpreadDeg) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "pivot: the stylus turned at most %.1f degrees, expected at least %.0f (pivot it about its tip in a "
+                  "dimple, sweeping a cone)",
+                  fit.spread_deg, kMinPivotSpreadDeg);
+    return fail(line);
+  }
+  Eigen::MatrixXd a(3 * n, 6);
+  Eigen::VectorXd b(3 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    a.block<3, 3>(3 * i, 0) = poses[static_cast<std::size_t>(i)].rotation();
+    a.block<3, 3>(3 * i, 3) = -Eigen::Matrix3d::Identity();
+    b.segment<3>(3 * i) = -poses[static_cast<std::size_t>(i)].translation();
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+  if (qr.rank() < 6) return fail("pivot: the poses leave the tip undetermined (rank " + std::to_string(qr.rank()) + ")");
+  const Eigen::VectorXd x = qr.solve(b);
+  fit.tip_mm = x.head<3>();
+  fit.pivot_mm = x.tail<3>();
+  double sum = 0;
+  for (const Eigen::Isometry3d& p : poses) {
+    const double r = (p.rotation() * fit.tip_mm + p.translation() - fit.pivot_mm).norm();
+    sum += r * r;
+    fit.max_mm = std::max(fit.max_mm, r);
+  }
+  fit.rms_mm = std::sqrt(sum / static_cast<double>(n));
+  return fit;
+}
+
+Status write_tip_offset_toml(const std::string& path, const PivotFit& f) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "# Written by `lungar calibrate pivot` from %d stylus poses turning up to %.1f degrees: RMS error "
+                "%.3f mm, worst %.3f mm.\n"
+                "[trackers.stylus]\n"
+                "tip_offset_mm = [%.4f, %.4f, %.4f]\n",
+                f.poses, f.spread_deg, f.rms_mm, f.max_mm, f.tip_mm.x(), f.tip_mm.y(), f.tip_mm.z());
+  return write_file_atomically(path, buf);
+}
+
+}  // namespace lungar::platform

@@ -27,10 +27,15 @@ std::array<EyeView, 2> StereoView::eyes(const glm::mat4& head_to_world) const {
   std::array<EyeView, 2> out;
   for (int e = 0; e < 2; ++e) {
     const bool left = e == 0;
-    const float offset = static_cast<float>((left ? -0.5 : 0.5) * hmd_.ipd_mm);
-    const glm::mat4 eye_to_world = head_to_world * glm::translate(glm::mat4(1.f), glm::vec3(offset, 0.f, 0.f));
-    out[e].view = glm::inverse(eye_to_world);
-    out[e].projection = projection(left);
+    if (hmd_.calibrated) {
+      out[e].view = (*hmd_.calibrated)[e].eye_from_head * glm::inverse(head_to_world);
+      out[e].projection = (*hmd_.calibrated)[e].projection;
+    } else {
+      const float offset = static_cast<float>((left ? -0.5 : 0.5) * hmd_.ipd_mm);
+      const glm::mat4 eye_to_world = head_to_world * glm::translate(glm::mat4(1.f), glm::vec3(offset, 0.f, 0.f));
+      out[e].view = glm::inverse(eye_to_world);
+      out[e].projection = projection(left);
+    }
     out[e].viewport = {left ? 0 : hmd_.eye_width_px, 0, hmd_.eye_width_px, hmd_.eye_height_px};
   }
   return out;

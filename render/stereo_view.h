@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -35,6 +36,13 @@ struct HmdGeometry {
   int eye_height_px = 720;
   double near_mm = 50.0;
   double far_mm = 5000.0;
+  /// A display calibration per eye (SPAAM), in place of the IPD and fields of view: each eye's view relative to
+  /// the head frame and its projection, in OpenGL's conventions (platform/output/hmd_views.cpp builds them).
+  struct CalibratedEye {
+    glm::mat4 eye_from_head{1.f};
+    glm::mat4 projection{1.f};
+  };
+  std::optional<std::array<CalibratedEye, 2>> calibrated;
 };
 
 class StereoView {

@@ -10,6 +10,7 @@
 #include "config/config_paths.h"
 #include "lungar/version.h"
 #include "platform/app/calibrate_command.h"
+#include "platform/app/calibrate_display_command.h"
 #include "platform/app/doctor/doctor.h"
 #include "platform/app/run.h"
 #include "platform/app/settings_load.h"
@@ -58,12 +59,24 @@ int main(int argc, char** argv) {
   pivot->add_option("--out", pivot_options.out_path, "where to write [trackers.stylus] tip_offset_mm (TOML)")
       ->required();
 
+  lungar::platform::CalibrateDisplayOptions d;
+  CLI::App* calibrate_display = app.add_subcommand(
+      "calibrate-display", "each eye's projection of an optical see-through HMD from SPAAM alignments (DLT)");
+  calibrate_display
+      ->add_option("--alignments", d.alignments_csv,
+                   "CSV eye,x_mm,y_mm,z_mm,u_px,v_px: a tracked point in the head sensor's frame and the eye's pixel "
+                   "(origin top-left) lined up with it; at least 6 per eye, 20-25 advised, 0.3-0.9 m deep")
+      ->required();
+  calibrate_display->add_option("--out", d.out_path, "where to write [hmd.display_calibration] (TOML)")->required();
+  calibrate_display->add_option("--report-json", d.report_json, "each eye's reprojection error, centre, intrinsics");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
   if (*pivot) return lungar::platform::run_pivot(pivot_options);
+  if (*calibrate_display) return lungar::platform::run_calibrate_display(d);
   if (tip.size() == 3) c.stylus_tip_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
   if (*calibrate) return lungar::platform::run_calibrate(c);
   if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);

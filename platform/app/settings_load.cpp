@@ -117,8 +117,13 @@ std::string summarize(const Settings& s) {
   o << "config " << s.source << ": output " << to_string(s.display.output)
     << (s.display.output == Output::OpenXr ? std::string(" (head ") + to_string(s.display.openxr.head) + ")" : "")
     << ", view " << to_string(s.hmd.view) << " (" << s.hmd.eye_width_px << "x" << s.hmd.eye_height_px
-    << " per eye, IPD " << s.hmd.ipd_mm << " mm)"
-    << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
+    << " per eye, ";
+  if (s.hmd.display_calibration) {
+    o << "eyes from the display calibration)";
+  } else {
+    o << "IPD " << s.hmd.ipd_mm << " mm)";
+  }
+  o << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
     << to_string(s.render.deform) << ", breathing " << s.breathing.preset << " " << s.breathing.rate_bpm
     << "/min V_T " << s.breathing.tidal_volume_ml << " mL, tracker " << drivers::to_string(s.trackers.source)
     << (s.trackers.source == drivers::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())

@@ -13,8 +13,12 @@
 
 namespace lungar::platform {
 
-/// The [hmd] settings as render/ takes them (render/ does not read config/).
+/// The [hmd] settings as render/ takes them (render/ does not read config/); with a display calibration, each
+/// eye's view and projection come from its 3 x 4 (calibrated_eye).
 render::HmdGeometry hmd_geometry(const HmdSettings& hmd);
+/// One eye's 3 x 4 (head sensor mm -> viewport pixels, origin top-left, row-major) as the view from the runtime's
+/// head frame and an OpenGL projection with the config's near and far planes.
+render::HmdGeometry::CalibratedEye calibrated_eye(const std::array<double, 12>& projection_3x4, const HmdSettings& hmd);
 
 class HmdViews {
  public:

@@ -2,6 +2,11 @@
 /// @brief The [display] and [hmd] keys: types, ranges and units.
 #include "platform/output/output_settings.h"
 
+#include <cmath>
+#include <limits>
+
+#include "platform/registration/display_calibration.h"
+
 namespace lungar::platform {
 
 void read_display_settings(config::TomlSection s, DisplaySettings& d) {
@@ -42,6 +47,23 @@ void read_hmd_settings(config::TomlSection s, HmdSettings& h) {
   lens.numbers("k1", h.lens.k1, -1.0, 1.0, "");
   lens.numbers("k2", h.lens.k2, -1.0, 1.0, "");
   lens.finish();
+  config::TomlSection cal = s.section("display_calibration");
+  constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+  std::array<std::array<double, 12>, 2> p;
+  for (auto& eye : p) eye.fill(kUnset);
+  cal.numbers("left_projection_3x4", p[0], -1e9, 1e9, "(homogeneous, mm -> pixels)");
+  cal.numbers("right_projection_3x4", p[1], -1e9, 1e9, "(homogeneous, mm -> pixels)");
+  const bool left = !std::isnan(p[0][0]), right = !std::isnan(p[1][0]);
+  if (left != right) {
+    cal.fail(left ? "right_projection_3x4" : "left_projection_3x4",
+             "expected both eyes' projections (lungar calibrate-display writes both), got one");
+  }
+  for (int e = 0; left && e < 2; ++e) {
+    const Eigen::Matrix<double, 3, 4, Eigen::RowMajor> m(p[static_cast<std::size_t>(e)].data());
+    if (auto d = decompose_projection(m); !d) cal.fail(e == 0 ? "left_projection_3x4" : "right_projection_3x4", d.error());
+  }
+  if (left) h.display_calibration = p;
+  cal.finish();
   s.finish();
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "config/base/enum_names.h"
@@ -72,6 +73,10 @@ struct HmdSettings {
   double far_mm = 5000.0;
   double prediction_max_ms = 50.0;  ///< bound on constant-velocity head prediction
   LensSettings lens;
+  /// [hmd.display_calibration] (`lungar calibrate-display`): each eye's 3 x 4 projection, head sensor mm -> that
+  /// eye's viewport pixels (origin top-left), row-major, left then right. Set, it replaces ipd_mm, the fields of
+  /// view and head_to_eye_mm for the eyes' views (platform/output/hmd_views.h).
+  std::optional<std::array<std::array<double, 12>, 2>> display_calibration;
 };
 
 /// Reads [display] (and [display.openxr]) over `d`; throws config::ConfigError naming the file, key and expectation.

@@ -10,6 +10,7 @@
 #include "drivers/igtl/igtl_interface.h"
 #include "drivers/mock/mock_interface.h"
 #include "drivers/mock/mock_trajectory.h"
+#include "drivers/plus/plus_replay.h"
 #include "drivers/replay/replay_interface.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/tracker/tracker_core.h"
@@ -36,6 +37,20 @@ bool recorded_with_another_layout(const TrkLog& log, const TrackerConfig& settin
   return !recorded || !decodes_alike(*recorded, settings);
 }
 
+/// A PLUS tracked sequence replayed as the OpenIGTLink messages of a PlusServer (drivers/plus/plus_replay.h).
+Result<std::unique_ptr<TrackerDevice>> plus_device(const TrackerConfig& settings) {
+  Result<PlusSequence> seq = read_plus_sequence(settings.replay_file);
+  if (!seq) return fail(seq.error());
+  Result<PlusReplay> replay = plus_replay(*seq, settings, settings.replay_file);
+  if (!replay) return fail(replay.error());
+  const IgtlLayout layout = replay->layout;
+  RecordDecoder igtl{TrkSource::Igtl, [layout](std::span<const std::uint8_t> message) {
+                       return decode_igtl_message(message, layout);
+                     }};
+  const std::string what = settings.replay_file + " (PLUS sequence: " + replay->describe + ")";
+  return replay_create(std::move(replay->log), what, settings.replay_realtime, settings.replay_loop, {std::move(igtl)});
+}
+
 /// The device settings.source names; `layout_differs` is set for a replayed log made with another layout.
 Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings, const ReportLayout& layout,
                                                    const IgtlLayout& igtl_layout, bool& layout_differs) {
@@ -47,6 +62,7 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
       }
       return mock_create(settings, layout);
     case TrackerSource::Replay: {
+      if (is_plus_sequence_path(settings.replay_file)) return plus_device(settings);
       Result<TrkLog> log = load_trk(settings.replay_file);
       if (!log) return fail(log.error());
       // The bytes are decoded with the configured layout, as the live device would; a log made with another

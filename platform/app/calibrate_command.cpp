@@ -7,6 +7,7 @@
 #include "platform/app/settings_load.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
+#include "drivers/plus/plus_sequence.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/registration/pivot_calibration.h"
@@ -29,7 +30,41 @@ Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std:
 
 }  // namespace
 
+/// The stylus in the Reference's (the patient's) frame in each frame of a PLUS sequence where both are valid (or
+/// the stylus is given relative to the Reference); the tip from --config, else none.
+Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::string& config_path) {
+  auto seq = drivers::read_plus_sequence(path);
+  if (!seq) return seq.with_context("");
+  StylusLog out;
+  if (!config_path.empty()) {
+    auto s = load_settings(config_path);
+    if (!s) return s.with_context("");
+    const auto& tip = s->trackers.stylus.tip_offset_mm;
+    out.tip_offset_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
+  }
+  const double t0 = seq->frames.empty() ? 0.0 : seq->frames.front().timestamp_s;
+  for (const drivers::PlusFrame& f : seq->frames) {
+    const drivers::PlusTransform* stylus = f.find("Stylus");
+    if (!stylus) stylus = f.find("StylusTip");
+    if (!stylus || !stylus->valid) continue;
+    Eigen::Matrix4d in_patient = stylus->matrix;
+    if (stylus->frame != "Reference") {
+      const drivers::PlusTransform* reference = f.find("Reference");
+      if (!reference || !reference->valid || reference->frame != stylus->frame) continue;
+      in_patient = reference->matrix.inverse() * stylus->matrix;
+    }
+    out.t_s.push_back(f.timestamp_s - t0);
+    out.poses.push_back(Eigen::Isometry3d(in_patient));
+  }
+  if (out.poses.empty()) {
+    return fail(path + ": expected frames with a valid Stylus transform relative to the Reference (or to the "
+                       "tracker beside a valid Reference), got none");
+  }
+  return out;
+}
+
 Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::string& config_path) {
+  if (drivers::is_plus_sequence_path(log_path)) return stylus_poses_from_plus(log_path, config_path);
   auto loaded = drivers::load_trk(log_path);
   if (!loaded) return loaded.with_context("");
   auto trackers = log_layout(*loaded, log_path, config_path);

@@ -207,3 +207,57 @@ TEST(PivotCalibration, RefusesTooFewPosesAndAStylusThatDidNotTurn) {
   ASSERT_FALSE(still);
   EXPECT_NE(still.error().find("turned at most 0.0 degrees"), std::string::npos) << still.error();
 }
+
+// The landmarks from a PLUS tracked sequence (.igs.mha) as PlusServer saves it: the stylus and the reference both
+// tracked by the tracker, the stylus 120 mm up the handle from its tip, one frame INVALID on each landmark.
+TEST(CalibrateFromLog, APlusSequenceGivesTheKnownRegistration) {
+  const Eigen::Vector3d tip(0.0, 0.0, -120.0);
+  const Eigen::Isometry3d reference = Eigen::Translation3d(50, 80, -900) * Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ());
+  const Eigen::Quaterniond reg_q(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 0.5, 0).normalized()));
+  const Eigen::Vector3d reg_t(-10.0, 120.0, 30.0);
+  const std::vector<Eigen::Vector3d> model = {{-80, -150, -100}, {90, -140, -110}, {0, -230, -300}, {70, -90, -60},
+                                              {-40, -60, -250}};
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_plus_calibrate";
+  std::filesystem::create_directories(dir);
+  const std::string seq = (dir / "landmarks.igs.mha").string();
+  {
+    std::ofstream o(seq);
+    o << "ObjectType = Image\nNDims = 3\nDimSize = 1 1 1\nElementType = MET_UCHAR\n";
+    const auto matrix = [&o](const Eigen::Matrix4d& m) {
+      for (int i = 0; i < 16; ++i) o << (i ? " " : "") << m(i / 4, i % 4);
+      o << "\n";
+    };
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> tilt(-0.4, 0.4);
+    int frame = 0;
+    for (const Eigen::Vector3d& m : model) {
+      const Eigen::Vector3d target = reference * (reg_q * m + reg_t);  // the landmark in the tracker's frame
+      for (int k = 0; k < 40; ++k, ++frame) {
+        const Eigen::Matrix3d r = (Eigen::AngleAxisd(tilt(rng), Eigen::Vector3d::UnitX()) *
+                                   Eigen::AngleAxisd(tilt(rng), Eigen::Vector3d::UnitY())).toRotationMatrix();
+        Eigen::Isometry3d stylus = Eigen::Isometry3d::Identity();
+        stylus.linear() = r;
+        stylus.translation() = target - r * tip;
+        char n[8];
+        std::snprintf(n, sizeof n, "%04d", frame);
+        o << "Seq_Frame" << n << "_ReferenceToTrackerTransform = ";
+        matrix(reference.matrix());
+        o << "Seq_Frame" << n << "_StylusToTrackerTransform = ";
+        matrix(k == 7 ? Eigen::Matrix4d::Identity().eval() : stylus.matrix());  // garbage, flagged INVALID
+        o << "Seq_Frame" << n << "_StylusToTrackerTransformStatus = " << (k == 7 ? "INVALID" : "OK") << "\n";
+        o << "Seq_Frame" << n << "_Timestamp = " << 100.0 + 0.02 * frame << "\n";
+      }
+      frame += 30;  // moving to the next landmark: no frames recorded
+    }
+    o << "ElementDataFile = LOCAL\n";
+  }
+  auto touched = platform::stylus_points_from_log(seq, "", tip);
+  ASSERT_TRUE(touched) << touched.error();
+  ASSERT_EQ(touched->size(), model.size());
+  auto r = platform::register_fiducials(model, *touched);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_LT(r->fre_rms_mm, 0.05);
+  EXPECT_LT(r->rotation.angularDistance(reg_q), 1e-3);
+  EXPECT_LT((r->translation_mm - reg_t).norm(), 0.05);
+  std::filesystem::remove_all(dir);
+}

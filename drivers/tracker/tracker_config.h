@@ -90,8 +90,8 @@ struct SensorConfig {
   int offset = 0;   ///< byte offset of this sensor's block (position, orientation) in the report
   /// With position_type = "none": the position this role reports, in the tracker's axes (before axis_remap), mm.
   std::array<double, 3> fixed_position_mm = {0.0, 0.0, 0.0};
-  /// The point the role stands for, in the sensor's own frame, mm: a stylus's tip (`lungar calibrate pivot` finds
-  /// it). Registration reads the stylus at its tip; 0: the sensor's origin is the point.
+  /// [trackers.stylus] only: the stylus's tip in the sensor's own frame, mm (`lungar calibrate pivot` finds it).
+  /// Registration reads the stylus at its tip; 0: the sensor's origin is the tip.
   std::array<double, 3> tip_offset_mm = {0.0, 0.0, 0.0};
 
   bool operator==(const SensorConfig&) const = default;

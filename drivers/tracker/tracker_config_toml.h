@@ -268,14 +268,14 @@ void visit(Io& s, ReportConfig& r) {
   s.finish();
 }
 
-/// [trackers.head], [trackers.patient], [trackers.stylus].
+/// [trackers.head], [trackers.patient], [trackers.stylus]; `pointer`: the stylus, which has a tip.
 template <class Io>
-void visit(Io& s, SensorConfig& d) {
+void visit(Io& s, SensorConfig& d, bool pointer) {
   s.boolean("enabled", d.enabled);
   s.integer("station", d.station, 0, 255, "(station byte value)");
   s.integer("offset", d.offset, 0, 1023, "bytes");
   s.numbers("fixed_position_mm", d.fixed_position_mm, -1e5, 1e5, "mm");
-  s.numbers("tip_offset_mm", d.tip_offset_mm, -1000.0, 1000.0, "mm");
+  if (pointer) s.numbers("tip_offset_mm", d.tip_offset_mm, -1000.0, 1000.0, "mm");
   s.finish();
 }
 
@@ -308,7 +308,7 @@ void visit(Io& s, TrackerConfig& t) {
       {"head", &t.head}, {"patient", &t.patient}, {"stylus", &t.stylus}};
   for (const auto& [name, sensor] : roles) {
     Io sec = s.section(name);
-    visit(sec, *sensor);
+    visit(sec, *sensor, sensor == &t.stylus);
     if constexpr (tracker_toml::kReads<Io>) {
       if (sensor->enabled) tracker_toml::check_sensor(sec, t.report, sensor, roles);
     }

@@ -113,7 +113,7 @@ TrackerConfig every_key_changed() {
   r.euler_sequence = "xyz";
   t.head = {false, 11, 7, {1.0, 2.0, 3.0}};
   t.patient = {false, 12, 8, {-1.0, -2.0, -3.0}};
-  t.stylus = {true, 13, 9, {0.5, 0.25, 0.125}};
+  t.stylus = {true, 13, 9, {0.5, 0.25, 0.125}, {1.5, -2.25, -150.125}};
   return t;
 }
 

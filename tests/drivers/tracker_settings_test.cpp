@@ -148,6 +148,9 @@ TEST(Trackers, WorkspaceAndToleranceAreChecked) {
             "bad.toml:2: key 'trackers.report.time_bits': expected 16 or 32, got 24");
   EXPECT_EQ(error_of("[trackers.stylus]\nchannel = 3\n"),
             "bad.toml:2: unknown key 'trackers.stylus.channel'; expected one of: enabled, fixed_position_mm, offset, "
+            "station, tip_offset_mm");
+  EXPECT_EQ(error_of("[trackers.head]\ntip_offset_mm = [0.0, 0.0, 10.0]\n"),
+            "bad.toml:2: unknown key 'trackers.head.tip_offset_mm'; expected one of: enabled, fixed_position_mm, offset, "
             "station");
 }
 

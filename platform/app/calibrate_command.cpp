@@ -10,6 +10,7 @@
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
+#include "platform/registration/landmark_matching.h"
 #include "platform/registration/pivot_calibration.h"
 
 namespace lungar::platform {
@@ -105,14 +106,23 @@ Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::
   return out;
 }
 
-Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
-                                                            const std::optional<Eigen::Vector3d>& tip_mm) {
+Result<std::vector<Dwell>> stylus_dwells_from_log(const std::string& log_path, const std::string& config_path,
+                                                  const std::optional<Eigen::Vector3d>& tip_mm) {
   auto log = stylus_poses_from_log(log_path, config_path);
   if (!log) return log.with_context("");
   const Eigen::Vector3d tip = tip_mm ? *tip_mm : log->tip_offset_mm;
   std::vector<StylusSample> samples;
   for (std::size_t i = 0; i < log->poses.size(); ++i) samples.push_back({log->t_s[i], log->poses[i] * tip});
-  return find_dwell_points(samples);
+  return find_dwells(samples);
+}
+
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
+                                                            const std::optional<Eigen::Vector3d>& tip_mm) {
+  auto dwells = stylus_dwells_from_log(log_path, config_path, tip_mm);
+  if (!dwells) return dwells.with_context("");
+  std::vector<Eigen::Vector3d> points;
+  for (const Dwell& d : *dwells) points.push_back(d.position_mm);
+  return points;
 }
 
 int run_pivot(const PivotOptions& o) {
@@ -140,15 +150,27 @@ int run_calibrate(const CalibrateOptions& o) {
     return say("expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk"), 2;
   }
   if (o.stylus_tip_mm && !o.stylus_csv.empty()) return say("--stylus-tip-mm applies to --stylus-log, not to --stylus"), 2;
-  auto tracked = o.stylus_csv.empty() ? stylus_points_from_log(o.stylus_log, o.config_path, o.stylus_tip_mm)
-                                      : read_points_csv(o.stylus_csv);
-  if (!tracked) return say(tracked.error()), 2;
-  auto fitted = register_fiducials(*model, *tracked);
-  if (!fitted) return say(fitted.error() + " (" + (o.stylus_csv.empty() ? o.stylus_log : o.stylus_csv) + ")"), 2;
-  const Registration& r = *fitted;
+  Registration r;
+  std::vector<double> fre_mm;
+  if (!o.stylus_csv.empty()) {  // the touches as pairs, in the model's order
+    auto tracked = read_points_csv(o.stylus_csv);
+    if (!tracked) return say(tracked.error()), 2;
+    auto fitted = register_fiducials(*model, *tracked);
+    if (!fitted) return say(fitted.error() + " (" + o.stylus_csv + ")"), 2;
+    r = *fitted;
+  } else {  // a session: dwells, repeats, rests; matched to the landmarks
+    auto dwells = stylus_dwells_from_log(o.stylus_log, o.config_path, o.stylus_tip_mm);
+    if (!dwells) return say(dwells.error()), 2;
+    auto matched = match_landmarks(*model, *dwells);
+    if (!matched) return say(matched.error() + " (" + o.stylus_log + ")"), 2;
+    for (const std::string& w : matched->warnings) say(w);
+    r = matched->registration;
+    fre_mm = matched->fre_mm;
+  }
   if (Status written = write_registration_toml(o.out_path, r); !written) return say(written.error()), 1;
   std::printf("registration from %d fiducials: RMS fiducial registration error %.3f mm (worst %.3f mm)\n", r.fiducials,
               r.fre_rms_mm, r.fre_max_mm);
+  for (std::size_t k = 0; k < fre_mm.size(); ++k) std::printf("  landmark %zu: %.3f mm\n", k + 1, fre_mm[k]);
   std::printf("  translation_mm = [%.3f, %.3f, %.3f], rotation_wxyz = [%.6f, %.6f, %.6f, %.6f]\n", r.translation_mm.x(),
               r.translation_mm.y(), r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(),
               r.rotation.z());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "platform/registration/fiducial_registration.h"
+#include "platform/registration/landmark_matching.h"
 
 namespace lungar::platform {
 
@@ -40,6 +41,10 @@ Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::
 /// patient tracker's frame, then dwells become fiducials. An error names the file.
 Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
                                                             const std::optional<Eigen::Vector3d>& tip_mm = {});
+
+/// The same touches as dwells (where, when, how long), for landmark_matching.h.
+Result<std::vector<Dwell>> stylus_dwells_from_log(const std::string& log_path, const std::string& config_path,
+                                                  const std::optional<Eigen::Vector3d>& tip_mm = {});
 
 /// The pivot command; prints the tip and its error, returns the exit code.
 int run_pivot(const PivotOptions& o);

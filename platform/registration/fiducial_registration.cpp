@@ -54,31 +54,6 @@ Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& mode
   return out;
 }
 
-std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm,
-                                               double dwell_s) {
-  std::vector<Eigen::Vector3d> points;
-  std::size_t start = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  auto close_run = [&](std::size_t end) {  // samples [start, end) form a run
-    if (end > start && samples[end - 1].t_s - samples[start].t_s >= dwell_s) {
-      points.push_back(sum / static_cast<double>(end - start));
-    }
-  };
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (k > start) {
-      const Eigen::Vector3d mean = sum / static_cast<double>(k - start);
-      if ((samples[k].position_mm - mean).norm() > radius_mm) {
-        close_run(k);
-        start = k;
-        sum.setZero();
-      }
-    }
-    sum += samples[k].position_mm;
-  }
-  close_run(samples.size());
-  return points;
-}
-
 Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path) {
   std::vector<Eigen::Vector3d> out;
   std::ifstream in(path);

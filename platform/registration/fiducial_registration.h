@@ -30,14 +30,11 @@ struct Registration {
 Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& model,
                                         const std::vector<Eigen::Vector3d>& tracked);
 
-/// Stylus samples -> fiducial touches: each run of samples that stays within `radius_mm` of its running mean for at
-/// least `dwell_s` seconds is one touch, reported as the mean position, in time order.
+/// One sample of the stylus tip (patient frame); landmark_matching.h finds the touches in a track of them.
 struct StylusSample {
   double t_s = 0;
   Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();
 };
-std::vector<Eigen::Vector3d> find_dwell_points(const std::vector<StylusSample>& samples, double radius_mm = 1.5,
-                                               double dwell_s = 0.5);
 
 /// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed. An error names file, line and field.
 Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path);

@@ -9,6 +9,7 @@
 
 #include "platform/app/settings_load.h"
 #include "platform/registration/fiducial_registration.h"
+#include "platform/registration/landmark_matching.h"
 
 using lungar::platform::Registration;
 
@@ -89,9 +90,12 @@ TEST(FiducialRegistration, StylusDwellsBecomeFiducialsInOrder) {
       samples.push_back({t, Eigen::Vector3d(200.0 + 30.0 * k, -100.0, 5.0 * k)});
     }
   }
-  const auto found = lungar::platform::find_dwell_points(samples);
+  const auto found = lungar::platform::find_dwells(samples);
   ASSERT_EQ(found.size(), touches.size());
-  for (std::size_t k = 0; k < touches.size(); ++k) EXPECT_LT((found[k] - touches[k]).norm(), 0.1) << k;
+  for (std::size_t k = 0; k < touches.size(); ++k) {
+    EXPECT_LT((found[k].position_mm - touches[k]).norm(), 0.1) << k;
+    EXPECT_NEAR(found[k].duration_s, 59 * 0.016, 1e-9) << k;
+  }
 }
 
 TEST(FiducialRegistration, PointsFileErrorsNameTheLine) {

@@ -1,0 +1,80 @@
+/// @file landmark_matching_test.cpp
+/// @brief Landmark capture as a real session goes: rests before and after, a pause on the way, a landmark touched
+///        twice, landmarks touched out of order, one missed; each matched (or refused) as a user needs.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <Eigen/Geometry>
+
+#include "platform/registration/landmark_matching.h"
+
+namespace lungar::platform {
+namespace {
+
+const std::vector<Eigen::Vector3d> kModel = {{-80, -150, -100}, {90, -140, -110}, {0, -230, -300},
+                                             {70, -90, -60},    {-40, -60, -250}, {20, -180, -20}};
+const Eigen::Isometry3d kTruth =
+    Eigen::Translation3d(15, -220, 40) * Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 1.0, -0.3).normalized());
+
+/// A track of the tip: each target held for `hold` s with 0.2 mm jitter, then 0.3 s of travel to the next.
+std::vector<StylusSample> track(const std::vector<Eigen::Vector3d>& targets, double hold = 0.8) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> jitter(0.0, 0.2);
+  std::vector<StylusSample> out;
+  double t = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    for (double s = 0; s < hold; s += 0.016, t += 0.016)
+      out.push_back({t, targets[i] + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng))});
+    const Eigen::Vector3d next = i + 1 < targets.size() ? targets[i + 1] : targets[i];
+    for (int k = 1; k <= 18; ++k, t += 0.016)  // travel: never still long enough to count
+      out.push_back({t, targets[i] + (next - targets[i]) * k / 19.0 + Eigen::Vector3d(0, 0, 40.0 * std::sin(k / 6.0))});
+  }
+  return out;
+}
+
+Eigen::Vector3d on(std::size_t landmark) { return kTruth * kModel[landmark]; }
+
+void expect_truth(const LandmarkMatch& m) {
+  EXPECT_LT(m.registration.fre_rms_mm, 0.3);
+  EXPECT_LT(m.registration.rotation.angularDistance(Eigen::Quaterniond(kTruth.rotation())), 0.003);
+  EXPECT_LT((m.registration.translation_mm - kTruth.translation()).norm(), 0.5);
+  ASSERT_EQ(m.fre_mm.size(), kModel.size());
+  for (double e : m.fre_mm) EXPECT_LT(e, 0.6);
+}
+
+TEST(LandmarkMatching, RestsPausesAndARepeatedTouchAreSortedOut) {
+  const Eigen::Vector3d rest(400, 300, 200), pause(-300, 250, -400);
+  const auto samples = track({rest, on(0), on(1), on(2), on(2), on(3), pause, on(4), on(5), rest}, 1.0);
+  auto m = match_landmarks(kModel, find_dwells(samples));
+  ASSERT_TRUE(m) << m.error();
+  expect_truth(*m);
+  EXPECT_TRUE(m->in_order);
+  EXPECT_EQ(m->merged, 2) << "landmark 3 touched twice, and the rest returned to";
+  EXPECT_EQ(m->dropped, 2) << "the rest and the pause";
+  EXPECT_EQ(m->warnings.size(), 2u);
+}
+
+TEST(LandmarkMatching, OutOfOrderTouchesAreMatchedByShapeWithAWarning) {
+  auto m = match_landmarks(kModel, find_dwells(track({on(0), on(4), on(2), on(3), on(1), on(5)})));
+  ASSERT_TRUE(m) << m.error();
+  expect_truth(*m);
+  EXPECT_FALSE(m->in_order);
+  ASSERT_FALSE(m->warnings.empty());
+  EXPECT_NE(m->warnings.back().find("not in the touching order"), std::string::npos) << m->warnings.back();
+}
+
+TEST(LandmarkMatching, AMissedLandmarkIsRefusedByNumber) {
+  // Landmark 4 missed; a rest stands in its place, so the count of dwells alone does not tell.
+  auto m = match_landmarks(kModel, find_dwells(track({on(0), on(1), on(2), Eigen::Vector3d(400, 300, 200), on(4),
+                                                      on(5)})));
+  ASSERT_FALSE(m);
+  EXPECT_NE(m.error().find("landmark 4 "), std::string::npos) << m.error();
+  EXPECT_NE(m.error().find("missed"), std::string::npos) << m.error();
+  auto few = match_landmarks(kModel, find_dwells(track({on(0), on(1), on(2)})));
+  ASSERT_FALSE(few);
+  EXPECT_NE(few.error().find("got 3 distinct dwells"), std::string::npos) << few.error();
+}
+
+}  // namespace
+}  // namespace lungar::platform

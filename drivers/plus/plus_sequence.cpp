@@ -57,6 +57,10 @@ bool is_plus_sequence_path(const std::string& path) { return ends_with(path, ".m
 Result<PlusSequence> read_plus_sequence(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return fail(path + ": cannot open: expected a PLUS tracked sequence (.igs.mha, .seq.mha, .mhd)");
+  return parse_plus_sequence(in, path);
+}
+
+Result<PlusSequence> parse_plus_sequence(std::istream& in, const std::string& path) {
   struct Pending {
     PlusFrame frame;
     bool has_time = false;

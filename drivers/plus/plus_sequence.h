@@ -7,6 +7,7 @@
 /// @ingroup drivers
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct PlusSequence {
 
 /// Reads the header of a tracked sequence; the error is one line naming the file, the line and the field.
 Result<PlusSequence> read_plus_sequence(const std::string& path);
+
+/// The same from a stream (`path` names it in errors): what the fuzz target drives.
+Result<PlusSequence> parse_plus_sequence(std::istream& in, const std::string& path);
 
 /// Whether `path` names a MetaImage file (.mha, .mhd): what `--tracker replay:` and `--stylus-log` read as PLUS.
 bool is_plus_sequence_path(const std::string& path);

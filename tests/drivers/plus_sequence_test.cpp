@@ -10,6 +10,7 @@
 #include "drivers/plus/plus_replay.h"
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/tracker_factory/tracker_factory.h"
+#include "tests/drivers/test_data.h"
 #include "tests/drivers/tracker_test_support.h"
 
 namespace lungar::drivers {
@@ -69,6 +70,15 @@ TEST(PlusSequence, ReadsFramesTransformsAndStatuses) {
   EXPECT_NEAR(stylus->matrix(1, 0), std::sin(0.6), 1e-6);
   EXPECT_FALSE(seq->frames[2].find("Stylus")->valid);
   EXPECT_TRUE(seq->frames[2].find("Reference")->valid);
+}
+
+// The shipped sample (also the fuzzer's seed), as PLUS writes it: three frames, the stylus INVALID in the second.
+TEST(PlusSequence, TheShippedSampleReads) {
+  auto seq = read_plus_sequence(lungar::testing::tracker_data("two_tools.igs.mha"));
+  ASSERT_TRUE(seq) << seq.error();
+  EXPECT_EQ(seq->frames.size(), 3u);
+  EXPECT_EQ(seq->invalid_transforms, 1);
+  EXPECT_DOUBLE_EQ(seq->frames[2].find("Reference")->matrix(2, 3), 300.0);
 }
 
 TEST(PlusSequence, BadFilesAreRefusedNamingTheLineAndTheField) {

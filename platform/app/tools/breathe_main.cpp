@@ -14,6 +14,8 @@
 #include "platform/app/settings_load.h"
 #include "lungar/version.h"
 #include "platform/app/scenario_adapter.h"
+#include "sim/breathing/breath_follower.h"
+#include "sim/breathing/breath_trace.h"
 #include "sim/breathing/exhale_path.h"
 #include "sim/breathing/orientation.h"
 #include "sim/breathing/pattern.h"
@@ -69,6 +71,29 @@ void print_series(const sim::BreathingScript& script, double seconds, double dt)
                 static_cast<long long>(s.breath), q.w(), q.x(), q.y(), q.z(), sim::tilt_from_upright_deg(q), g.x(),
                 g.y(), g.z());
   }
+}
+
+/// --breath: the follower driven by a recorded surrogate, sampled every dt, with the model's dV for its handovers.
+int print_followed(const sim::BreathingScript& script, const std::string& trace_path, double tidal_ml,
+                   std::optional<double> seconds, double dt) {
+  auto trace = sim::read_breath_trace(trace_path);
+  if (!trace) return fail_with(trace.error());
+  sim::FollowerParams fp;
+  fp.tidal_volume_ml = tidal_ml;
+  sim::BreathFollower follower(fp);
+  const double end = seconds.value_or(trace->samples.back().t_s);
+  std::printf("t_s,dv_ml,breath_state,surrogate,model_dv_ml\n");
+  std::size_t next = 0;
+  const auto n = static_cast<long>(std::floor(end / dt + 1e-9));
+  for (long k = 0; k <= n; ++k) {
+    const double t = static_cast<double>(k) * dt;
+    for (; next < trace->samples.size() && trace->samples[next].t_s <= t; ++next)
+      follower.add(trace->samples[next].t_s, trace->samples[next].value);
+    const double model = script.driver.at(t).dv_ml;
+    const sim::FollowerOutput o = follower.at(t, model);
+    std::printf("%.4f,%.3f,%s,%.6g,%.3f\n", t, o.dv_ml, sim::kBreathStateNames.name(o.state), o.surrogate, model);
+  }
+  return 0;
 }
 
 /// One JSON object on stdout: the parameters, the exhale path measured on the driver and 4-D CT's, the measured
@@ -132,6 +157,10 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long to run, s (default: the scenario's duration_s, else 60)")
       ->check(CLI::Range(0.0, 86400.0));
   app.add_option("--dt", dt, "time step of the series, s (default 0.01)")->check(CLI::Range(1e-4, 10.0));
+  std::string breath;
+  app.add_option("--breath", breath,
+                 "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker) "
+                 "and print t_s, dv_ml, breath_state (following | holding | model), surrogate, model_dv_ml");
   app.add_flag("--curves", curves, "print the three pressure-volume curves, V(P) from -5 to 40 cmH2O");
   app.add_flag("--presets", presets, "print each preset's parameters, FRC, TLC, compliance and pressure swing");
   app.add_flag("--exhale-path", exhale_path,
@@ -171,6 +200,7 @@ int main(int argc, char** argv) {
   auto script = platform::load_breathing_script(b, seconds.value_or(60.0));
   if (!script) return fail_with(script.error());
   if (exhale_path) return print_exhale_path(script->start);
+  if (!breath.empty()) return print_followed(*script, breath, b.tidal_volume_ml, seconds, dt);
   print_series(*script, seconds.value_or(script->duration_s), dt);
   return 0;
 }

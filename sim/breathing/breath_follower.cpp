@@ -1,0 +1,121 @@
+/// @file breath_follower.cpp
+/// @brief Turns, baseline, amplitude and the states of breath_follower.h.
+#include "sim/breathing/breath_follower.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lungar::sim {
+
+namespace {
+/// A turn counts once the signal has come back by this share of the typical amplitude.
+constexpr double kHysteresis = 0.3;
+}  // namespace
+
+void BreathFollower::add(double t_s, double value) {
+  if (!std::isfinite(t_s) || !std::isfinite(value) || (any_ && t_s < last_t_)) {
+    ++dropped_;
+    return;
+  }
+  if (!any_) {
+    any_ = true;
+    extreme_ = {t_s, value};
+    lo_ = hi_ = value;
+    last_t_ = t_s;
+    last_value_ = value;
+    return;
+  }
+  if (t_s - last_t_ > p_.lost_after_s) breaths_at_return_ = breaths_;  // back after a loss: calibrate again
+  lo_ = std::min(lo_, value);
+  hi_ = std::max(hi_, value);
+  const double h = kHysteresis * (amplitudes_.empty() ? hi_ - lo_ : amplitude());
+  if (rising_) {
+    if (value > extreme_.value) {
+      extreme_ = {t_s, value};
+    } else if (h > 0 && extreme_.value - value > h) {
+      turn_found(false, extreme_);
+      rising_ = false;
+      extreme_ = {t_s, value};
+    }
+  } else {
+    if (value < extreme_.value) {
+      extreme_ = {t_s, value};
+    } else if (h > 0 && value - extreme_.value > h) {
+      turn_found(true, extreme_);
+      rising_ = true;
+      extreme_ = {t_s, value};
+    }
+  }
+  last_t_ = t_s;
+  last_value_ = value;
+}
+
+void BreathFollower::turn_found(bool trough, const Turn& t) {
+  if (trough) {
+    troughs_.push_back(t);
+    if (troughs_.size() > 2) troughs_.erase(troughs_.begin());
+    return;
+  }
+  if (troughs_.empty()) return;  // a peak before any trough: no breath to measure yet
+  const double a = t.value - troughs_.back().value;
+  if (!(a > 0)) return;
+  amplitudes_.push_back(a);
+  if (static_cast<int>(amplitudes_.size()) > p_.median_of) amplitudes_.pop_front();
+  ++breaths_;
+}
+
+double BreathFollower::amplitude() const {
+  std::vector<double> a(amplitudes_.begin(), amplitudes_.end());
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(a.size() / 2), a.end());
+  return a[a.size() / 2];
+}
+
+double BreathFollower::baseline(double t_s) const {
+  if (troughs_.empty()) return lo_;
+  const Turn& b = troughs_.back();
+  if (troughs_.size() < 2) return b.value;
+  const Turn& a = troughs_.front();
+  const double span = b.t_s - a.t_s;
+  if (!(span > 0)) return b.value;
+  // The drift between the last two end-exhales, carried forward for at most one more breath.
+  const double ahead = std::clamp(t_s - b.t_s, 0.0, span);
+  return b.value + (b.value - a.value) / span * ahead;
+}
+
+FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
+  const bool lost = !any_ || t_s - last_t_ > p_.lost_after_s;
+  const bool calibrated = breaths_ >= p_.calibration_breaths && !amplitudes_.empty() &&
+                          (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 2);
+  double target = model_dv_ml, k = 0;
+  const bool was_following = state_ == BreathState::following;
+  if (lost) {
+    const bool recently = any_ && t_s - last_t_ - p_.lost_after_s < p_.holding_s;
+    state_ = recently && state_ != BreathState::model ? BreathState::holding : BreathState::model;
+  } else if (calibrated) {
+    state_ = BreathState::following;
+    k = p_.tidal_volume_ml / amplitude();
+    target = k * (last_value_ - baseline(last_t_));
+  } else {
+    state_ = BreathState::model;
+  }
+  // No jump: once dV is on its source, it moves as the source itself moved this step (the signal's own change at
+  // the current scale, or the model's), so steady following has no lag; anything else (a change of source, a
+  // new end-exhale level or scale) is caught up at no more than kHandoverMlPerS.
+  const bool following = state_ == BreathState::following;
+  if (!out_started_) {
+    out_ml_ = target;
+    out_started_ = true;
+  } else {
+    double limit = kHandoverMlPerS * std::max(0.0, t_s - out_t_);
+    if (caught_up_ && following == was_following)
+      limit = std::max(limit, following ? std::abs(k * (last_value_ - used_value_)) : std::abs(model_dv_ml - used_model_));
+    out_ml_ += std::clamp(target - out_ml_, -limit, limit);
+  }
+  caught_up_ = std::abs(target - out_ml_) < 1e-9;
+  out_t_ = t_s;
+  used_value_ = last_value_;
+  used_model_ = model_dv_ml;
+  return {out_ml_, state_, last_value_};
+}
+
+}  // namespace lungar::sim

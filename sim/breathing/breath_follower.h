@@ -1,0 +1,81 @@
+/// @file breath_follower.h
+/// @brief Lungs that breathe with the patient: a respiratory surrogate (a chest marker's excursion, an RPM trace,
+///        a belt) turned into the volume change dV that drives the deformation, causally, sample by sample, the
+///        same code in the runtime and offline (`lungar-breathe --breath`).
+///
+/// - Breaths are found as troughs and peaks of the surrogate with hysteresis (a turn counts once the signal has
+///   come back by a third of the typical amplitude), so noise and jerks make no breath.
+/// - The end-exhale level (the baseline) follows the troughs, with the drift between the last two carried
+///   forward, so a marker that slowly sinks (a patient settling) does not read as breathing out.
+/// - Amplitude drives geometry: dV = k (s - baseline), with k = V_T / the median amplitude of the last breaths,
+///   so a deeper breath gives a bigger dV and one irregular breath does not rescale the rest.
+/// - States: `model` (not yet calibrated, or handed over), `following`, `holding` (the signal stopped: dV moves
+///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once two breaths of the
+///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
+#pragma once
+
+#include <deque>
+#include <vector>
+
+#include "config/base/enum_names.h"
+
+namespace lungar::sim {
+
+enum class BreathState { model, following, holding };
+inline constexpr EnumNames<BreathState, 3> kBreathStateNames{{{{BreathState::model, "model"},
+                                                                {BreathState::following, "following"},
+                                                                {BreathState::holding, "holding"}}}};
+
+/// How fast dV may move when the source changes (lost, returned): 5 mL per 10 ms step.
+inline constexpr double kHandoverMlPerS = 500.0;
+
+struct FollowerParams {
+  double tidal_volume_ml = 500.0;  ///< V_T: what the median breath of the surrogate maps to
+  double lost_after_s = 0.5;       ///< no sample for this long: the signal is lost
+  double holding_s = 2.0;          ///< then `holding` this long before `model`
+  int calibration_breaths = 2;     ///< breaths found before following
+  int median_of = 5;               ///< breaths in the amplitude's median
+};
+
+struct FollowerOutput {
+  double dv_ml = 0;
+  BreathState state = BreathState::model;
+  double surrogate = 0;  ///< the last sample's value
+};
+
+class BreathFollower {
+ public:
+  explicit BreathFollower(FollowerParams p = {}) : p_(p) {}
+
+  /// One surrogate sample (inhale up); times must not decrease. A non-finite value is dropped and counted.
+  void add(double t_s, double value);
+  /// dV at `t_s` (not before the last call), given the model's dV there for the handover.
+  FollowerOutput at(double t_s, double model_dv_ml);
+
+  int breaths() const { return breaths_; }
+  int dropped() const { return dropped_; }
+
+ private:
+  struct Turn {
+    double t_s, value;
+  };
+  void turn_found(bool trough, const Turn& t);
+  double amplitude() const;
+  double baseline(double t_s) const;
+
+  FollowerParams p_;
+  bool any_ = false, rising_ = true;
+  double last_t_ = 0, last_value_ = 0;
+  Turn extreme_{0, 0};            ///< the candidate turn: the highest point while rising, lowest while falling
+  double lo_ = 0, hi_ = 0;        ///< the range seen before the first amplitude
+  std::vector<Turn> troughs_;     ///< the last two
+  std::deque<double> amplitudes_; ///< peak minus the trough before it, the last median_of
+  int breaths_ = 0, dropped_ = 0;
+  int breaths_at_return_ = -1;    ///< breaths when the signal came back after a loss (-1: not lost)
+  BreathState state_ = BreathState::model;
+  double out_ml_ = 0, out_t_ = 0;
+  double used_value_ = 0, used_model_ = 0;  ///< the surrogate and the model's dV at the last at()
+  bool out_started_ = false, caught_up_ = true;
+};
+
+}  // namespace lungar::sim

@@ -1,0 +1,93 @@
+/// @file breath_trace.cpp
+/// @brief The CSV surrogates of breath_trace.h, and a marker's projection on its breathing axis.
+#include "sim/breathing/breath_trace.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+namespace lungar::sim {
+namespace {
+
+constexpr double kAxisWindowS = 30.0;
+
+/// Projects marker positions on their principal axis over the first kAxisWindowS, inhalation up.
+std::vector<TraceSample> project_marker(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::size_t n = 0;
+  for (; n < p.size() && t[n] - t.front() <= kAxisWindowS; ++n) mean += p[n];
+  mean /= static_cast<double>(n);
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) scatter += (p[i] - mean) * (p[i] - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  Eigen::Vector3d axis = eig.eigenvectors().col(2);
+  std::vector<TraceSample> out;
+  for (std::size_t i = 0; i < p.size(); ++i) out.push_back({t[i] - t.front(), axis.dot(p[i] - mean)});
+  // Inhalation is the shorter phase: the signal spends less time rising than falling. Count the time spent
+  // rising over the window (a 0.2 s difference, so that noise does not count).
+  double rising = 0, falling = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    std::size_t j = i;
+    while (j > 0 && out[i].t_s - out[j].t_s < 0.2) --j;
+    const double dt = out[i].t_s - out[i - 1].t_s;
+    (out[i].value > out[j].value ? rising : falling) += dt;
+  }
+  if (rising > falling)
+    for (TraceSample& s : out) s.value = -s.value;
+  return out;
+}
+
+}  // namespace
+
+Result<BreathTrace> read_breath_trace(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return fail(path + ": cannot open: expected a CSV trace (t_s,value or t_s,x_mm,y_mm,z_mm)");
+  std::string line;
+  int line_no = 0;
+  int columns = 0;
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> p;
+  BreathTrace out;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    const auto at = [&](const std::string& why) { return fail(path + ":" + std::to_string(line_no) + ": " + why); };
+    if (columns == 0) {
+      if (line == "t_s,value") columns = 2;
+      else if (line == "t_s,x_mm,y_mm,z_mm") columns = 4;
+      else return at("header: expected 't_s,value' or 't_s,x_mm,y_mm,z_mm', got '" + line + "'");
+      continue;
+    }
+    std::stringstream fields(line);
+    std::string cell;
+    double v[4];
+    int got = 0;
+    for (; got < 4 && std::getline(fields, cell, ','); ++got) {
+      char* end = nullptr;
+      v[got] = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || *end != '\0' || !std::isfinite(v[got])) return at("expected finite numbers, got '" + line + "'");
+    }
+    if (got != columns || std::getline(fields, cell, ','))
+      return at("expected " + std::to_string(columns) + " numbers, got '" + line + "'");
+    if (!t.empty() && v[0] <= t.back()) return at("t_s: expected times that increase, got '" + line + "'");
+    t.push_back(v[0]);
+    if (columns == 2) out.samples.push_back({v[0], v[1]});
+    else p.emplace_back(v[1], v[2], v[3]);
+  }
+  if (columns == 0) return fail(path + ": expected a header and samples, got none");
+  if (t.size() < 2) return fail(path + ": expected at least two samples, got " + std::to_string(t.size()));
+  if (columns == 4) {
+    out.marker = true;
+    out.samples = project_marker(t, p);
+  } else {
+    const double t0 = out.samples.front().t_s;
+    for (TraceSample& s : out.samples) s.t_s -= t0;
+  }
+  return out;
+}
+
+}  // namespace lungar::sim

@@ -1,0 +1,197 @@
+/// @file breath_follower_test.cpp
+/// @brief The breath follower on traces like real ones: drift, irregular breaths, noise, a 15 s loss, a marker
+///        moving along an oblique axis; and the trace files refused in one line naming the line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <random>
+
+#include <Eigen/Core>
+
+#include "sim/breathing/breath_follower.h"
+#include "sim/breathing/breath_trace.h"
+
+namespace lungar::sim {
+namespace {
+
+/// A surrogate like a chest marker's excursion (mm): breaths of varying depth (+-30 %) and period (3.5-5 s), I:E
+/// about 1:2, a baseline sinking 3 mm a minute, 0.1 mm of noise. `breath_peaks` gets each breath's peak time.
+struct Trace {
+  std::vector<TraceSample> samples;
+  std::vector<double> peaks, drift;
+};
+
+Trace make_trace(double seconds, double gap_from = -1, double gap_to = -1) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> depth(0.7, 1.3), period(3.5, 5.0);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  Trace out;
+  double start = 0, p = period(rng), a = 10.0 * depth(rng);
+  for (double t = 0; t < seconds; t += 0.025) {
+    while (t >= start + p) {
+      start += p;
+      p = period(rng);
+      a = 10.0 * depth(rng);
+    }
+    const double u = (t - start) / p, rise = 1.0 / 3.0;
+    const double shape = u < rise ? 0.5 - 0.5 * std::cos(M_PI * u / rise) : std::exp(-4.0 * (u - rise) / (1 - rise)) *
+                                                                                 (1 - (u - rise) / (1 - rise) * 0.018);
+    if (u < rise && u + 0.025 / p >= rise) out.peaks.push_back(start + rise * p);
+    const double drift = -3.0 * t / 60.0;
+    if (t >= gap_from && t < gap_to) continue;  // the signal lost
+    out.samples.push_back({t, drift + a * shape + noise(rng)});
+    out.drift.push_back(drift);
+  }
+  return out;
+}
+
+struct Followed {
+  std::vector<double> t, dv;
+  std::vector<BreathState> state;
+};
+
+Followed follow(const Trace& trace, double seconds) {
+  BreathFollower f;
+  Followed r;
+  std::size_t next = 0;
+  for (double t = 0; t <= seconds; t += 0.01) {
+    for (; next < trace.samples.size() && trace.samples[next].t_s <= t; ++next)
+      f.add(trace.samples[next].t_s, trace.samples[next].value);
+    const double model = 250.0 - 250.0 * std::cos(2 * M_PI * t / 5.0);
+    const FollowerOutput o = f.at(t, model);
+    r.t.push_back(t);
+    r.dv.push_back(o.dv_ml);
+    r.state.push_back(o.state);
+  }
+  return r;
+}
+
+TEST(BreathFollower, FollowsADriftingIrregularTraceBreathByBreath) {
+  const Trace trace = make_trace(120);
+  const Followed run = follow(trace, 120);
+  // Peaks: the highest dV within each breath's window falls within 0.3 s of the trace's own peak.
+  int near = 0, counted = 0;
+  for (double peak : trace.peaks) {
+    if (peak < 20 || peak > 115) continue;  // after calibration
+    double best_t = 0, best = -1e300;
+    for (std::size_t i = 0; i < run.t.size(); ++i)
+      if (std::abs(run.t[i] - peak) < 1.2 && run.dv[i] > best) best = run.dv[i], best_t = run.t[i];
+    ++counted;
+    near += std::abs(best_t - peak) <= 0.3;
+  }
+  ASSERT_GT(counted, 15);
+  EXPECT_GE(static_cast<double>(near) / counted, 0.8) << near << " of " << counted;
+  // Correlation with the trace less its drift, over the followed part.
+  std::vector<double> x, y;
+  std::size_t s = 0;
+  for (std::size_t i = 0; i < run.t.size(); ++i) {
+    if (run.t[i] < 20) continue;
+    while (s + 1 < trace.samples.size() && trace.samples[s + 1].t_s <= run.t[i]) ++s;
+    x.push_back(run.dv[i]);
+    y.push_back(trace.samples[s].value - trace.drift[s]);
+  }
+  const auto mean = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); };
+  const double mx = mean(x), my = mean(y);
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  EXPECT_GE(sxy / std::sqrt(sxx * syy), 0.9);
+  // The median breath swings V_T +- 15 %, and end-exhale comes back to within 15 % of V_T.
+  std::vector<double> swings, lows;
+  for (std::size_t b = 0; b + 1 < trace.peaks.size(); ++b) {
+    if (trace.peaks[b] < 20 || trace.peaks[b + 1] > 118) continue;
+    double hi = -1e300, lo = 1e300;
+    for (std::size_t i = 0; i < run.t.size(); ++i)
+      if (run.t[i] >= trace.peaks[b] - 0.3 && run.t[i] < trace.peaks[b + 1] - 0.3) {
+        hi = std::max(hi, run.dv[i]);
+        lo = std::min(lo, run.dv[i]);
+      }
+    swings.push_back(hi - lo);
+    lows.push_back(std::abs(lo));
+  }
+  std::nth_element(swings.begin(), swings.begin() + swings.size() / 2, swings.end());
+  EXPECT_NEAR(swings[swings.size() / 2], 500.0, 75.0);
+  std::nth_element(lows.begin(), lows.begin() + lows.size() / 2, lows.end());
+  EXPECT_LE(lows[lows.size() / 2], 75.0);
+}
+
+TEST(BreathFollower, ALostSignalHandsOverWithoutAJumpAndIsPickedUpAgain) {
+  const Trace trace = make_trace(90, 40, 55);  // 15 s without samples
+  const Followed run = follow(trace, 90);
+  double biggest_before = 0;  // the signal's own steps while followed, away from the loss
+  for (std::size_t i = 1; i < run.t.size(); ++i) {
+    const double step = std::abs(run.dv[i] - run.dv[i - 1]);
+    if ((run.t[i] > 20 && run.t[i] < 40) || run.t[i] > 70) biggest_before = std::max(biggest_before, step);
+    if (run.t[i] > 40.5 && run.t[i] < 55) {
+      EXPECT_LE(step, 5.0 + 1e-9) << "while lost, at " << run.t[i];
+    }
+  }
+  // At the return each step is what the signal itself moved (its last sample at or before each step, at the
+  // scale of a median breath, 50 mL/mm, give or take the breaths' spread) plus at most the 5 mL handover.
+  const auto sample_at = [&](double t) {
+    double v = 0;
+    for (const TraceSample& x : trace.samples) {
+      if (x.t_s > t) break;
+      v = x.value;
+    }
+    return v;
+  };
+  for (std::size_t i = 1; i < run.t.size(); ++i) {
+    if (run.t[i] >= 55 && run.t[i] < 70) {
+      const double own = 1.4 * 50.0 * std::abs(sample_at(run.t[i]) - sample_at(run.t[i - 1]));
+      EXPECT_LE(std::abs(run.dv[i] - run.dv[i - 1]), own + 5.0 + 1e-9) << "at the return, " << run.t[i];
+    }
+  }
+  EXPECT_GT(biggest_before, 5.0) << "the signal's own steps are bigger than the handover's";
+  const auto state_at = [&](double t) { return run.state[static_cast<std::size_t>(std::lround(t / 0.01))]; };
+  EXPECT_EQ(state_at(39), BreathState::following);
+  EXPECT_NE(state_at(41), BreathState::following);
+  EXPECT_EQ(state_at(50), BreathState::model);
+  EXPECT_EQ(state_at(67), BreathState::following) << "within 12 s of the return";
+}
+
+TEST(BreathTrace, AMarkerIsReadAlongItsBreathingAxisInhaleUp) {
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_trace_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "marker.csv").string();
+  const Trace trace = make_trace(60);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.2, -0.9, 0.4).normalized();  // out of the chest, and up a little
+  {
+    std::ofstream o(path);
+    o << "t_s,x_mm,y_mm,z_mm\n";
+    for (const TraceSample& s : trace.samples) {
+      const Eigen::Vector3d p = Eigen::Vector3d(10, -150, 900) + s.value * axis;
+      o << s.t_s + 100.0 << "," << p.x() << "," << p.y() << "," << p.z() << "\n";
+    }
+  }
+  auto read = read_breath_trace(path);
+  ASSERT_TRUE(read) << read.error();
+  EXPECT_TRUE(read->marker);
+  EXPECT_DOUBLE_EQ(read->samples.front().t_s, 0.0);
+  // Inhale up: the projection rises with the trace (up to its mean).
+  double c = 0;
+  for (std::size_t i = 1; i < read->samples.size(); ++i)
+    c += (read->samples[i].value - read->samples[i - 1].value) * (trace.samples[i].value - trace.samples[i - 1].value);
+  EXPECT_GT(c, 0.0);
+  const std::pair<const char*, const char*> bad[] = {{"time,value\n0,1\n", ":1: header"},
+                                                     {"t_s,value\n0,1\n0.1,x\n", ":3: expected finite numbers"},
+                                                     {"t_s,value\n0,1\n0,2\n", ":3: t_s: expected times that increase"},
+                                                     {"t_s,value\n0,1,2\n", ":2: expected 2 numbers"}};
+  for (const auto& [text, why] : bad) {
+    std::ofstream(path) << text;
+    auto r = read_breath_trace(path);
+    ASSERT_FALSE(r) << text;
+    EXPECT_NE(r.error().find(path + why), std::string::npos) << r.error();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace lungar::sim

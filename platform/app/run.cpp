@@ -15,6 +15,7 @@
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
+#include "platform/app/followed_breathing.h"
 #include "platform/app/script_breathing.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/tracker_poses.h"
@@ -67,7 +68,19 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
-  parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
+  if (o.breath_path.empty()) {
+    parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
+  } else {
+    if (s.sync.role != sync::SyncRole::Off) {
+      return fail("--breath: a classroom shares the model's breathing only, not yet a followed trace (a trainee "
+                  "breathes with its instructor); run the station without --breath or without --sync");
+    }
+    auto trace = sim::read_breath_trace(o.breath_path);
+    if (!trace) return trace.with_context("--breath: ");
+    log_line("breathing: following " + o.breath_path + " (" + std::to_string(trace->samples.size()) + " samples" +
+             (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
+    parts.breathing = std::make_unique<FollowedBreathing>(trace.take(), o.breath_path, shared_script, t0);
+  }
   auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, t0,
                                      parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");

@@ -3,6 +3,7 @@
 #include "sim/breathing/breath_follower.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace lungar::sim {
@@ -28,7 +29,7 @@ void BreathFollower::add(double t_s, double value) {
   if (t_s - last_t_ > p_.lost_after_s) breaths_at_return_ = breaths_;  // back after a loss: calibrate again
   lo_ = std::min(lo_, value);
   hi_ = std::max(hi_, value);
-  const double h = kHysteresis * (amplitudes_.empty() ? hi_ - lo_ : amplitude());
+  const double h = kHysteresis * (amplitudes_.count == 0 ? hi_ - lo_ : amplitude());
   if (rising_) {
     if (value > extreme_.value) {
       extreme_ = {t_s, value};
@@ -52,29 +53,37 @@ void BreathFollower::add(double t_s, double value) {
 
 void BreathFollower::turn_found(bool trough, const Turn& t) {
   if (trough) {
-    troughs_.push_back(t);
-    if (troughs_.size() > 2) troughs_.erase(troughs_.begin());
+    if (trough_count_ == 2) troughs_[0] = troughs_[1];
+    troughs_[trough_count_ == 2 ? 1 : trough_count_++] = t;
     return;
   }
-  if (troughs_.empty()) return;  // a peak before any trough: no breath to measure yet
-  const double a = t.value - troughs_.back().value;
+  if (trough_count_ == 0) return;  // a peak before any trough: no breath to measure yet
+  const double a = t.value - troughs_[trough_count_ - 1].value;
   if (!(a > 0)) return;
-  amplitudes_.push_back(a);
-  if (static_cast<int>(amplitudes_.size()) > p_.median_of) amplitudes_.pop_front();
+  amplitudes_.push(a);
+  peak_times_.push(t.t_s);
   ++breaths_;
 }
 
 double BreathFollower::amplitude() const {
-  std::vector<double> a(amplitudes_.begin(), amplitudes_.end());
-  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(a.size() / 2), a.end());
-  return a[a.size() / 2];
+  std::array<double, kMaxMedianOf> a = amplitudes_.v;
+  const std::size_t n = amplitudes_.count;
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n / 2), a.begin() + static_cast<std::ptrdiff_t>(n));
+  return a[n / 2];
+}
+
+double BreathFollower::rate_per_min() const {
+  const std::size_t n = peak_times_.count;
+  if (n < 2) return 0;
+  const double span = peak_times_.v[n - 1] - peak_times_.v[0];
+  return span > 0 ? 60.0 * static_cast<double>(n - 1) / span : 0.0;
 }
 
 double BreathFollower::baseline(double t_s) const {
-  if (troughs_.empty()) return lo_;
-  const Turn& b = troughs_.back();
-  if (troughs_.size() < 2) return b.value;
-  const Turn& a = troughs_.front();
+  if (trough_count_ == 0) return lo_;
+  const Turn& b = troughs_[trough_count_ - 1];
+  if (trough_count_ < 2) return b.value;
+  const Turn& a = troughs_[0];
   const double span = b.t_s - a.t_s;
   if (!(span > 0)) return b.value;
   // The drift between the last two end-exhales, carried forward for at most one more breath.
@@ -84,7 +93,7 @@ double BreathFollower::baseline(double t_s) const {
 
 FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   const bool lost = !any_ || t_s - last_t_ > p_.lost_after_s;
-  const bool calibrated = breaths_ >= p_.calibration_breaths && !amplitudes_.empty() &&
+  const bool calibrated = breaths_ >= p_.calibration_breaths && amplitudes_.count > 0 &&
                           (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 2);
   double target = model_dv_ml, k = 0;
   const bool was_following = state_ == BreathState::following;

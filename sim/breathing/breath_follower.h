@@ -14,8 +14,9 @@
 ///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
 #pragma once
 
-#include <deque>
-#include <vector>
+#include <algorithm>
+#include <array>
+#include <cstddef>
 
 #include "config/base/enum_names.h"
 
@@ -28,13 +29,15 @@ inline constexpr EnumNames<BreathState, 3> kBreathStateNames{{{{BreathState::mod
 
 /// How fast dV may move when the source changes (lost, returned): 5 mL per 10 ms step.
 inline constexpr double kHandoverMlPerS = 500.0;
+/// The most breaths the amplitude's median and the rate are taken over.
+inline constexpr int kMaxMedianOf = 9;
 
 struct FollowerParams {
   double tidal_volume_ml = 500.0;  ///< V_T: what the median breath of the surrogate maps to
   double lost_after_s = 0.5;       ///< no sample for this long: the signal is lost
   double holding_s = 2.0;          ///< then `holding` this long before `model`
   int calibration_breaths = 2;     ///< breaths found before following
-  int median_of = 5;               ///< breaths in the amplitude's median
+  int median_of = 5;               ///< breaths in the amplitude's median (at most kMaxMedianOf)
 };
 
 struct FollowerOutput {
@@ -45,7 +48,9 @@ struct FollowerOutput {
 
 class BreathFollower {
  public:
-  explicit BreathFollower(FollowerParams p = {}) : p_(p) {}
+  explicit BreathFollower(FollowerParams p = {}) : p_(p) {
+    amplitudes_.capacity = static_cast<std::size_t>(std::clamp(p_.median_of, 1, kMaxMedianOf));
+  }
 
   /// One surrogate sample (inhale up); times must not decrease. A non-finite value is dropped and counted.
   void add(double t_s, double value);
@@ -53,11 +58,27 @@ class BreathFollower {
   FollowerOutput at(double t_s, double model_dv_ml);
 
   int breaths() const { return breaths_; }
+  /// Breaths a minute over the last peaks found (0 before two).
+  double rate_per_min() const;
+  /// The time of the last sample (s), for the sample's age.
+  double last_sample_s() const { return last_t_; }
   int dropped() const { return dropped_; }
 
  private:
   struct Turn {
     double t_s, value;
+  };
+  /// The last `capacity` values, oldest first; fixed storage, so that following a breath allocates nothing.
+  struct Recent {
+    std::array<double, kMaxMedianOf> v{};
+    std::size_t count = 0, capacity = kMaxMedianOf;
+    void push(double x) {
+      if (count == capacity) {
+        std::copy(v.begin() + 1, v.begin() + static_cast<std::ptrdiff_t>(count), v.begin());
+        --count;
+      }
+      v[count++] = x;
+    }
   };
   void turn_found(bool trough, const Turn& t);
   double amplitude() const;
@@ -68,8 +89,10 @@ class BreathFollower {
   double last_t_ = 0, last_value_ = 0;
   Turn extreme_{0, 0};            ///< the candidate turn: the highest point while rising, lowest while falling
   double lo_ = 0, hi_ = 0;        ///< the range seen before the first amplitude
-  std::vector<Turn> troughs_;     ///< the last two
-  std::deque<double> amplitudes_; ///< peak minus the trough before it, the last median_of
+  std::array<Turn, 2> troughs_{};  ///< the last two, oldest first
+  std::size_t trough_count_ = 0;
+  Recent amplitudes_;              ///< peak minus the trough before it, the last median_of
+  Recent peak_times_;              ///< the last kMaxMedianOf peaks' times
   int breaths_ = 0, dropped_ = 0;
   int breaths_at_return_ = -1;    ///< breaths when the signal came back after a loss (-1: not lost)
   BreathState state_ = BreathState::model;

@@ -2,6 +2,7 @@
 // path, checking the stats JSON and the snapshot that a user gets, and clean errors for bad inputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -149,6 +150,31 @@ TEST_F(RuntimeRun, ARightPneumothoraxLeavesTheRightLungUnderATenthOfEachBreath) 
   EXPECT_LE(right, 0.10 * total) << "the collapsed lung";
   settings.sim.pathologies = {"pneumothorax:middle:30"};
   EXPECT_NE(platform::run_runtime(settings, options), 0) << "a bad spec stops the run before it starts";
+}
+
+// --breath: the lungs breathe with a recorded trace (30 breaths a minute here, where the model breathes 12), then
+// hand over towards the model when the trace ends; a bad trace stops the run before it starts.
+TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
+  std::filesystem::create_directories(dir);
+  const std::string trace = (dir / "trace.csv").string();
+  {
+    std::ofstream o(trace);
+    o << "t_s,value\n";
+    for (int i = 0; i < 7 * 40; ++i) o << i / 40.0 << "," << 6.0 * std::pow(std::sin(M_PI * i / 40.0 / 2.0), 2) << "\n";
+  }
+  options.breath_path = trace;
+  options.frames.reset();
+  options.seconds = 8.0;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_EQ(j["breath_source"], "trace");
+  EXPECT_NEAR(j["breath_rate_per_min"].get<double>(), 30.0, 1.5);
+  EXPECT_GT(j["breath_following_s"].get<double>(), 2.0);
+  EXPECT_NE(j["breath_state"], "following") << "the trace ended at 7 s";
+  EXPECT_NEAR(j["volume_ml_max"].get<double>(), 500.0, 30.0);
+  std::ofstream(trace) << "t_s,value\n0,1\n0,2\n";
+  options.seconds = 1.0;
+  EXPECT_NE(platform::run_runtime(settings, options), 0);
 }
 
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {

@@ -1,0 +1,46 @@
+/// @file followed_breathing.cpp
+/// @brief The follower behind the BreathingClock interface (followed_breathing.h).
+#include "platform/app/followed_breathing.h"
+
+#include <nlohmann/json.hpp>
+
+#include "config/base/clock.h"
+
+namespace lungar::platform {
+
+FollowedBreathing::FollowedBreathing(sim::BreathTrace trace, std::string path,
+                                     std::shared_ptr<const sim::BreathingScript> model, std::int64_t t0_ns)
+    : trace_(std::move(trace)), path_(std::move(path)), model_(std::move(model)), t0_ns_(t0_ns) {
+  sim::FollowerParams p;
+  p.tidal_volume_ml = model_->start.tidal_volume_ml;
+  follower_ = sim::BreathFollower(p);
+}
+
+sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
+  const double t = seconds_between(t0_ns_, now_ns);
+  for (; next_ < trace_.samples.size() && trace_.samples[next_].t_s <= t; ++next_)
+    follower_.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
+  sim::BreathingSample s = model_->driver.at(t);
+  const sim::FollowerOutput o = follower_.at(t, s.dv_ml);
+  if (o.state == sim::BreathState::following) {
+    lag_sum_s_ += t - follower_.last_sample_s();
+    ++lag_n_;
+    following_s_ += std::max(0.0, t - last_t_);
+  }
+  last_t_ = t;
+  state_ = o.state;
+  s.dv_ml = o.dv_ml;
+  s.v_ml = s.v_frc_ml + o.dv_ml;
+  return s;
+}
+
+void FollowedBreathing::add_stats(nlohmann::json& stats) const {
+  stats["breath_source"] = "trace";
+  stats["breath_file"] = path_;
+  stats["breath_state"] = sim::kBreathStateNames.name(state_);
+  stats["breath_rate_per_min"] = follower_.rate_per_min();
+  stats["breath_lag_ms"] = lag_n_ > 0 ? 1000.0 * lag_sum_s_ / static_cast<double>(lag_n_) : 0.0;
+  stats["breath_following_s"] = following_s_;
+}
+
+}  // namespace lungar::platform

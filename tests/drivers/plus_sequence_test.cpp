@@ -31,7 +31,7 @@ std::string sequence_text() {
        "DimSize = 1 1 5\nElementSpacing = 1 1 1\nOffset = 0 0 0\nTransformMatrix = 1 0 0 0 1 0 0 0 1\n"
        "ElementType = MET_UCHAR\nKw:Size = 1 1\nUltrasoundImageOrientation = MF\n";
   for (int f = 0; f < 5; ++f) {
-    char n[8];
+    char n[16];
     std::snprintf(n, sizeof n, "%04d", f);
     o << "Seq_Frame" << n << "_FrameNumber = " << f << "\n";
     o << "Seq_Frame" << n << "_ReferenceToTrackerTransform = " << matrix_text(0.1, 100, 200, 300) << "\n";

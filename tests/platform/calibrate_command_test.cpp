@@ -238,7 +238,7 @@ TEST(CalibrateFromLog, APlusSequenceGivesTheKnownRegistration) {
         Eigen::Isometry3d stylus = Eigen::Isometry3d::Identity();
         stylus.linear() = r;
         stylus.translation() = target - r * tip;
-        char n[8];
+        char n[16];
         std::snprintf(n, sizeof n, "%04d", frame);
         o << "Seq_Frame" << n << "_ReferenceToTrackerTransform = ";
         matrix(reference.matrix());

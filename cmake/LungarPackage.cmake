@@ -22,6 +22,7 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)                 # lungar_VERSION_ARCH.deb
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)                  # Depends: from dpkg-shlibdeps
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "openssl")             # and the command lungar classroom-keys runs
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/scripts/debian/postinst)
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)  # postinst 0755, whatever the checkout's mode
 set(CPACK_STRIP_FILES ON)

@@ -11,6 +11,7 @@
 #include "lungar/version.h"
 #include "platform/app/calibrate_command.h"
 #include "platform/app/calibrate_display_command.h"
+#include "platform/app/classroom_keys.h"
 #include "platform/app/doctor/doctor.h"
 #include "platform/app/run.h"
 #include "platform/app/settings_load.h"
@@ -70,6 +71,19 @@ int main(int argc, char** argv) {
   calibrate_display->add_option("--out", d.out_path, "where to write [hmd.display_calibration] (TOML)")->required();
   calibrate_display->add_option("--report-json", d.report_json, "each eye's reprojection error, centre, intrinsics");
 
+  lungar::platform::ClassroomKeysOptions k;
+  CLI::App* keys = app.add_subcommand(
+      "classroom-keys", "make a secure classroom's authority, each station's identity and the signed DDS Security "
+                        "governance and permissions (with Debian's openssl)");
+  keys->add_option("--classroom", k.classroom, "the classroom's name (its DDS partition)")->required();
+  keys->add_option("--station", k.stations, "a station's name, repeatable: one folder each")
+      ->required()
+      ->allow_extra_args(false);
+  keys->add_option("--instructor", k.instructor, "the station that teaches (default: the first --station)");
+  keys->add_option("--out", k.out_dir, "a new or empty folder for the keys")->required();
+  keys->add_option("--ca", k.ca_dir, "reuse the authority in this folder (ca_cert.pem, ca_key.pem)");
+  keys->add_option("--days", k.days, "validity of the certificates and permissions, days")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -77,6 +91,15 @@ int main(int argc, char** argv) {
   }
   if (*pivot) return lungar::platform::run_pivot(pivot_options);
   if (*calibrate_display) return lungar::platform::run_calibrate_display(d);
+  if (*keys) {
+    auto made = lungar::platform::make_classroom_keys(k);
+    if (!made) {
+      std::fprintf(stderr, "lungar classroom-keys: %s\n", made.error().c_str());
+      return 2;
+    }
+    for (const std::string& line : *made) std::printf("%s\n", line.c_str());
+    return 0;
+  }
   if (tip.size() == 3) c.stylus_tip_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
   if (*calibrate) return lungar::platform::run_calibrate(c);
   if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);

@@ -2,7 +2,9 @@
 /// @brief The `lungar` entry point: the runtime (no arguments: the demo), `lungar calibrate` and `lungar doctor`.
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +22,91 @@ namespace {
 
 void on_signal(int) { lungar::platform::g_stop_requested.store(true); }
 
+/// The subcommands beside the runtime: their options, and which one the command line chose.
+struct Commands {
+  CLI::App* doctor = nullptr;
+  lungar::platform::CalibrateOptions calibrate;
+  std::vector<double> stylus_tip;  ///< --stylus-tip-mm, three numbers when given
+  CLI::App* calibrate_app = nullptr;
+  lungar::platform::PivotOptions pivot;
+  CLI::App* pivot_app = nullptr;
+  lungar::platform::CalibrateDisplayOptions display;
+  CLI::App* display_app = nullptr;
+  lungar::platform::ClassroomKeysOptions keys;
+  CLI::App* keys_app = nullptr;
+};
+
+/// `lungar calibrate` and `lungar calibrate pivot`.
+void add_calibrate(CLI::App& app, Commands& m) {
+  lungar::platform::CalibrateOptions& c = m.calibrate;
+  CLI::App* calibrate = m.calibrate_app = app.add_subcommand(
+      "calibrate", "register the lung model onto the patient simulator from paired fiducials (Umeyama)");
+  calibrate->add_option("--model", c.model_csv, "model fiducials, CSV of x, y, z in mm (lung frame); required");
+  calibrate->add_option("--stylus", c.stylus_csv, "touched fiducials, CSV of x, y, z in mm (patient-tracker frame)");
+  calibrate->add_option("--stylus-log", c.stylus_log,
+                        "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
+  calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
+  calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML); required");
+  calibrate
+      ->add_option("--stylus-tip-mm", m.stylus_tip,
+                   "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(-1000.0, 1000.0));
+  CLI::App* pivot = m.pivot_app = calibrate->add_subcommand(
+      "pivot", "find the stylus tip from a log of the stylus pivoting about it in a dimple (least squares)");
+  pivot->add_option("--stylus-log", m.pivot.stylus_log, "tracker log (.trk) of the stylus pivoting")->required();
+  pivot->add_option("--config", m.pivot.config_path, "settings TOML with the tracker report layout of the log");
+  pivot->add_option("--out", m.pivot.out_path, "where to write [trackers.stylus] tip_offset_mm (TOML)")->required();
+}
+
+/// `lungar calibrate-display` and `lungar classroom-keys`.
+void add_display_and_keys(CLI::App& app, Commands& m) {
+  CLI::App* display = m.display_app = app.add_subcommand(
+      "calibrate-display", "each eye's projection of an optical see-through HMD from SPAAM alignments (DLT)");
+  display
+      ->add_option("--alignments", m.display.alignments_csv,
+                   "CSV eye,x_mm,y_mm,z_mm,u_px,v_px: a tracked point in the head sensor's frame and the eye's pixel "
+                   "(origin top-left) lined up with it; at least 6 per eye, 20-25 advised, 0.3-0.9 m deep")
+      ->required();
+  display->add_option("--out", m.display.out_path, "where to write [hmd.display_calibration] (TOML)")->required();
+  display->add_option("--report-json", m.display.report_json, "each eye's reprojection error, centre, intrinsics");
+
+  lungar::platform::ClassroomKeysOptions& k = m.keys;
+  CLI::App* keys = m.keys_app = app.add_subcommand(
+      "classroom-keys", "make a secure classroom's authority, each station's identity and the signed DDS Security "
+                        "governance and permissions (with Debian's openssl)");
+  keys->add_option("--classroom", k.classroom, "the classroom's name (its DDS partition)")->required();
+  keys->add_option("--station", k.stations, "a station's name, repeatable: one folder each")
+      ->required()
+      ->allow_extra_args(false);
+  keys->add_option("--instructor", k.instructor, "the station that teaches (default: the first --station)");
+  keys->add_option("--out", k.out_dir, "a new or empty folder for the keys")->required();
+  keys->add_option("--ca", k.ca_dir, "reuse the authority in this folder (ca_cert.pem, ca_key.pem)");
+  keys->add_option("--days", k.days, "validity of the certificates and permissions, days")->capture_default_str();
+}
+
+/// The chosen subcommand's exit code; none when the command line runs the runtime.
+std::optional<int> run_command(Commands& m, const std::string& config_path) {
+  if (*m.pivot_app) return lungar::platform::run_pivot(m.pivot);
+  if (*m.display_app) return lungar::platform::run_calibrate_display(m.display);
+  if (*m.keys_app) {
+    auto made = lungar::platform::make_classroom_keys(m.keys);
+    if (!made) {
+      std::fprintf(stderr, "lungar classroom-keys: %s\n", made.error().c_str());
+      return 2;
+    }
+    for (const std::string& line : *made) std::printf("%s\n", line.c_str());
+    return 0;
+  }
+  if (m.stylus_tip.size() == 3) {
+    m.calibrate.stylus_tip_mm = Eigen::Vector3d(m.stylus_tip[0], m.stylus_tip[1], m.stylus_tip[2]);
+  }
+  if (*m.calibrate_app) return lungar::platform::run_calibrate(m.calibrate);
+  if (*m.doctor) return lungar::platform::doctor::run_doctor(config_path);
+  return std::nullopt;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -33,76 +120,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("lungar ") + LUNGAR_VERSION);
   RuntimeOptions o;
   lungar::platform::add_runtime_options(app, o);
-  CLI::App* doctor =
+  Commands commands;
+  commands.doctor =
       app.add_subcommand("doctor", "check this machine's set-up, one line each with the fix")->fallthrough();
-
-  lungar::platform::CalibrateOptions c;
-  CLI::App* calibrate = app.add_subcommand(
-      "calibrate", "register the lung model onto the patient simulator from paired fiducials (Umeyama)");
-  calibrate->add_option("--model", c.model_csv, "model fiducials, CSV of x, y, z in mm (lung frame); required");
-  calibrate->add_option("--stylus", c.stylus_csv, "touched fiducials, CSV of x, y, z in mm (patient-tracker frame)");
-  calibrate->add_option("--stylus-log", c.stylus_log,
-                        "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
-  calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
-  calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML); required");
-  std::vector<double> tip;
-  calibrate
-      ->add_option("--stylus-tip-mm", tip,
-                   "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)")
-      ->delimiter(',')
-      ->expected(3)
-      ->check(CLI::Range(-1000.0, 1000.0));
-  lungar::platform::PivotOptions pivot_options;
-  CLI::App* pivot = calibrate->add_subcommand(
-      "pivot", "find the stylus tip from a log of the stylus pivoting about it in a dimple (least squares)");
-  pivot->add_option("--stylus-log", pivot_options.stylus_log, "tracker log (.trk) of the stylus pivoting")->required();
-  pivot->add_option("--config", pivot_options.config_path, "settings TOML with the tracker report layout of the log");
-  pivot->add_option("--out", pivot_options.out_path, "where to write [trackers.stylus] tip_offset_mm (TOML)")
-      ->required();
-
-  lungar::platform::CalibrateDisplayOptions d;
-  CLI::App* calibrate_display = app.add_subcommand(
-      "calibrate-display", "each eye's projection of an optical see-through HMD from SPAAM alignments (DLT)");
-  calibrate_display
-      ->add_option("--alignments", d.alignments_csv,
-                   "CSV eye,x_mm,y_mm,z_mm,u_px,v_px: a tracked point in the head sensor's frame and the eye's pixel "
-                   "(origin top-left) lined up with it; at least 6 per eye, 20-25 advised, 0.3-0.9 m deep")
-      ->required();
-  calibrate_display->add_option("--out", d.out_path, "where to write [hmd.display_calibration] (TOML)")->required();
-  calibrate_display->add_option("--report-json", d.report_json, "each eye's reprojection error, centre, intrinsics");
-
-  lungar::platform::ClassroomKeysOptions k;
-  CLI::App* keys = app.add_subcommand(
-      "classroom-keys", "make a secure classroom's authority, each station's identity and the signed DDS Security "
-                        "governance and permissions (with Debian's openssl)");
-  keys->add_option("--classroom", k.classroom, "the classroom's name (its DDS partition)")->required();
-  keys->add_option("--station", k.stations, "a station's name, repeatable: one folder each")
-      ->required()
-      ->allow_extra_args(false);
-  keys->add_option("--instructor", k.instructor, "the station that teaches (default: the first --station)");
-  keys->add_option("--out", k.out_dir, "a new or empty folder for the keys")->required();
-  keys->add_option("--ca", k.ca_dir, "reuse the authority in this folder (ca_cert.pem, ca_key.pem)");
-  keys->add_option("--days", k.days, "validity of the certificates and permissions, days")->capture_default_str();
-
+  add_calibrate(app, commands);
+  add_display_and_keys(app, commands);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  if (*pivot) return lungar::platform::run_pivot(pivot_options);
-  if (*calibrate_display) return lungar::platform::run_calibrate_display(d);
-  if (*keys) {
-    auto made = lungar::platform::make_classroom_keys(k);
-    if (!made) {
-      std::fprintf(stderr, "lungar classroom-keys: %s\n", made.error().c_str());
-      return 2;
-    }
-    for (const std::string& line : *made) std::printf("%s\n", line.c_str());
-    return 0;
-  }
-  if (tip.size() == 3) c.stylus_tip_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
-  if (*calibrate) return lungar::platform::run_calibrate(c);
-  if (*doctor) return lungar::platform::doctor::run_doctor(o.config_path);
+  if (const std::optional<int> rc = run_command(commands, o.config_path)) return *rc;
 
   const auto dirs = lungar::config::XdgDirs::from_environment();
   const auto chosen = lungar::config::choose_config(o.config_path, dirs);

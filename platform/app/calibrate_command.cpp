@@ -3,6 +3,7 @@
 #include "platform/app/calibrate_command.h"
 
 #include <cstdio>
+#include <optional>
 
 #include "platform/app/settings_load.h"
 #include "drivers/decode/decoder.h"
@@ -17,16 +18,26 @@ namespace lungar::platform {
 
 namespace {
 
+/// The --config's trackers, read once (none without --config): its report layout and the stylus's tip.
+Result<std::optional<drivers::TrackerConfig>> config_trackers(const std::string& config_path) {
+  if (config_path.empty()) return std::optional<drivers::TrackerConfig>{};
+  auto s = load_settings(config_path);
+  if (!s) return s.with_context("");
+  return std::optional<drivers::TrackerConfig>(s->trackers);
+}
+
+Eigen::Vector3d tip_of(const drivers::TrackerConfig& t) {
+  const auto& tip = t.stylus.tip_offset_mm;
+  return Eigen::Vector3d(tip[0], tip[1], tip[2]);
+}
+
 /// The report layout a log was recorded with: its header's, else the config's, else the defaults.
 Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std::string& log_path,
-                                           const std::string& config_path) {
+                                           const std::optional<drivers::TrackerConfig>& config) {
   if (!log.header.layout_toml.empty()) {
     return drivers::tracker_config_from_toml(log.header.layout_toml, log_path + " (header layout)");
   }
-  if (config_path.empty()) return drivers::TrackerConfig{};
-  auto s = load_settings(config_path);
-  if (!s) return s.with_context("");
-  return s->trackers;
+  return config ? *config : drivers::TrackerConfig{};
 }
 
 }  // namespace
@@ -36,13 +47,10 @@ Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std:
 Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::string& config_path) {
   auto seq = drivers::read_plus_sequence(path);
   if (!seq) return seq.with_context("");
+  auto config = config_trackers(config_path);
+  if (!config) return config.with_context("");
   StylusLog out;
-  if (!config_path.empty()) {
-    auto s = load_settings(config_path);
-    if (!s) return s.with_context("");
-    const auto& tip = s->trackers.stylus.tip_offset_mm;
-    out.tip_offset_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
-  }
+  if (*config) out.tip_offset_mm = tip_of(**config);
   const double t0 = seq->frames.empty() ? 0.0 : seq->frames.front().timestamp_s;
   for (const drivers::PlusFrame& f : seq->frames) {
     const drivers::PlusTransform* stylus = f.find("Stylus");
@@ -68,19 +76,15 @@ Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::
   if (drivers::is_plus_sequence_path(log_path)) return stylus_poses_from_plus(log_path, config_path);
   auto loaded = drivers::load_trk(log_path);
   if (!loaded) return loaded.with_context("");
-  auto trackers = log_layout(*loaded, log_path, config_path);
+  auto config = config_trackers(config_path);
+  if (!config) return config.with_context("");
+  auto trackers = log_layout(*loaded, log_path, *config);
   if (!trackers) return trackers.with_context("");
   auto layout = drivers::make_layout(*trackers);
   if (!layout) return layout.with_context(log_path + ": report layout: ");
   StylusLog out;
   // The tip is the stylus's, not the log's: a --config (where `calibrate pivot` wrote it) wins over the header.
-  std::array<double, 3> tip = trackers->stylus.tip_offset_mm;
-  if (!config_path.empty()) {
-    auto s = load_settings(config_path);
-    if (!s) return s.with_context("");
-    tip = s->trackers.stylus.tip_offset_mm;
-  }
-  out.tip_offset_mm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
+  out.tip_offset_mm = tip_of(*config ? **config : *trackers);
   Eigen::Quaterniond patient_q = Eigen::Quaterniond::Identity();
   Eigen::Vector3d patient_p = Eigen::Vector3d::Zero();
   const std::int64_t t0 = loaded->records.empty() ? 0 : loaded->records.front().t_arrival_ns;

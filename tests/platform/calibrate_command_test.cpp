@@ -16,11 +16,56 @@
 
 using namespace lungar;
 
+namespace {
+
+/// A .trk log of poses as the layout of `t` encodes them into raw reports, one report period (16 ms) a step.
+class PoseLogWriter {
+ public:
+  void open(const drivers::TrackerConfig& t, const std::string& path) {
+    auto layout = drivers::make_layout(t);
+    ASSERT_TRUE(layout) << layout.error();
+    layout_ = *layout;
+    report_.assign(static_cast<std::size_t>(t.report.length), 0);
+    drivers::TrkHeader header;
+    header.description = "source=test";
+    header.layout_toml = drivers::tracker_config_to_toml(t);
+    ASSERT_EQ(writer_.open(path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
+  }
+  /// One report of `role` at the current step.
+  void emit(drivers::Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
+    drivers::PoseSample pose;
+    pose.role = role;
+    pose.set_position(p);
+    pose.set_orientation(q);
+    std::fill(report_.begin(), report_.end(), 0);
+    ASSERT_TRUE(drivers::encode_report(layout_, std::span(&pose, 1), ticks_, report_));
+    ASSERT_TRUE(writer_.append(drivers::TrkSource::Hid, t_ns_, report_));
+  }
+  void step() {
+    t_ns_ += 16'000'000;
+    ticks_ += 16000;
+  }
+  void commit() { ASSERT_EQ(writer_.commit().error(), ""); }
+
+ private:
+  drivers::ReportLayout layout_;
+  drivers::TrkWriter writer_;
+  std::vector<std::uint8_t> report_;
+  std::int64_t t_ns_ = 1'000'000'000;
+  std::uint32_t ticks_ = 0;
+};
+
+/// The model's fiducials as `lungar calibrate --model` reads them.
+void write_model_csv(const std::filesystem::path& path, const std::vector<Eigen::Vector3d>& model) {
+  std::ofstream o(path);
+  for (const auto& m : model) o << m.x() << ", " << m.y() << ", " << m.z() << "\n";
+}
+
+}  // namespace
+
 TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   drivers::TrackerConfig t;
   t.stylus.enabled = true;
-  auto layout = drivers::make_layout(t);
-  ASSERT_TRUE(layout) << layout.error();
 
   // The truth: model -> patient tracker, and the patient tracker's pose in the world.
   const Eigen::Quaterniond reg_q(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.2, 1.0, -0.3).normalized()));
@@ -33,38 +78,23 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   const auto dir = std::filesystem::temp_directory_path() / "lungar_calibrate_test";
   std::filesystem::create_directories(dir);
   const std::string log_path = (dir / "stylus.trk").string();
-  drivers::TrkWriter writer;
-  drivers::TrkHeader header;
-  header.description = "source=test";
-  header.layout_toml = drivers::tracker_config_to_toml(t);
-  ASSERT_EQ(writer.open(log_path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
+  PoseLogWriter log;
+  log.open(t, log_path);
 
   std::mt19937 rng(5);
   std::normal_distribution<double> tip_noise(0.0, 0.2);  // mm: a steady hand on a landmark
-  std::vector<std::uint8_t> report(static_cast<std::size_t>(t.report.length));
-  std::int64_t t_ns = 1'000'000'000;
-  std::uint32_t ticks = 0;
-  auto emit = [&](drivers::Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
-    drivers::PoseSample pose;
-    pose.role = role;
-    pose.set_position(p);
-    pose.set_orientation(q);
-    std::fill(report.begin(), report.end(), 0);
-    ASSERT_TRUE(drivers::encode_report(*layout, std::span(&pose, 1), ticks, report));
-    ASSERT_TRUE(writer.append(drivers::TrkSource::Hid, t_ns, report));
-  };
   for (const auto& m : model) {
     const Eigen::Vector3d world = patient_q * (reg_q * m + reg_t) + patient_p;
-    for (int k = 0; k < 50; ++k, t_ns += 16'000'000, ticks += 16000) {  // 0.8 s held on the landmark
-      emit(drivers::Role::Patient, patient_p, patient_q);
-      emit(drivers::Role::Stylus, world + Eigen::Vector3d(tip_noise(rng), tip_noise(rng), tip_noise(rng)),
-           Eigen::Quaterniond::Identity());
+    for (int k = 0; k < 50; ++k, log.step()) {  // 0.8 s held on the landmark
+      log.emit(drivers::Role::Patient, patient_p, patient_q);
+      log.emit(drivers::Role::Stylus, world + Eigen::Vector3d(tip_noise(rng), tip_noise(rng), tip_noise(rng)),
+               Eigen::Quaterniond::Identity());
     }
-    for (int k = 0; k < 10; ++k, t_ns += 16'000'000, ticks += 16000) {  // moving on: too short to count
-      emit(drivers::Role::Stylus, world + Eigen::Vector3d(0, 0, 30.0 * (k + 1)), Eigen::Quaterniond::Identity());
+    for (int k = 0; k < 10; ++k, log.step()) {  // moving on: too short to count
+      log.emit(drivers::Role::Stylus, world + Eigen::Vector3d(0, 0, 30.0 * (k + 1)), Eigen::Quaterniond::Identity());
     }
   }
-  ASSERT_EQ(writer.commit().error(), "");
+  log.commit();
 
   auto touched = platform::stylus_points_from_log(log_path, "");
   ASSERT_TRUE(touched) << touched.error();
@@ -79,10 +109,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
 
   // The whole command writes a section that names the error, and refuses a log without a stylus.
   const auto model_csv = dir / "model.csv";
-  {
-    std::ofstream o(model_csv);
-    for (const auto& m : model) o << m.x() << ", " << m.y() << ", " << m.z() << "\n";
-  }
+  write_model_csv(model_csv, model);
   platform::CalibrateOptions o;
   o.model_csv = model_csv.string();
   o.stylus_log = log_path;
@@ -102,8 +129,6 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
 TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
   drivers::TrackerConfig t;
   t.stylus.enabled = true;
-  auto layout = drivers::make_layout(t);
-  ASSERT_TRUE(layout) << layout.error();
   const Eigen::Vector3d tip(2.0, -1.5, -150.0);  // stylus frame: the tip down the handle
   const Eigen::Quaterniond patient_q(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
   const Eigen::Vector3d patient_p(-40.0, 300.0, 700.0);
@@ -115,34 +140,19 @@ TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
 
   // Writes a log of the stylus at the given tip positions (patient frame), each held with a random tilt.
   const auto record = [&](const std::string& path, const std::vector<Eigen::Vector3d>& tips_in_patient, int hold) {
-    drivers::TrkWriter writer;
-    drivers::TrkHeader header;
-    header.description = "source=test";
-    header.layout_toml = drivers::tracker_config_to_toml(t);
-    ASSERT_EQ(writer.open(path, header, drivers::TrkWriter::Mode::Atomic).error(), "");
-    std::vector<std::uint8_t> report(static_cast<std::size_t>(t.report.length));
-    std::int64_t t_ns = 1'000'000'000;
-    std::uint32_t ticks = 0;
-    const auto emit = [&](drivers::Role role, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
-      drivers::PoseSample pose;
-      pose.role = role;
-      pose.set_position(p);
-      pose.set_orientation(q);
-      std::fill(report.begin(), report.end(), 0);
-      ASSERT_TRUE(drivers::encode_report(*layout, std::span(&pose, 1), ticks, report));
-      ASSERT_TRUE(writer.append(drivers::TrkSource::Hid, t_ns, report));
-    };
+    PoseLogWriter log;
+    log.open(t, path);
     for (const Eigen::Vector3d& target : tips_in_patient) {
-      for (int k = 0; k < hold; ++k, t_ns += 16'000'000, ticks += 16000) {
+      for (int k = 0; k < hold; ++k, log.step()) {
         const Eigen::Quaterniond q_rel(Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()) *
                                        Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitY()));
         const Eigen::Vector3d sensor_rel = target - q_rel * tip;  // the tip stays on the target
         const Eigen::Vector3d jitter(noise(rng), noise(rng), noise(rng));
-        emit(drivers::Role::Patient, patient_p, patient_q);
-        emit(drivers::Role::Stylus, patient_q * (sensor_rel + jitter) + patient_p, patient_q * q_rel);
+        log.emit(drivers::Role::Patient, patient_p, patient_q);
+        log.emit(drivers::Role::Stylus, patient_q * (sensor_rel + jitter) + patient_p, patient_q * q_rel);
       }
     }
-    ASSERT_EQ(writer.commit().error(), "");
+    log.commit();
   };
 
   // Pivoting: 200 poses about one dimple.
@@ -179,10 +189,7 @@ TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
   EXPECT_TRUE(!at_origin || at_origin->size() != model.size()) << "a tilting sensor 150 mm up the handle never dwells";
   // The file `calibrate pivot` wrote, given as --config, carries the tip into the registration command.
   const auto model_csv = dir / "model.csv";
-  {
-    std::ofstream o(model_csv);
-    for (const auto& m : model) o << m.x() << ", " << m.y() << ", " << m.z() << "\n";
-  }
+  write_model_csv(model_csv, model);
   platform::CalibrateOptions c;
   c.model_csv = model_csv.string();
   c.stylus_log = touch_log;

@@ -30,6 +30,17 @@ class RuntimeRun : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir); }
 
+  /// A scenario that lays the mock patient in `pose` (a start pose and no turn) breathing 30 times a minute, for a
+  /// run of `seconds`.
+  void lay_patient(const std::string& pose, double seconds) {
+    const std::string path = (dir / (pose + ".toml")).string();
+    std::filesystem::create_directories(dir);
+    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose << "\"\n";
+    settings.breathing.scenario = path;
+    options.frames.reset();
+    options.seconds = seconds;
+  }
+
   nlohmann::json stats() const {
     std::ifstream in(options.stats_json_path);
     return nlohmann::json::parse(in);
@@ -88,13 +99,7 @@ TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
   // A scenario holds the mock patient on one side for more than a breath at 30 breaths/min; the stats give each
   // lung's swing. Supine the split is the lungs' rest volumes; on the left side the left (lower) lung gains.
   const auto left_share = [&](const char* pose) {
-    const std::string path = (dir / (std::string(pose) + ".toml")).string();
-    std::filesystem::create_directories(dir);
-    // A start pose and no turn: the scenario still lays the mock patient down.
-    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose << "\"\n";
-    settings.breathing.scenario = path;
-    options.frames.reset();
-    options.seconds = 2.5;
+    lay_patient(pose, 2.5);  // a start pose and no turn: the scenario still lays the mock patient down
     EXPECT_EQ(platform::run_runtime(settings, options), 0) << pose;
     const auto j = stats();
     EXPECT_EQ(j["per_lung"].size(), 2u) << pose;
@@ -113,12 +118,7 @@ TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
 
 TEST_F(RuntimeRun, ProneTheVentralHalfTakesMoreOfTheBreathThanSupine) {
   const auto ventral = [&](const char* pose) {
-    const std::string path = (dir / (std::string(pose) + ".toml")).string();
-    std::filesystem::create_directories(dir);
-    std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"" << pose << "\"\n";
-    settings.breathing.scenario = path;
-    options.frames.reset();
-    options.seconds = 1.0;
+    lay_patient(pose, 1.0);
     EXPECT_EQ(platform::run_runtime(settings, options), 0) << pose;
     return stats()["ventral_share"].get<double>();
   };
@@ -130,13 +130,8 @@ TEST_F(RuntimeRun, ProneTheVentralHalfTakesMoreOfTheBreathThanSupine) {
 }
 
 TEST_F(RuntimeRun, ARightPneumothoraxLeavesTheRightLungUnderATenthOfEachBreath) {
-  const std::string path = (dir / "supine.toml").string();
-  std::filesystem::create_directories(dir);
-  std::ofstream(path) << "duration_s = 10.0\n[start]\nrate_bpm = 30.0\npose = \"supine\"\n";
-  settings.breathing.scenario = path;
+  lay_patient("supine", 2.5);
   settings.sim.pathologies = {"pneumothorax:right:30"};
-  options.frames.reset();
-  options.seconds = 2.5;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   const auto j = stats();
   EXPECT_NE(j["asset"].get<std::string>().find("with pneumothorax:right:30"), std::string::npos) << j["asset"];

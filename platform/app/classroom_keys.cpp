@@ -235,7 +235,13 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
   fs::create_directories(work, ec);
   if (ec) return fail(work.string() + ": cannot make it: " + ec.message());
   fs::permissions(work, fs::perms::owner_all, fs::perm_options::replace, ec);
-  auto made = make_into(o, work);
+  // make_into's folder work (create, copy, chmod) throws on a full disk or a read-only place: one line too.
+  Result<std::vector<std::string>> made = fail("");
+  try {
+    made = make_into(o, work);
+  } catch (const fs::filesystem_error& e) {
+    made = fail(o.out_dir + ": " + e.what());
+  }
   if (!made) {
     fs::remove_all(work, ec);
     return made.with_context("");

@@ -161,7 +161,7 @@ std::string classroom_governance_xml() {
      xsi:noNamespaceSchemaLocation="http://www.omg.org/spec/DDS-SECURITY/20170901/omg_shared_ca_governance.xsd">
   <domain_access_rules>
     <domain_rule>
-      <domains><id_range><min>0</min><max>232</max></id_range></domains>
+      <domains><id_range><min>0</min><max>230</max></id_range></domains>
       <allow_unauthenticated_participants>false</allow_unauthenticated_participants>
       <enable_join_access_control>true</enable_join_access_control>
       <discovery_protection_kind>ENCRYPT</discovery_protection_kind>
@@ -197,7 +197,7 @@ std::string classroom_permissions_xml(const ClassroomKeysOptions& o, const std::
     x += "    <grant name=\"" + o.classroom + "." + station + "\">\n";
     x += "      <subject_name>" + subject_of(o.classroom, station) + "</subject_name>\n";
     x += "      <validity><not_before>" + not_before + "</not_before><not_after>" + not_after + "</not_after></validity>\n";
-    x += "      <allow_rule>\n        <domains><id_range><min>0</min><max>232</max></id_range></domains>\n";
+    x += "      <allow_rule>\n        <domains><id_range><min>0</min><max>230</max></id_range></domains>\n";
     x += "        <publish>\n          <topics>\n";
     for (const std::string& t : topics_published_by(station == instructor)) x += "            <topic>" + t + "</topic>\n";
     x += "          </topics>\n          <partitions><partition>" + o.classroom + "</partition></partitions>\n";

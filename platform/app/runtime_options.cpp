@@ -110,7 +110,11 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
       ->check(CLI::IsMember(names_of(sync::kSyncRoleNames)));
   app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
   app.add_option("--sync-domain", o.sync_domain, "the DDS domain id [0, 232] (default: sync.domain)");
-  app.add_option("--station", o.station, "this station's name in the classroom (default: host/pid)");
+  app.add_option("--station", o.station,
+                 "this station's name in the classroom (default: its --sync-security folder's name, else host/pid)");
+  app.add_option("--sync-security", o.sync_security,
+                 "join a secure classroom (DDS Security) with this station's folder from `lungar classroom-keys` "
+                 "(default: sync.security; none: the classroom is open)");
   app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "tests: pretend this station's clock is off by MS");
 }
 
@@ -145,6 +149,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
     s.sync.domain = *o.sync_domain;
   }
   if (!o.station.empty()) s.sync.station = o.station;
+  if (!o.sync_security.empty()) s.sync.security = o.sync_security;
   return ok();
 }
 

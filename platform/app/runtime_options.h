@@ -37,6 +37,7 @@ struct RuntimeOptions {
   std::string classroom;           ///< the classroom's name; empty: from the config
   std::optional<int> sync_domain;  ///< the DDS domain id
   std::string station;             ///< this station's name in the classroom
+  std::string sync_security;       ///< this station's folder of `lungar classroom-keys`: a secure classroom
   double sync_clock_skew_ms = 0;   ///< tests: pretend this station's clock is off by this much
   bool record_requested = false;   ///< --record given, with or without a file
 };

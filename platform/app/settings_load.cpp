@@ -103,6 +103,7 @@ Result<Settings> load_settings(const std::string& path) {
     resolve(r->trackers.replay_file);
     resolve(r->sim.asset);
     resolve(r->sync.cyclonedds_xml);
+    resolve(r->sync.security);
   }
   return r;
 }

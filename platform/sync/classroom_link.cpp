@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <random>
 
 #include "config/base/log_line.h"
+#include "platform/sync/dds_security.h"
 #include "platform/sync/wire.h"
 
 namespace lungar::platform::sync {
@@ -26,6 +28,13 @@ std::string default_station_name() {
   return std::string(host) + "/" + std::to_string(getpid());
 }
 
+namespace {
+std::string folder_name(const std::string& dir) {
+  const std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+  return p.has_filename() ? p.filename().string() : p.parent_path().filename().string();
+}
+}  // namespace
+
 ClassroomLink::ClassroomLink(const SyncOptions& options, dds::Domain domain)
     : options_(options), clock_(options.clock_skew_ns), domain_(std::move(domain)) {}
 
@@ -35,10 +44,23 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
     return fail("sync.classroom: expected a name of 1 to 63 characters without * ? [ ] \\, got \"" +
                 options.classroom + "\"");
   }
-  const std::string name = options.station.empty() ? default_station_name() : options.station;
+  // A secure station's folder is named after it (DIR/STATION/ of classroom-keys): that name, unless told another.
+  const std::string name = !options.station.empty()        ? options.station
+                           : !options.security_dir.empty() ? folder_name(options.security_dir)
+                                                           : default_station_name();
   if (name.size() > 63) return fail("sync.station: expected at most 63 characters, got \"" + name + "\"");
-  auto domain = dds::Domain::create(options.domain, options.cyclonedds_xml);
-  if (!domain) return Error{domain.error()};
+  dds::Qos participant_qos;
+  if (!options.security_dir.empty()) {
+    auto files = find_security_files(options.security_dir);
+    if (!files) return Error{files.error()};
+    if (Status s = add_security_properties(*files, options.domain, participant_qos); !s) return Error{s.error()};
+  }
+  auto domain = dds::Domain::create(options.domain, options.cyclonedds_xml,
+                                    options.security_dir.empty() ? nullptr : &participant_qos);
+  if (!domain) {
+    if (options.security_dir.empty()) return Error{domain.error()};
+    return fail("sync.security " + options.security_dir + ": " + domain.error());
+  }
   std::unique_ptr<ClassroomLink> link(new ClassroomLink(options, domain.take()));
   link->name_ = name;
   link->session_ = new_session_id();
@@ -59,6 +81,16 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
   link->station_writer_.emplace(writer.take());
   link->station_reader_.emplace(reader.take());
   link->waitset_.emplace(waitset.take());
+  if (!options.security_dir.empty()) {
+    auto refused = RefusedPeers::create(p, options.refuse_after_ns);
+    if (!refused) return fail("sync: " + refused.error());
+    link->refused_ = refused.take();
+    link->log("sync: classroom \"" + options.classroom + "\" is secure: DDS Security with " +
+              options.security_dir + " (authenticated, access-controlled, encrypted)");
+  } else {
+    link->log("sync: classroom \"" + options.classroom + "\" is open: any DDS participant on this network can join "
+              "it and publish to it (--sync-security DIR closes it; see lungar classroom-keys)");
+  }
   if (Status a = link->waitset_->attach_reader(link->station_reader_->get()); !a) return fail("sync: " + a.error());
   return link;
 }
@@ -94,6 +126,11 @@ int ClassroomLink::poll_roster() {
     *entry = RosterEntry{s.name, s.role, s.session, s.started_ns, info.instance_handle, true};
   });
   peers_max_ = std::max(peers_max_, peers());
+  const std::int64_t now = clock_.now_ns();
+  if (refused_ && now - refused_polled_ns_ >= 200'000'000) {  // discovery changes slowly: five looks a second
+    refused_polled_ns_ = now;
+    refused_->poll(station_reader_->get(), now, [this](const std::string& line) { log(line); });
+  }
   return total;
 }
 
@@ -118,6 +155,13 @@ void ClassroomLink::log(const std::string& line) const {
   } else {
     log_line("lungar", line);
   }
+}
+
+std::string ClassroomLink::not_permitted(const char* topic, const char* what, const std::string& cyclone) const {
+  return "sync.security " + options_.security_dir + ": station \"" + name_ + "\" may not " + what + " " + topic +
+         " in classroom \"" + options_.classroom + "\": its permissions.p7s does not allow it (only the instructor's "
+         "allow the shared patient, breath and scenario, and each station's only the classroom its keys were made "
+         "for; " + cyclone + ")";
 }
 
 void ClassroomLink::malformed(const std::string& why) {

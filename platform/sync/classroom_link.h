@@ -16,6 +16,7 @@
 #include "config/base/result.h"
 #include "platform/sync/classroom_topics.h"
 #include "platform/sync/dds.h"
+#include "platform/sync/refused_peers.h"
 #include "platform/sync/station_clock.h"
 #include "platform/sync/sync_types.h"
 
@@ -52,13 +53,17 @@ class ClassroomLink {
   Result<dds::Writer<T>> writer() const {
     dds::Qos qos;
     classroom_qos<T>(qos, options_.classroom);
-    return dds::Writer<T>::create(domain_.participant(), topics_.get<T>(), qos);
+    auto made = dds::Writer<T>::create(domain_.participant(), topics_.get<T>(), qos);
+    if (!made && secure()) return fail(not_permitted(TopicInfo<T>::name, "publish", made.error()));
+    return made;
   }
   template <class T>
   Result<dds::Reader<T>> reader() const {
     dds::Qos qos;
     classroom_qos<T>(qos, options_.classroom);
-    return dds::Reader<T>::create(domain_.participant(), topics_.get<T>(), qos);
+    auto made = dds::Reader<T>::create(domain_.participant(), topics_.get<T>(), qos);
+    if (!made && secure()) return fail(not_permitted(TopicInfo<T>::name, "read", made.error()));
+    return made;
   }
 
   dds::WaitSet& waitset() { return *waitset_; }
@@ -71,9 +76,15 @@ class ClassroomLink {
   /// Counts a dropped sample and logs it, the first few and then one in a hundred.
   void malformed(const std::string& why);
   std::uint64_t malformed_count() const { return malformed_.load(std::memory_order_relaxed); }
+  /// Joined with DDS Security (SyncOptions::security_dir).
+  bool secure() const { return !options_.security_dir.empty(); }
+  /// Participants that did not authenticate as stations of this classroom (0 in an open classroom).
+  std::uint64_t rejected_count() const { return refused_ ? refused_->count() : 0; }
 
  private:
   ClassroomLink(const SyncOptions& options, dds::Domain domain);
+  /// The one line for an endpoint a secure classroom's permissions refused.
+  std::string not_permitted(const char* topic, const char* what, const std::string& cyclone) const;
 
   SyncOptions options_;
   StationClock clock_;
@@ -85,12 +96,14 @@ class ClassroomLink {
   std::array<RosterEntry, 64> roster_{};
   std::size_t roster_size_ = 0;
   int peers_max_ = 0;
+  std::int64_t refused_polled_ns_ = 0;
   // Entities: the domain first, so that it is deleted last.
   dds::Domain domain_;
   ClassroomTopics topics_;
   std::optional<dds::Writer<lungar_sync_Station>> station_writer_;
   std::optional<dds::Reader<lungar_sync_Station>> station_reader_;
   std::optional<dds::WaitSet> waitset_;
+  std::unique_ptr<RefusedPeers> refused_;  ///< only in a secure classroom
 };
 
 /// A station's sync thread (neither copied nor moved: its atomic flag and thread are not). stop() sets the flag

@@ -14,6 +14,7 @@ SyncOptions to_sync_options(const SyncSettings& s, std::function<void(const std:
   o.domain = static_cast<std::uint32_t>(s.domain);
   o.cyclonedds_xml = s.cyclonedds_xml.empty() ? default_cyclonedds_xml() : s.cyclonedds_xml;
   o.station = s.station;
+  o.security_dir = s.security;
   o.lost_after_ns = static_cast<std::int64_t>(s.lost_after_ms * 1e6);
   o.log = std::move(log);
   o.clock_skew_ns = clock_skew_ns;

@@ -4,31 +4,66 @@
 
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 namespace lungar::platform::dds {
 
 namespace {
 
-/// Cyclone reports what it dislikes in a configuration through its log, not its return code: the log sink
-/// keeps the first error line of the current domain creation so it can go into our one error line.
-struct ConfigComplaint {
+/// Cyclone reports what it dislikes in a configuration, and DDS Security what it refuses, through its log, not
+/// its return codes: the log sink keeps the first error line of the current domain and participant creation
+/// so it can go into our one error line, and each distinct security warning once for
+/// take_security_complaints().
+struct CycloneLog {
   std::mutex mutex;
   bool capturing = false;
   std::string first;
+  std::set<std::string> complaints_seen;  ///< bounded: a station logs each at most once per run
+  std::vector<std::string> complaints_new;
 };
-ConfigComplaint g_complaint;
+CycloneLog g_log;
+
+bool about_security(const std::string& line) {
+  for (const char* word : {"handshake", "not allowed", "ertificate", "ermission", "ecurity", "uthenticat"}) {
+    if (line.find(word) != std::string::npos) return true;
+  }
+  return false;
+}
 
 void log_sink(void*, const dds_log_data_t* data) {
-  if ((data->priority & (DDS_LC_ERROR | DDS_LC_FATAL)) == 0 || data->message == nullptr) return;
-  std::lock_guard lock(g_complaint.mutex);
-  if (!g_complaint.capturing || !g_complaint.first.empty()) return;
-  std::string line(data->message + data->hdrsize, data->size > data->hdrsize ? data->size - data->hdrsize : 0);
+  if (data->message == nullptr) return;
+  const bool error = (data->priority & (DDS_LC_ERROR | DDS_LC_FATAL)) != 0;
+  if (!error && (data->priority & DDS_LC_WARNING) == 0) return;
+  // Cyclone 0.10 hands the log sink the text after its header (hdrsize is that header's length before it).
+  std::string line(data->message, data->size);
   while (!line.empty() && (line.back() == '\n' || line.back() == ' ')) line.pop_back();
-  g_complaint.first = line;
+  std::lock_guard lock(g_log.mutex);
+  if (error && g_log.capturing && g_log.first.empty()) g_log.first = line;
+  if (!error && about_security(line) && g_log.complaints_seen.size() < 256 && g_log.complaints_seen.insert(line).second) {
+    g_log.complaints_new.push_back(line);
+  }
+}
+
+void capture_errors(bool on) {
+  std::lock_guard lock(g_log.mutex);
+  g_log.capturing = on;
+  if (on) g_log.first.clear();
+}
+
+std::string captured_error() {
+  std::lock_guard lock(g_log.mutex);
+  return g_log.first;
 }
 
 }  // namespace
+
+std::vector<std::string> take_security_complaints() {
+  std::lock_guard lock(g_log.mutex);
+  std::vector<std::string> taken;
+  taken.swap(g_log.complaints_new);
+  return taken;
+}
 
 std::string describe(const char* call, dds_return_t rc) {
   return std::string(call) + ": " + dds_strretcode(rc);
@@ -44,7 +79,7 @@ Result<Entity> own(const char* call, dds_entity_t handle) {
   return Entity(handle);
 }
 
-Result<Domain> Domain::create(std::uint32_t domain_id, const std::string& config_path) {
+Result<Domain> Domain::create(std::uint32_t domain_id, const std::string& config_path, const Qos* participant_qos) {
   if (domain_id > 232) {  // 7400 + 250 * id must stay a port number (DDSI's default port mapping)
     return fail("sync.domain: expected a DDS domain id in [0, 232], got " + std::to_string(domain_id));
   }
@@ -58,29 +93,28 @@ Result<Domain> Domain::create(std::uint32_t domain_id, const std::string& config
   }
   Domain d;
   d.id_ = domain_id;
-  {
-    std::lock_guard lock(g_complaint.mutex);
-    g_complaint.capturing = true;
-    g_complaint.first.clear();
-  }
   dds_set_log_sink(log_sink, nullptr);  // also keeps Cyclone's multi-line complaints off stderr
+  capture_errors(true);
   const dds_entity_t domain = dds_create_domain(domain_id, xml.c_str());
-  std::string complaint;
-  {
-    std::lock_guard lock(g_complaint.mutex);
-    g_complaint.capturing = false;
-    complaint = g_complaint.first;
-  }
+  capture_errors(false);
   if (domain == DDS_RETCODE_PRECONDITION_NOT_MET) {
     // This process made the domain already (two stations in one test process): its participants share it.
   } else if (domain < 0) {
+    const std::string complaint = captured_error();
     return fail(config_path + ": Cyclone DDS refused the configuration (" +
                 (complaint.empty() ? describe("dds_create_domain", domain) : complaint) + ")");
   } else {
     d.domain_ = Entity(domain);
   }
-  auto participant = own("dds_create_participant", dds_create_participant(domain_id, nullptr, nullptr));
-  if (!participant) return fail(config_path + ": " + participant.error());
+  capture_errors(true);
+  auto participant = own("dds_create_participant",
+                         dds_create_participant(domain_id, participant_qos ? participant_qos->get() : nullptr, nullptr));
+  capture_errors(false);
+  if (!participant) {
+    const std::string complaint = captured_error();
+    if (participant_qos != nullptr && !complaint.empty()) return fail("DDS Security refused this station (" + complaint + ")");
+    return fail(config_path + ": " + participant.error() + (complaint.empty() ? "" : " (" + complaint + ")"));
+  }
   d.participant_ = participant.take();
   return d;
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <vector>
 
 #include "config/base/result.h"
 
@@ -27,6 +28,11 @@ namespace lungar::platform::dds {
 
 /// "dds_create_writer: Precondition not met" style text for a Cyclone return code.
 std::string describe(const char* call, dds_return_t rc);
+
+/// What Cyclone's DDS Security said about remote participants since the last call (a handshake that failed,
+/// a participant its permissions do not allow), each distinct line once per process, oldest first. Cyclone
+/// tells this only in its log, at warning level, and repeats it at every handshake attempt.
+std::vector<std::string> take_security_complaints();
 
 /// One owned dds_entity_t (participant, topic, reader, writer, condition, waitset, domain).
 class Entity {
@@ -72,6 +78,10 @@ class Qos {
   Qos& transient_local() { return dds_qset_durability(qos_, DDS_DURABILITY_TRANSIENT_LOCAL), *this; }
   Qos& keep_last(int32_t depth) { return dds_qset_history(qos_, DDS_HISTORY_KEEP_LAST, depth), *this; }
   Qos& partition(const std::string& name) { return dds_qset_partition1(qos_, name.c_str()), *this; }
+  /// A name/value property (DDS Security reads its plugins and files from these, "dds.sec.*").
+  Qos& property(const std::string& name, const std::string& value) {
+    return dds_qset_prop(qos_, name.c_str(), value.c_str()), *this;
+  }
   const dds_qos_t* get() const { return qos_; }
 
  private:
@@ -81,9 +91,11 @@ class Qos {
 /// A Cyclone domain made from an XML configuration file, and the one participant lungar uses in it.
 class Domain {
  public:
-  /// Reads and checks `config_path` (a Cyclone XML file) and creates domain `domain_id` from it. Cyclone's own
-  /// complaint about the file, if any, is part of the error line.
-  static Result<Domain> create(std::uint32_t domain_id, const std::string& config_path);
+  /// Reads and checks `config_path` (a Cyclone XML file) and creates domain `domain_id` from it, and the
+  /// participant with `participant_qos` (DDS Security's properties, or none). Cyclone's own complaint about the
+  /// file or the participant's security, if any, is part of the error line.
+  static Result<Domain> create(std::uint32_t domain_id, const std::string& config_path,
+                               const Qos* participant_qos = nullptr);
 
   dds_entity_t participant() const { return participant_.get(); }
   std::uint32_t id() const { return id_; }

@@ -204,6 +204,8 @@ SyncReport Instructor::report() const {
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
   r.malformed = link_->malformed_count();
+  r.secure = link_->secure();
+  r.rejected = link_->rejected_count();
   std::lock_guard lock(fatal_mutex_);
   r.patient_orientation_wxyz = last_orientation_;
   return r;

@@ -22,6 +22,8 @@ void add_sync_keys(const SyncReport& r, nlohmann::json& j) {
   j["sync_patient_orientation_wxyz"] = r.patient_orientation_wxyz;
   j["sync_heartbeats"] = r.heartbeats;
   j["sync_malformed"] = r.malformed;
+  j["sync_secure"] = r.secure;
+  j["sync_rejected"] = r.rejected;
   nlohmann::json transitions = nlohmann::json::array();
   for (const SyncTransition& t : r.transitions) {
     transitions.push_back({{"state", to_string(t.state)}, {"realtime_ns", t.realtime_ns}});

@@ -13,6 +13,7 @@ void read_sync_settings(config::TomlSection s, SyncSettings& y) {
   s.integer("domain", y.domain, 0, 232, "");
   s.text("cyclonedds_xml", y.cyclonedds_xml);
   s.text("station", y.station);
+  s.text("security", y.security);
   if (y.station.size() > 63) s.fail("station", "expected at most 63 characters, got \"" + y.station + "\"");
   s.number("lost_after_ms", y.lost_after_ms, 50.0, 10000.0, "ms");
   s.finish();

@@ -24,6 +24,7 @@ struct SyncSettings {
   int domain = 0;                       ///< the DDS domain id, [0, 232]
   std::string cyclonedds_xml;           ///< Cyclone XML; empty: the shipped config/cyclonedds/classroom-lan.xml
   std::string station;                  ///< this station's name; empty: host/pid
+  std::string security;                 ///< this station's folder of `lungar classroom-keys`; empty: open classroom
   double lost_after_ms = 250.0;         ///< a trainee is lost after this long without a word from the instructor
 };
 

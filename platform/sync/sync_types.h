@@ -28,6 +28,8 @@ struct SyncOptions {
   std::uint32_t domain = 0;             ///< the DDS domain id
   std::string cyclonedds_xml;           ///< the Cyclone DDS XML configuration file
   std::string station;                  ///< this station's name ("" -> host/pid)
+  std::string security_dir;             ///< a station folder of `lungar classroom-keys`; "": an open classroom
+  std::int64_t refuse_after_ns = 3'000'000'000;  ///< a participant that has not authenticated by then is refused
   std::int64_t clock_skew_ns = 0;       ///< tests: this station's clock runs this far from the machine's
   std::int64_t lost_after_ns = 250'000'000;  ///< a trainee is lost after this long without a heartbeat
   std::int64_t probe_ns = 600'000'000;       ///< an instructor listens this long for another one before it starts
@@ -59,6 +61,8 @@ struct SyncReport {
   std::array<double, 4> patient_orientation_wxyz{1, 0, 0, 0};  ///< the last lung orientation sent or received
   std::uint64_t malformed = 0;          ///< samples dropped as malformed or out of range
   std::uint64_t heartbeats = 0;
+  bool secure = false;                  ///< joined with DDS Security (authenticated, access-controlled, encrypted)
+  std::uint64_t rejected = 0;           ///< participants that did not authenticate as stations of the classroom
   std::vector<SyncTransition> transitions;
 };
 

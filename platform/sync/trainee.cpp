@@ -281,6 +281,8 @@ SyncReport Trainee::report() const {
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
   r.malformed = link_->malformed_count();
+  r.secure = link_->secure();
+  r.rejected = link_->rejected_count();
   std::lock_guard lock(report_mutex_);
   r.instructor = instructor_;
   r.patient_orientation_wxyz = last_orientation_;

@@ -44,7 +44,7 @@ TEST(DoctorGles, AHeadlessMockSetUpHasNoFailureAndABrokenConfigFailsOnlyItsCheck
   const fs::path profile = root / "headless.toml";
   std::ofstream(profile) << "[display]\noutput = \"headless\"\n[trackers]\nsource = \"mock\"\n";
   auto checks = run_checks(profile.string(), env);
-  ASSERT_EQ(checks.size(), 6u);
+  ASSERT_EQ(checks.size(), 7u);
   for (const auto& c : checks) EXPECT_NE(c.verdict, Verdict::Fail) << format_check(c);
 
   std::ofstream(profile) << "[display]\noutput = \"sideways\"\n";

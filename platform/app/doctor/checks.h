@@ -25,6 +25,9 @@ Check check_openxr_runtime(const DoctorEnv& env);
 Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env);
 /// The configured asset loads (or the demo asset's cache is usable or can be made).
 Check check_asset(const Settings& s, const DoctorEnv& env);
+/// The classroom: not in one, open (a warning: anyone on the network can join), or secure with a complete station
+/// folder (sync.security) and Cyclone's security plugins installed.
+Check check_classroom(const Settings& s);
 /// Free space where snapshots, stats and recordings go ($XDG_STATE_HOME/lungar).
 Check check_disk(const DoctorEnv& env);
 

@@ -20,6 +20,7 @@ std::vector<Check> run_checks(const std::string& config_path, const DoctorEnv& e
   checks.push_back(check_output(s, env));
   checks.push_back(check_tracker(s.trackers, env));
   checks.push_back(check_asset(s, env));
+  checks.push_back(check_classroom(s));
   checks.push_back(check_disk(env));
   return checks;
 }

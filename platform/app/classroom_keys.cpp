@@ -147,6 +147,55 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
 
 }  // namespace
 
+Result<std::string> revoke_classroom_stations(const ClassroomRevokeOptions& given) {
+  ClassroomKeysOptions o;  // openssl() reads the command from it
+  o.openssl = given.openssl;
+  const fs::path ca(given.ca_dir);
+  const std::string ca_cert = (ca / "ca_cert.pem").string(), ca_key = (ca / "ca_key.pem").string();
+  for (const std::string& f : {ca_cert, ca_key})
+    if (!fs::exists(f)) return fail("--ca " + given.ca_dir + ": expected " + fs::path(f).filename().string() + " there");
+  if (given.certs.empty()) return fail("--cert: expected at least one station's identity_cert.pem");
+  for (const std::string& c : given.certs) {
+    if (!fs::exists(c)) return fail("--cert " + c + ": no such file (a station's identity_cert.pem)");
+    if (Status v = openssl(o, {"verify", "-CAfile", ca_cert, c}, ca); !v) {
+      fs::remove(ca / "openssl.err");
+      return fail("--cert " + c + ": not a certificate of this authority (" + v.error() + ")");
+    }
+  }
+  // openssl's small CA database beside the authority's key: the list of what it revoked, kept across runs.
+  const fs::path index = ca / "index.txt", crlnumber = ca / "crlnumber", cnf = ca / "openssl-ca.cnf";
+  std::error_code ec;
+  if (!fs::exists(index)) std::ofstream(index).flush();
+  if (!fs::exists(crlnumber)) std::ofstream(crlnumber) << "01\n";
+  std::ofstream(cnf) << "[ ca ]\ndefault_ca = classroom\n[ classroom ]\ndatabase = " << index.string()
+                     << "\ncrlnumber = " << crlnumber.string()
+                     << "\ndefault_md = sha256\ndefault_crl_days = 3650\nunique_subject = no\n";
+  const std::string backup = index.string() + ".before";
+  fs::copy_file(index, backup, fs::copy_options::overwrite_existing, ec);
+  const auto restore = [&](const std::string& why) -> Result<std::string> {
+    fs::rename(backup, index, ec);
+    fs::remove(ca / "openssl.err", ec);
+    return fail(why);
+  };
+  for (const std::string& c : given.certs) {
+    if (Status r = openssl(o, {"ca", "-config", cnf.string(), "-keyfile", ca_key, "-cert", ca_cert, "-revoke", c}, ca);
+        !r && r.error().find("lready revoked") == std::string::npos)
+      return restore("--cert " + c + ": " + r.error());
+  }
+  const std::string crl_new = (ca / "crl.pem.new").string();
+  if (Status g = openssl(o, {"ca", "-config", cnf.string(), "-keyfile", ca_key, "-cert", ca_cert, "-gencrl", "-out",
+                             crl_new},
+                         ca);
+      !g)
+    return restore("the revocation list: " + g.error());
+  fs::rename(crl_new, ca / "crl.pem", ec);
+  if (ec) return restore((ca / "crl.pem").string() + ": cannot write it: " + ec.message());
+  fs::remove(backup, ec);
+  fs::remove(ca / "openssl.err", ec);
+  return "copy " + (ca / "crl.pem").string() +
+         " into every station's folder (as crl.pem): from its next start, a station refuses the revoked identities";
+}
+
 std::vector<std::string> topics_published_by(bool instructor) {
   if (instructor)
     return {"lungar_station", "lungar_patient_pose", "lungar_breathing_state", "lungar_scenario_events",

@@ -32,6 +32,18 @@ struct ClassroomKeysOptions {
 /// One line per station of what to copy where, or the error (one line; nothing left in out_dir).
 Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions& o);
 
+/// `lungar classroom-revoke`: the authority withdraws a station's identity (a lost or stolen HMD PC).
+struct ClassroomRevokeOptions {
+  std::string ca_dir;               ///< the authority's folder (DIR/ca of classroom-keys): its list of revoked grows
+  std::vector<std::string> certs;   ///< identity_cert.pem of each station to revoke
+  std::string openssl = "openssl";
+};
+
+/// Revokes `certs` (each checked as issued by this authority) and writes the authority's certificate revocation
+/// list, CA_DIR/crl.pem, naming every certificate it revoked so far; returns the line that says where to copy it
+/// (each station's folder, as crl.pem: a station with it refuses the revoked ones). Nothing changes on an error.
+Result<std::string> revoke_classroom_stations(const ClassroomRevokeOptions& o);
+
 /// The permissions document (unsigned) and the governance document: what make_classroom_keys signs.
 std::string classroom_permissions_xml(const ClassroomKeysOptions& o, const std::string& not_before,
                                       const std::string& not_after);

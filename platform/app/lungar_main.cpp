@@ -34,6 +34,8 @@ struct Commands {
   CLI::App* display_app = nullptr;
   lungar::platform::ClassroomKeysOptions keys;
   CLI::App* keys_app = nullptr;
+  lungar::platform::ClassroomRevokeOptions revoke;
+  CLI::App* revoke_app = nullptr;
 };
 
 /// `lungar calibrate` and `lungar calibrate pivot`.
@@ -84,6 +86,10 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   keys->add_option("--out", k.out_dir, "a new or empty folder for the keys")->required();
   keys->add_option("--ca", k.ca_dir, "reuse the authority in this folder (ca_cert.pem, ca_key.pem)");
   keys->add_option("--days", k.days, "validity of the certificates and permissions, days")->capture_default_str();
+  CLI::App* revoke = m.revoke_app = app.add_subcommand(
+      "classroom-revoke", "withdraw stations' identities (a lost HMD PC): the authority's revocation list, crl.pem");
+  revoke->add_option("--ca", m.revoke.ca_dir, "the authority's folder (DIR/ca of classroom-keys)")->required();
+  revoke->add_option("--cert", m.revoke.certs, "a station's identity_cert.pem, repeatable")->required();
 }
 
 /// The chosen subcommand's exit code; none when the command line runs the runtime.
@@ -97,6 +103,15 @@ std::optional<int> run_command(Commands& m, const std::string& config_path) {
       return 2;
     }
     for (const std::string& line : *made) std::printf("%s\n", line.c_str());
+    return 0;
+  }
+  if (*m.revoke_app) {
+    auto said = lungar::platform::revoke_classroom_stations(m.revoke);
+    if (!said) {
+      std::fprintf(stderr, "lungar classroom-revoke: %s\n", said.error().c_str());
+      return 2;
+    }
+    std::printf("%s\n", said->c_str());
     return 0;
   }
   if (m.stylus_tip.size() == 3) {

@@ -32,6 +32,10 @@ Result<SecurityFiles> find_security_files(const std::string& dir) {
       return fail(where + ": expected " + name + " there (readable), got none: copy the station's whole folder");
     }
   }
+  if (const fs::path crl = fs::path(f.dir) / "crl.pem"; fs::exists(crl, ec)) {
+    if (::access(crl.c_str(), R_OK) != 0) return fail(where + ": crl.pem is there but not readable");
+    f.crl = crl.string();
+  }
   struct stat st{};
   if (::stat(f.identity_key.c_str(), &st) == 0 && (st.st_mode & (S_IRWXG | S_IRWXO)) != 0) {
     return fail(where + ": identity_key.pem is readable by others than its owner; expected mode 0600 "
@@ -70,6 +74,9 @@ Status add_security_properties(const SecurityFiles& f, std::uint32_t domain, dds
       .property("dds.sec.access.permissions_ca", file(f.permissions_ca))
       .property("dds.sec.access.governance", file(f.governance))
       .property("dds.sec.access.permissions", file(f.permissions));
+  // Cyclone's own property (the OMG specification has none for revocation): its authentication plugin checks
+  // every identity, its own and its peers', against this list.
+  if (!f.crl.empty()) qos.property("org.eclipse.cyclonedds.sec.auth.crl", file(f.crl));
   return ok();
 }
 

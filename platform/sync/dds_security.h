@@ -21,10 +21,12 @@ struct SecurityFiles {
   std::string dir;
   std::string identity_ca, identity_cert, identity_key;
   std::string permissions_ca, governance, permissions;
+  std::string crl;  ///< crl.pem, the authority's revocation list, when the folder has one ("" otherwise)
 };
 
 /// Checks `dir` (a station folder of `lungar classroom-keys`): each file there and readable, the private key
 /// readable by its owner alone (as ssh insists: a key others can read is a key others may have copied).
+/// A crl.pem there (from `lungar classroom-revoke`) makes the station refuse the identities it lists.
 /// The error names the folder, the file and what to do.
 Result<SecurityFiles> find_security_files(const std::string& dir);
 

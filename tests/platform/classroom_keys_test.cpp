@@ -135,5 +135,43 @@ TEST(ClassroomKeys, AnAuthorityIsReusedForANewStation) {
             0);
 }
 
+TEST(ClassroomKeys, RevokingListsTheStationAndRefusesAnotherAuthoritysCertificate) {
+  Dir d;
+  ClassroomKeysOptions o;
+  o.classroom = "ward-9";
+  o.stations = {"teacher", "lost-hmd"};
+  o.out_dir = (d.path / "keys").string();
+  ASSERT_TRUE(make_classroom_keys(o));
+  o.stations = {"stranger"};
+  o.out_dir = (d.path / "other").string();
+  ASSERT_TRUE(make_classroom_keys(o));
+  const fs::path ca = d.path / "keys" / "ca";
+  ClassroomRevokeOptions r;
+  r.ca_dir = ca.string();
+  r.certs = {(d.path / "other" / "stranger" / "identity_cert.pem").string()};
+  auto refused = revoke_classroom_stations(r);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("not a certificate of this authority"), std::string::npos) << refused.error();
+  EXPECT_FALSE(fs::exists(ca / "crl.pem")) << "nothing written for a refused request";
+  EXPECT_FALSE(fs::exists(ca / "openssl.err"));
+
+  r.certs = {(d.path / "keys" / "lost-hmd" / "identity_cert.pem").string()};
+  auto said = revoke_classroom_stations(r);
+  ASSERT_TRUE(said) << said.error();
+  EXPECT_NE(said->find("into every station's folder (as crl.pem)"), std::string::npos) << *said;
+  // openssl itself: the list is the authority's, and names the lost station's certificate and not the teacher's.
+  const std::string crl = (ca / "crl.pem").string(), ca_cert = (ca / "ca_cert.pem").string();
+  EXPECT_EQ(sh("openssl crl -in " + crl + " -CAfile " + ca_cert + " -noout"), 0);
+  const auto serial = [&](const std::string& station) {
+    const std::string s = command_output("openssl x509 -noout -serial -in " +
+                                         (d.path / "keys" / station / "identity_cert.pem").string());
+    return s.substr(s.find('=') + 1, s.size() - s.find('=') - 2);
+  };
+  const std::string listed = command_output("openssl crl -noout -text -in " + crl);
+  EXPECT_NE(listed.find(serial("lost-hmd")), std::string::npos) << listed;
+  EXPECT_EQ(listed.find(serial("teacher")), std::string::npos) << listed;
+  EXPECT_TRUE(revoke_classroom_stations(r)) << "revoking it again changes nothing and is no error";
+}
+
 }  // namespace
 }  // namespace lungar::platform

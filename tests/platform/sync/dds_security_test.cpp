@@ -113,3 +113,21 @@ TEST_F(DdsSecurity, ATamperedGovernanceIsRefusedByCyclone) {
   const std::string e = join(station);
   EXPECT_NE(e.find("DDS Security refused this station ("), std::string::npos) << e;
 }
+
+TEST_F(DdsSecurity, ARevokedIdentityIsRefusedWhereTheRevocationListIs) {
+  ClassroomRevokeOptions r;
+  r.ca_dir = (dir / "keys" / "ca").string();
+  r.certs = {(station / "identity_cert.pem").string()};
+  auto said = revoke_classroom_stations(r);
+  ASSERT_TRUE(said) << said.error();
+  EXPECT_EQ(join(dir / "keys" / "instr"), "") << "no list in its folder yet: nothing changes for the others";
+  fs::copy_file(dir / "keys" / "ca" / "crl.pem", dir / "keys" / "instr" / "crl.pem");
+  EXPECT_EQ(join(dir / "keys" / "instr"), "") << "instr is not on the list";
+  fs::copy_file(dir / "keys" / "ca" / "crl.pem", station / "crl.pem");
+  auto files = sync::find_security_files(station.string());
+  ASSERT_TRUE(files);
+  EXPECT_EQ(files->crl, (station / "crl.pem").string());
+  const std::string e = join(station);
+  EXPECT_NE(e.find("DDS Security refused this station ("), std::string::npos) << e;
+  EXPECT_NE(e.find("revoked"), std::string::npos) << "Cyclone's reason: " << e;
+}

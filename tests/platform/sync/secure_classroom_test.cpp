@@ -108,3 +108,26 @@ TEST_F(SecureClassroom, ATraineesKeysCannotTeach) {
   EXPECT_NE(err.find("its permissions.p7s does not allow it"), std::string::npos) << err;
   EXPECT_EQ(err.find("running"), std::string::npos) << "refused before its first frame: " << err;
 }
+
+TEST_F(SecureClassroom, ARevokedTraineeIsRefusedByAnInstructorThatHasTheRevocationList) {
+  make_keys("keys", {"instr", "t1"});
+  lungar::platform::ClassroomRevokeOptions r;
+  r.ca_dir = (dir / "keys" / "ca").string();
+  r.certs = {(dir / "keys" / "t1" / "identity_cert.pem").string()};
+  auto said = lungar::platform::revoke_classroom_stations(r);
+  ASSERT_TRUE(said) << said.error();
+  fs::copy_file(dir / "keys" / "ca" / "crl.pem", dir / "keys" / "instr" / "crl.pem");  // t1's own folder: none
+  auto instr = start("instr", "instructor", 9, "keys/instr");
+  ASSERT_TRUE(instr->wait_for("running", 30)) << instr->err();
+  auto t1 = start("t1", "trainee", 6, "keys/t1");
+  ASSERT_EQ(t1->wait(60), 0) << t1->err();
+  ASSERT_EQ(instr->wait(60), 0) << instr->err();
+  const auto ts = json_of("t1"), is = json_of("instr");
+  EXPECT_NE(ts["sync_state"], "in_sync") << ts.dump();
+  EXPECT_EQ(ts["sync_peers_max"], 0) << ts.dump();
+  EXPECT_EQ(is["sync_peers_max"], 0) << is.dump();
+  EXPECT_EQ(is["sync_rejected"], 1) << is.dump();
+  EXPECT_NE((instr->err() + t1->err()).find("certificate revoked; subject: /O=lungar/OU=" + room + "/CN=t1"),
+            std::string::npos)
+      << instr->err() << t1->err();
+}

@@ -59,18 +59,21 @@ void set_if(std::uint32_t set, std::uint32_t bit, std::optional<T>& field, T val
 Result<SharedPose> from_wire(const lungar_sync_PatientPose& s) {
   constexpr const char* kTopic = "lungar_patient_pose";
   SharedPose p;
+  const std::array<double, 3> position{s.position_mm.x, s.position_mm.y, s.position_mm.z};
+  const std::array<double, 4> orientation{s.orientation_wxyz.w, s.orientation_wxyz.x, s.orientation_wxyz.y,
+                                          s.orientation_wxyz.z};
   double norm_sq = 0;
   for (int i = 0; i < 3; ++i) {
-    if (!std::isfinite(s.position_mm[i]) || std::abs(s.position_mm[i]) > kMaxPositionMm) {
+    if (!std::isfinite(position[i]) || std::abs(position[i]) > kMaxPositionMm) {
       return fail(std::string(kTopic) + ": position_mm[" + std::to_string(i) + "]: expected a finite number within " +
-                  num(kMaxPositionMm) + " mm, got " + num(s.position_mm[i]));
+                  num(kMaxPositionMm) + " mm, got " + num(position[i]));
     }
-    p.position_mm[i] = s.position_mm[i];
+    p.position_mm[i] = position[i];
   }
   for (int i = 0; i < 4; ++i) {
-    if (Status f = finite(kTopic, "orientation_wxyz", s.orientation_wxyz[i]); !f) return Error{f.error()};
-    p.orientation_wxyz[i] = s.orientation_wxyz[i];
-    norm_sq += s.orientation_wxyz[i] * s.orientation_wxyz[i];
+    if (Status f = finite(kTopic, "orientation_wxyz", orientation[i]); !f) return Error{f.error()};
+    p.orientation_wxyz[i] = orientation[i];
+    norm_sq += orientation[i] * orientation[i];
   }
   if (std::abs(std::sqrt(norm_sq) - 1.0) > kQuaternionNormTolerance) {
     return fail(std::string(kTopic) + ": orientation_wxyz: expected a unit quaternion (norm 1 +- " +
@@ -84,8 +87,9 @@ Result<SharedPose> from_wire(const lungar_sync_PatientPose& s) {
 void to_wire(const SharedPose& pose, std::uint64_t session, std::uint32_t seq, lungar_sync_PatientPose& out) {
   out.session = session;
   out.seq = seq;
-  for (int i = 0; i < 3; ++i) out.position_mm[i] = pose.position_mm[i];
-  for (int i = 0; i < 4; ++i) out.orientation_wxyz[i] = pose.orientation_wxyz[i];
+  out.position_mm = {pose.position_mm[0], pose.position_mm[1], pose.position_mm[2]};
+  out.orientation_wxyz = {pose.orientation_wxyz[0], pose.orientation_wxyz[1], pose.orientation_wxyz[2],
+                          pose.orientation_wxyz[3]};
   out.measured_ns = pose.measured_ns;
 }
 

@@ -69,7 +69,7 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
   ASSERT_EQ(pose_writer->matched(), 1);
   lungar_sync_PatientPose pose{};
   pose.session = 5;
-  pose.orientation_wxyz[0] = std::nan("");
+  pose.orientation_wxyz.w = std::nan("");
   pose.measured_ns = realtime_ns();
   lungar_sync_BreathingState state{};
   state.session = 5;

@@ -101,7 +101,7 @@ TEST(DdsLayer, ASampleArrivesWithItsSourceTimestamp) {
   ASSERT_TRUE(room) << room.error();
   Pose sent{};
   sent.seq = 42;
-  sent.orientation_wxyz[0] = 1.0;
+  sent.orientation_wxyz.w = 1.0;
   const std::int64_t stamp = 1'234'567'890'123'456'789;
   ASSERT_TRUE(room->writer.write(sent, stamp));
   Pose got{};

@@ -45,12 +45,12 @@ TEST(SyncWire, APoseRoundTrips) {
 
 TEST(SyncWire, ANaNPoseIsRefusedNamingTheField) {
   lungar_sync_PatientPose w = good_pose();
-  w.orientation_wxyz[2] = kNaN;
+  w.orientation_wxyz.y = kNaN;
   auto r = from_wire(w);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().find("lungar_patient_pose: orientation_wxyz"), std::string::npos) << r.error();
   w = good_pose();
-  w.position_mm[0] = kNaN;
+  w.position_mm.x = kNaN;
   r = from_wire(w);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().find("position_mm[0]"), std::string::npos) << r.error();
@@ -58,10 +58,10 @@ TEST(SyncWire, ANaNPoseIsRefusedNamingTheField) {
 
 TEST(SyncWire, OutOfRangePosesAreRefused) {
   lungar_sync_PatientPose w = good_pose();
-  w.position_mm[2] = 2e5;  // 200 m away
+  w.position_mm.z = 2e5;  // 200 m away
   EXPECT_FALSE(from_wire(w));
   w = good_pose();
-  w.orientation_wxyz[0] = 0.9;  // not a unit quaternion
+  w.orientation_wxyz.w = 0.9;  // not a unit quaternion
   auto r = from_wire(w);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().find("unit quaternion"), std::string::npos) << r.error();

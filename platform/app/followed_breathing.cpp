@@ -2,9 +2,12 @@
 /// @brief The follower behind the BreathingClock interface (followed_breathing.h).
 #include "platform/app/followed_breathing.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "config/base/log_line.h"
 
 namespace lungar::platform {
 
@@ -29,6 +32,12 @@ sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
   }
   last_t_ = t;
   state_ = o.state;
+  if (o.apnoea && !apnoea_) {  // rare: one line when it starts, for the trainer
+    char line[128];
+    std::snprintf(line, sizeof line, "breath: apnoea: no breath for %.0f s at t = %.1f s", sim::FollowerParams{}.apnoea_s, t);
+    log_line("lungar", line);
+  }
+  apnoea_ = o.apnoea;
   s.dv_ml = o.dv_ml;
   s.v_ml = s.v_frc_ml + o.dv_ml;
   return s;
@@ -41,6 +50,9 @@ void FollowedBreathing::add_stats(nlohmann::json& stats) const {
   stats["breath_rate_per_min"] = follower_.rate_per_min();
   stats["breath_lag_ms"] = lag_n_ > 0 ? 1000.0 * lag_sum_s_ / static_cast<double>(lag_n_) : 0.0;
   stats["breath_following_s"] = following_s_;
+  stats["breath_apnoeas"] = follower_.apnoeas();
+  stats["breath_irregular"] = follower_.irregular_breaths();
+  stats["breath_invalid_samples"] = trace_.invalid;
 }
 
 }  // namespace lungar::platform

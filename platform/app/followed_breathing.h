@@ -37,6 +37,7 @@ class FollowedBreathing final : public BreathingClock {
   mutable sim::BreathState state_ = sim::BreathState::model;
   mutable double lag_sum_s_ = 0, following_s_ = 0, last_t_ = 0;
   mutable long lag_n_ = 0;
+  mutable bool apnoea_ = false;  ///< in an apnoea at the last frame: its start is logged once
 };
 
 }  // namespace lungar::platform

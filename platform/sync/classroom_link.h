@@ -51,19 +51,11 @@ class ClassroomLink {
 
   template <class T>
   Result<dds::Writer<T>> writer() const {
-    dds::Qos qos;
-    classroom_qos<T>(qos, options_.classroom);
-    auto made = dds::Writer<T>::create(domain_.participant(), topics_.get<T>(), qos);
-    if (!made && secure()) return fail(not_permitted(TopicInfo<T>::name, "publish", made.error()));
-    return made;
+    return endpoint<dds::Writer<T>, T>("publish");
   }
   template <class T>
   Result<dds::Reader<T>> reader() const {
-    dds::Qos qos;
-    classroom_qos<T>(qos, options_.classroom);
-    auto made = dds::Reader<T>::create(domain_.participant(), topics_.get<T>(), qos);
-    if (!made && secure()) return fail(not_permitted(TopicInfo<T>::name, "read", made.error()));
-    return made;
+    return endpoint<dds::Reader<T>, T>("read");
   }
 
   dds::WaitSet& waitset() { return *waitset_; }
@@ -76,6 +68,15 @@ class ClassroomLink {
   /// Counts a dropped sample and logs it, the first few and then one in a hundred.
   void malformed(const std::string& why);
   std::uint64_t malformed_count() const { return malformed_.load(std::memory_order_relaxed); }
+  /// A report with what the link knows: `role`, dropped samples, security and the participants it refused.
+  SyncReport report(SyncRole role) const {
+    SyncReport r;
+    r.role = role;
+    r.malformed = malformed_count();
+    r.secure = secure();
+    r.rejected = rejected_count();
+    return r;
+  }
   /// Joined with DDS Security (SyncOptions::security_dir).
   bool secure() const { return !options_.security_dir.empty(); }
   /// Participants that did not authenticate as stations of this classroom (0 in an open classroom).
@@ -83,6 +84,15 @@ class ClassroomLink {
 
  private:
   ClassroomLink(const SyncOptions& options, dds::Domain domain);
+  /// A writer or reader (E) of T with the topic's classroom QoS; `what` it does, for a refusal's line.
+  template <class E, class T>
+  Result<E> endpoint(const char* what) const {
+    dds::Qos qos;
+    classroom_qos<T>(qos, options_.classroom);
+    auto made = E::create(domain_.participant(), topics_.get<T>(), qos);
+    if (!made && secure()) return fail(not_permitted(TopicInfo<T>::name, what, made.error()));
+    return made;
+  }
   /// The one line for an endpoint a secure classroom's permissions refused.
   std::string not_permitted(const char* topic, const char* what, const std::string& cyclone) const;
 

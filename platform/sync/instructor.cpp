@@ -195,17 +195,13 @@ std::string Instructor::fatal_error() const {
 }
 
 SyncReport Instructor::report() const {
-  SyncReport r;
-  r.role = SyncRole::Instructor;
+  SyncReport r = link_->report(SyncRole::Instructor);
   r.state = SyncState::InSync;
   r.peers = peers_.load();
   r.peers_max = peers_max_.load();
   r.instructor = link_->name();
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
-  r.malformed = link_->malformed_count();
-  r.secure = link_->secure();
-  r.rejected = link_->rejected_count();
   std::lock_guard lock(fatal_mutex_);
   r.patient_orientation_wxyz = last_orientation_;
   return r;

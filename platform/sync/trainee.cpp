@@ -273,16 +273,12 @@ void Trainee::record(LogHistogram& values, double v) {
 }
 
 SyncReport Trainee::report() const {
-  SyncReport r;
-  r.role = SyncRole::Trainee;
+  SyncReport r = link_->report(SyncRole::Trainee);
   r.state = state();
   r.peers = peers_.load();
   r.peers_max = peers_max_.load();
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
-  r.malformed = link_->malformed_count();
-  r.secure = link_->secure();
-  r.rejected = link_->rejected_count();
   std::lock_guard lock(report_mutex_);
   r.instructor = instructor_;
   r.patient_orientation_wxyz = last_orientation_;

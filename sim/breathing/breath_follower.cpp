@@ -26,7 +26,10 @@ void BreathFollower::add(double t_s, double value) {
     last_value_ = value;
     return;
   }
-  if (t_s - last_t_ > p_.lost_after_s) breaths_at_return_ = breaths_;  // back after a loss: calibrate again
+  if (t_s - last_t_ > p_.lost_after_s) {  // back after a loss: calibrate again, and count an apnoea from now
+    breaths_at_return_ = breaths_;
+    returned_s_ = t_s;
+  }
   lo_ = std::min(lo_, value);
   hi_ = std::max(hi_, value);
   const double h = kHysteresis * (amplitudes_.count == 0 ? hi_ - lo_ : amplitude());
@@ -60,9 +63,24 @@ void BreathFollower::turn_found(bool trough, const Turn& t) {
   if (trough_count_ == 0) return;  // a peak before any trough: no breath to measure yet
   const double a = t.value - troughs_[trough_count_ - 1].value;
   if (!(a > 0)) return;
+  irregular_ = irregular(a, t.t_s);
+  irregular_breaths_ += irregular_ ? 1 : 0;
   amplitudes_.push(a);
   peak_times_.push(t.t_s);
   ++breaths_;
+}
+
+bool BreathFollower::irregular(double a, double t_s) const {
+  const double share = p_.irregular_share;
+  if (amplitudes_.count >= 3 && std::abs(a / amplitude() - 1.0) > share) return true;
+  const std::size_t n = peak_times_.count;
+  if (n < 3) return false;
+  std::array<double, kMaxMedianOf> periods{};
+  for (std::size_t i = 1; i < n; ++i) periods[i - 1] = peak_times_.v[i] - peak_times_.v[i - 1];
+  const auto mid = periods.begin() + static_cast<std::ptrdiff_t>((n - 1) / 2);
+  std::nth_element(periods.begin(), mid, periods.begin() + static_cast<std::ptrdiff_t>(n - 1));
+  const double period = t_s - peak_times_.v[n - 1];
+  return *mid > 0 && std::abs(period / *mid - 1.0) > share;
 }
 
 double BreathFollower::amplitude() const {
@@ -124,7 +142,13 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   out_t_ = t_s;
   used_value_ = last_value_;
   used_model_ = model_dv_ml;
-  return {out_ml_, state_, last_value_};
+  // Apnoea: the signal is there (not lost) and has made no breath for apnoea_s since the last one it made (or
+  // since it came back after a loss: what happened in the gap is not known).
+  const double last_breath_s = peak_times_.count > 0 ? peak_times_.v[peak_times_.count - 1] : 0.0;
+  const bool apnoea = !lost && breaths_ > 0 && t_s - std::max(last_breath_s, returned_s_) > p_.apnoea_s;
+  apnoeas_ += apnoea && !in_apnoea_ ? 1 : 0;
+  in_apnoea_ = apnoea;
+  return {out_ml_, state_, last_value_, apnoea, irregular_ && !apnoea};
 }
 
 }  // namespace lungar::sim

@@ -12,6 +12,10 @@
 /// - States: `model` (not yet calibrated, or handed over), `following`, `holding` (the signal stopped: dV moves
 ///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once two breaths of the
 ///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
+/// - Flags: `apnoea` while the signal is there but no breath has been found for apnoea_s (10 s, the clinical
+///   definition of an apnoea), once the follower has seen the patient breathe; `irregular` from a breath whose
+///   depth or period is off the median of the last ones by more than irregular_share (a sigh, a cough, a gasp)
+///   until the next breath.
 #pragma once
 
 #include <algorithm>
@@ -38,12 +42,16 @@ struct FollowerParams {
   double holding_s = 2.0;          ///< then `holding` this long before `model`
   int calibration_breaths = 2;     ///< breaths found before following
   int median_of = 5;               ///< breaths in the amplitude's median (at most kMaxMedianOf)
+  double apnoea_s = 10.0;          ///< no breath for this long, the signal present: apnoea
+  double irregular_share = 0.5;    ///< a breath's depth or period this far off the median (as a share): irregular
 };
 
 struct FollowerOutput {
   double dv_ml = 0;
   BreathState state = BreathState::model;
   double surrogate = 0;  ///< the last sample's value
+  bool apnoea = false;     ///< no breath for FollowerParams::apnoea_s while the signal is present
+  bool irregular = false;  ///< the last breath's depth or period was off the median
 };
 
 class BreathFollower {
@@ -63,6 +71,9 @@ class BreathFollower {
   /// The time of the last sample (s), for the sample's age.
   double last_sample_s() const { return last_t_; }
   int dropped() const { return dropped_; }
+  /// Breaths flagged irregular, and apnoeas begun, so far.
+  int irregular_breaths() const { return irregular_breaths_; }
+  int apnoeas() const { return apnoeas_; }
 
  private:
   struct Turn {
@@ -81,6 +92,8 @@ class BreathFollower {
     }
   };
   void turn_found(bool trough, const Turn& t);
+  /// Whether a breath of depth `a` peaking at `t_s` is off the last breaths' medians.
+  bool irregular(double a, double t_s) const;
   double amplitude() const;
   double baseline(double t_s) const;
 
@@ -94,6 +107,9 @@ class BreathFollower {
   Recent amplitudes_;              ///< peak minus the trough before it, the last median_of
   Recent peak_times_;              ///< the last kMaxMedianOf peaks' times
   int breaths_ = 0, dropped_ = 0;
+  bool irregular_ = false, in_apnoea_ = false;
+  int irregular_breaths_ = 0, apnoeas_ = 0;
+  double returned_s_ = 0;  ///< when the signal last came back after a loss
   int breaths_at_return_ = -1;    ///< breaths when the signal came back after a loss (-1: not lost)
   BreathState state_ = BreathState::model;
   double out_ml_ = 0, out_t_ = 0;

@@ -44,7 +44,15 @@ std::vector<TraceSample> project_marker(const std::vector<double>& t, const std:
 
 Result<BreathTrace> read_breath_trace(const std::string& path) {
   std::ifstream in(path);
-  if (!in) return fail(path + ": cannot open: expected a CSV trace (t_s,value or t_s,x_mm,y_mm,z_mm)");
+  const bool vxp = path.size() > 4 && (path.compare(path.size() - 4, 4, ".vxp") == 0 ||
+                                       path.compare(path.size() - 4, 4, ".VXP") == 0);
+  if (!in)
+    return fail(path + ": cannot open: expected " +
+                (vxp ? "a Varian RPM .vxp file" : "a CSV trace (t_s,value or t_s,x_mm,y_mm,z_mm)"));
+  return vxp ? parse_vxp_trace(in, path) : parse_csv_trace(in, path);
+}
+
+Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path) {
   std::string line;
   int line_no = 0;
   int columns = 0;

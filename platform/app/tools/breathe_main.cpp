@@ -82,7 +82,7 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
   fp.tidal_volume_ml = tidal_ml;
   sim::BreathFollower follower(fp);
   const double end = seconds.value_or(trace->samples.back().t_s);
-  std::printf("t_s,dv_ml,breath_state,surrogate,model_dv_ml\n");
+  std::printf("t_s,dv_ml,breath_state,surrogate,model_dv_ml,apnoea,irregular\n");
   std::size_t next = 0;
   const auto n = static_cast<long>(std::floor(end / dt + 1e-9));
   for (long k = 0; k <= n; ++k) {
@@ -91,8 +91,15 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
       follower.add(trace->samples[next].t_s, trace->samples[next].value);
     const double model = script.driver.at(t).dv_ml;
     const sim::FollowerOutput o = follower.at(t, model);
-    std::printf("%.4f,%.3f,%s,%.6g,%.3f\n", t, o.dv_ml, sim::kBreathStateNames.name(o.state), o.surrogate, model);
+    std::printf("%.4f,%.3f,%s,%.6g,%.3f,%d,%d\n", t, o.dv_ml, sim::kBreathStateNames.name(o.state), o.surrogate, model,
+                o.apnoea ? 1 : 0, o.irregular ? 1 : 0);
   }
+  // The summary on stderr, so that stdout stays one CSV.
+  std::fprintf(stderr,
+               "lungar-breathe: %s %s: %zu samples (%d flagged invalid, skipped), %d breaths found (the file marks %d "
+               "peaks), %.1f/min at the end, %d irregular, %d apnoeas\n",
+               trace->format.c_str(), trace_path.c_str(), trace->samples.size(), trace->invalid, follower.breaths(),
+               trace->peaks_marked, follower.rate_per_min(), follower.irregular_breaths(), follower.apnoeas());
   return 0;
 }
 
@@ -159,8 +166,9 @@ int main(int argc, char** argv) {
   app.add_option("--dt", dt, "time step of the series, s (default 0.01)")->check(CLI::Range(1e-4, 10.0));
   std::string breath;
   app.add_option("--breath", breath,
-                 "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker) "
-                 "and print t_s, dv_ml, breath_state (following | holding | model), surrogate, model_dv_ml");
+                 "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker; "
+                 "a Varian RPM .vxp) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
+                 "model_dv_ml, apnoea, irregular (0 | 1)");
   app.add_flag("--curves", curves, "print the three pressure-volume curves, V(P) from -5 to 40 cmH2O");
   app.add_flag("--presets", presets, "print each preset's parameters, FRC, TLC, compliance and pressure swing");
   app.add_flag("--exhale-path", exhale_path,

@@ -1,0 +1,117 @@
+/// @file breath_flags_test.cpp
+/// @brief The follower's flags on traces a trainer would recognise: quiet breathing flags nothing; a sigh (a breath
+///        two and a half times as deep) and a long pause are irregular for that breath alone; breath-holding that
+///        lasts 15 s is one apnoea, flagged from 10 s after the last breath; a signal lost for 15 s is no apnoea.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sim/breathing/breath_follower.h"
+
+namespace lungar::sim {
+namespace {
+
+/// Quiet breathing at 15/min (4 s, I:E 1:2), 10 units deep, sampled at 40 Hz; `depth(n)` scales breath n,
+/// `hold_from`..`hold_to` holds the chest still at end-exhale (signal present), `gap_from`..`gap_to` loses it.
+struct Script {
+  double seconds = 60;
+  std::vector<std::pair<int, double>> deeper;  ///< breath n, depth factor
+  double hold_from = -1, hold_to = -1, gap_from = -1, gap_to = -1, pause_after = -1;
+};
+
+struct Flags {
+  std::vector<double> t;
+  std::vector<FollowerOutput> out;
+  int irregular = 0, apnoeas = 0;
+};
+
+Flags run(const Script& s) {
+  BreathFollower f;
+  Flags r;
+  double start = 0;
+  int n = 0;
+  for (int k = 0; k * 0.025 <= s.seconds; ++k) {
+    const double t = k * 0.025;
+    double period = 4.0;
+    if (n == 9 && s.pause_after > 0) period = 4.0 + s.pause_after;  // breath 9 followed by a pause
+    while (t >= start + period) {
+      start += period;
+      ++n;
+      period = n == 9 && s.pause_after > 0 ? 4.0 + s.pause_after : 4.0;
+    }
+    double depth = 1.0;
+    for (const auto& [which, d] : s.deeper)
+      if (which == n) depth = d;
+    const double u = std::min((t - start) / 4.0, 1.0);
+    double v = 10.0 * depth * (u < 1.0 / 3 ? 0.5 - 0.5 * std::cos(3 * M_PI * u) : std::exp(-6.0 * (u - 1.0 / 3)));
+    if (t >= s.hold_from && t < s.hold_to) v = 0.0;
+    if (!(t >= s.gap_from && t < s.gap_to)) f.add(t, v);
+    r.t.push_back(t);
+    r.out.push_back(f.at(t, 0.0));
+  }
+  r.irregular = f.irregular_breaths();
+  r.apnoeas = f.apnoeas();
+  return r;
+}
+
+int flagged(const Flags& f, bool FollowerOutput::*flag) {
+  int n = 0;
+  for (const FollowerOutput& o : f.out) n += o.*flag ? 1 : 0;
+  return n;
+}
+
+TEST(BreathFlags, QuietBreathingFlagsNothing) {
+  const Flags f = run({});
+  EXPECT_EQ(f.irregular, 0);
+  EXPECT_EQ(f.apnoeas, 0);
+  EXPECT_EQ(flagged(f, &FollowerOutput::apnoea), 0);
+}
+
+TEST(BreathFlags, ASighIsIrregularForThatBreathOnly) {
+  Script s;
+  s.deeper = {{8, 2.5}};
+  const Flags f = run(s);
+  EXPECT_EQ(f.irregular, 1);
+  // Flagged from the sigh's peak (breath 8 peaks at 8 * 4 + 4/3 s) until the next breath's peak, 4 s later.
+  double first = -1, last = -1;
+  for (std::size_t i = 0; i < f.t.size(); ++i) {
+    if (!f.out[i].irregular) continue;
+    if (first < 0) first = f.t[i];
+    last = f.t[i];
+  }
+  EXPECT_NEAR(first, 8 * 4 + 4.0 / 3, 0.6);
+  EXPECT_NEAR(last - first, 4.0, 0.6);
+  EXPECT_EQ(run({}).irregular, 0) << "the same trace without the sigh";
+}
+
+TEST(BreathFlags, APauseBetweenBreathsIsIrregular) {
+  Script s;
+  s.pause_after = 4.0;  // one 8-s breath: twice the median period
+  EXPECT_EQ(run(s).irregular, 1);
+}
+
+TEST(BreathFlags, HoldingTheBreathFifteenSecondsIsOneApnoeaFromTenSecondsOn) {
+  Script s;
+  s.hold_from = 30.0;  // end of breath 7; its peak was at 28 + 4/3 s
+  s.hold_to = 45.0;
+  const Flags f = run(s);
+  EXPECT_EQ(f.apnoeas, 1);
+  double first = -1;
+  for (std::size_t i = 0; i < f.t.size() && first < 0; ++i)
+    if (f.out[i].apnoea) first = f.t[i];
+  EXPECT_NEAR(first, 28 + 4.0 / 3 + 10.0, 0.1) << "10 s after the last breath's peak";
+  EXPECT_FALSE(f.out.back().apnoea) << "breathing again";
+}
+
+TEST(BreathFlags, ALostSignalIsNoApnoea) {
+  Script s;
+  s.gap_from = 30.0;
+  s.gap_to = 45.0;
+  const Flags f = run(s);
+  EXPECT_EQ(f.apnoeas, 0);
+  EXPECT_EQ(flagged(f, &FollowerOutput::apnoea), 0);
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -84,9 +84,10 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
   const std::string days = std::to_string(o.days);
   const std::string ca_cert = (ca / "ca_cert.pem").string(), ca_key = (ca / "ca_key.pem").string();
   if (o.ca_dir.empty()) {
-    if (Status s = openssl(o, {"req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
-                               "-keyout", ca_key, "-out", ca_cert, "-days", days, "-subj",
-                               "/O=lungar/OU=" + o.classroom + "/CN=" + o.classroom + " authority"},
+    if (Status s = openssl(o,
+                           {"req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
+                            "-keyout", ca_key, "-out", ca_cert, "-days", days, "-subj",
+                            "/O=lungar/OU=" + o.classroom + "/CN=" + o.classroom + " authority"},
                            dir);
         !s)
       return s.with_context("the classroom's authority: ");
@@ -99,7 +100,8 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
   }
   fs::permissions(ca_key, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
   const auto now = std::chrono::system_clock::now();
-  const std::string not_before = utc(now - std::chrono::hours(1)), not_after = utc(now + std::chrono::hours(24 * o.days));
+  const std::string not_before = utc(now - std::chrono::hours(1)),
+                    not_after = utc(now + std::chrono::hours(24 * o.days));
   if (Status s = write_file_atomically((dir / "governance.xml").string(), classroom_governance_xml()); !s)
     return s.with_context("");
   if (Status s = write_file_atomically((dir / "permissions.xml").string(),
@@ -107,8 +109,9 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
       !s)
     return s.with_context("");
   for (const char* doc : {"governance", "permissions"}) {
-    if (Status s = openssl(o, {"smime", "-sign", "-text", "-in", (dir / (std::string(doc) + ".xml")).string(), "-out",
-                               (dir / (std::string(doc) + ".p7s")).string(), "-signer", ca_cert, "-inkey", ca_key},
+    if (Status s = openssl(o,
+                           {"smime", "-sign", "-text", "-in", (dir / (std::string(doc) + ".xml")).string(), "-out",
+                            (dir / (std::string(doc) + ".p7s")).string(), "-signer", ca_cert, "-inkey", ca_key},
                            dir);
         !s)
       return s.with_context(std::string("the ") + doc + " document: ");
@@ -119,15 +122,16 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
     const fs::path s = dir / station;
     fs::create_directories(s);
     const std::string key = (s / "identity_key.pem").string(), csr = (s / "identity.csr").string();
-    if (Status r = openssl(o, {"req", "-new", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
-                               "-keyout", key, "-out", csr, "-subj",
-                               "/O=lungar/OU=" + o.classroom + "/CN=" + station},
+    if (Status r = openssl(o,
+                           {"req", "-new", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes",
+                            "-keyout", key, "-out", csr, "-subj", "/O=lungar/OU=" + o.classroom + "/CN=" + station},
                            dir);
         !r)
       return r.with_context("station " + station + ": ");
     fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
-    if (Status r = openssl(o, {"x509", "-req", "-in", csr, "-CA", ca_cert, "-CAkey", ca_key, "-set_serial",
-                               std::to_string(rng() >> 2), "-days", days, "-out", (s / "identity_cert.pem").string()},
+    if (Status r = openssl(o,
+                           {"x509", "-req", "-in", csr, "-CA", ca_cert, "-CAkey", ca_key, "-set_serial",
+                            std::to_string(rng() >> 2), "-days", days, "-out", (s / "identity_cert.pem").string()},
                            dir);
         !r)
       return r.with_context("station " + station + ": ");
@@ -153,7 +157,8 @@ Result<std::string> revoke_classroom_stations(const ClassroomRevokeOptions& give
   const fs::path ca(given.ca_dir);
   const std::string ca_cert = (ca / "ca_cert.pem").string(), ca_key = (ca / "ca_key.pem").string();
   for (const std::string& f : {ca_cert, ca_key})
-    if (!fs::exists(f)) return fail("--ca " + given.ca_dir + ": expected " + fs::path(f).filename().string() + " there");
+    if (!fs::exists(f))
+      return fail("--ca " + given.ca_dir + ": expected " + fs::path(f).filename().string() + " there");
   if (given.certs.empty()) return fail("--cert: expected at least one station's identity_cert.pem");
   for (const std::string& c : given.certs) {
     if (!fs::exists(c)) return fail("--cert " + c + ": no such file (a station's identity_cert.pem)");
@@ -183,9 +188,8 @@ Result<std::string> revoke_classroom_stations(const ClassroomRevokeOptions& give
       return restore("--cert " + c + ": " + r.error());
   }
   const std::string crl_new = (ca / "crl.pem.new").string();
-  if (Status g = openssl(o, {"ca", "-config", cnf.string(), "-keyfile", ca_key, "-cert", ca_cert, "-gencrl", "-out",
-                             crl_new},
-                         ca);
+  if (Status g = openssl(
+          o, {"ca", "-config", cnf.string(), "-keyfile", ca_key, "-cert", ca_cert, "-gencrl", "-out", crl_new}, ca);
       !g)
     return restore("the revocation list: " + g.error());
   fs::rename(crl_new, ca / "crl.pem", ec);
@@ -198,8 +202,8 @@ Result<std::string> revoke_classroom_stations(const ClassroomRevokeOptions& give
 
 std::vector<std::string> topics_published_by(bool instructor) {
   if (instructor)
-    return {"lungar_station", "lungar_patient_pose", "lungar_breathing_state", "lungar_scenario_events",
-            "lungar_heartbeat", "lungar_time_reply"};
+    return {"lungar_station",         "lungar_patient_pose", "lungar_breathing_state",
+            "lungar_scenario_events", "lungar_heartbeat",    "lungar_time_reply"};
   return {"lungar_station", "lungar_time_request"};
 }
 
@@ -237,7 +241,8 @@ std::string classroom_permissions_xml(const ClassroomKeysOptions& o, const std::
                                       const std::string& not_after) {
   const std::string instructor = o.instructor.empty() && !o.stations.empty() ? o.stations.front() : o.instructor;
   std::string x = R"(<?xml version="1.0" encoding="UTF-8"?>
-<!-- Written by `lungar classroom-keys`: who may publish what in classroom ")" + o.classroom + R"(". -->
+<!-- Written by `lungar classroom-keys`: who may publish what in classroom ")" +
+                  o.classroom + R"(". -->
 <dds xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
      xsi:noNamespaceSchemaLocation="http://www.omg.org/spec/DDS-SECURITY/20170901/omg_shared_ca_permissions.xsd">
   <permissions>
@@ -245,10 +250,12 @@ std::string classroom_permissions_xml(const ClassroomKeysOptions& o, const std::
   for (const std::string& station : o.stations) {
     x += "    <grant name=\"" + o.classroom + "." + station + "\">\n";
     x += "      <subject_name>" + subject_of(o.classroom, station) + "</subject_name>\n";
-    x += "      <validity><not_before>" + not_before + "</not_before><not_after>" + not_after + "</not_after></validity>\n";
+    x += "      <validity><not_before>" + not_before + "</not_before><not_after>" + not_after +
+         "</not_after></validity>\n";
     x += "      <allow_rule>\n        <domains><id_range><min>0</min><max>230</max></id_range></domains>\n";
     x += "        <publish>\n          <topics>\n";
-    for (const std::string& t : topics_published_by(station == instructor)) x += "            <topic>" + t + "</topic>\n";
+    for (const std::string& t : topics_published_by(station == instructor))
+      x += "            <topic>" + t + "</topic>\n";
     x += "          </topics>\n          <partitions><partition>" + o.classroom + "</partition></partitions>\n";
     x += "        </publish>\n        <subscribe>\n          <topics><topic>lungar_*</topic></topics>\n";
     x += "          <partitions><partition>" + o.classroom + "</partition></partitions>\n        </subscribe>\n";
@@ -268,7 +275,8 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
     if (!seen.insert(s).second) return fail("--station: \"" + s + "\" given twice");
   }
   if (o.instructor.empty()) o.instructor = o.stations.front();
-  if (!seen.count(o.instructor)) return fail("--instructor: expected one of the --station names, got \"" + o.instructor + "\"");
+  if (!seen.count(o.instructor))
+    return fail("--instructor: expected one of the --station names, got \"" + o.instructor + "\"");
   if (o.days < 1 || o.days > 3650) return fail("--days: expected 1 to 3650, got " + std::to_string(o.days));
   if (!o.ca_dir.empty()) {
     for (const char* f : {"ca_cert.pem", "ca_key.pem"})

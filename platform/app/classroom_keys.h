@@ -34,8 +34,8 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
 
 /// `lungar classroom-revoke`: the authority withdraws a station's identity (a lost or stolen HMD PC).
 struct ClassroomRevokeOptions {
-  std::string ca_dir;               ///< the authority's folder (DIR/ca of classroom-keys): its list of revoked grows
-  std::vector<std::string> certs;   ///< identity_cert.pem of each station to revoke
+  std::string ca_dir;              ///< the authority's folder (DIR/ca of classroom-keys): its list of revoked grows
+  std::vector<std::string> certs;  ///< identity_cert.pem of each station to revoke
   std::string openssl = "openssl";
 };
 

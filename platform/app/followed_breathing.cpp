@@ -34,7 +34,8 @@ sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
   state_ = o.state;
   if (o.apnoea && !apnoea_) {  // rare: one line when it starts, for the trainer
     char line[128];
-    std::snprintf(line, sizeof line, "breath: apnoea: no breath for %.0f s at t = %.1f s", sim::FollowerParams{}.apnoea_s, t);
+    std::snprintf(line, sizeof line, "breath: apnoea: no breath for %.0f s at t = %.1f s",
+                  sim::FollowerParams{}.apnoea_s, t);
     log_line("lungar", line);
   }
   apnoea_ = o.apnoea;

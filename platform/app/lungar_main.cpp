@@ -75,9 +75,10 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   display->add_option("--report-json", m.display.report_json, "each eye's reprojection error, centre, intrinsics");
 
   lungar::platform::ClassroomKeysOptions& k = m.keys;
-  CLI::App* keys = m.keys_app = app.add_subcommand(
-      "classroom-keys", "make a secure classroom's authority, each station's identity and the signed DDS Security "
-                        "governance and permissions (with Debian's openssl)");
+  CLI::App* keys = m.keys_app =
+      app.add_subcommand("classroom-keys",
+                         "make a secure classroom's authority, each station's identity and the signed DDS Security "
+                         "governance and permissions (with Debian's openssl)");
   keys->add_option("--classroom", k.classroom, "the classroom's name (its DDS partition)")->required();
   keys->add_option("--station", k.stations, "a station's name, repeatable: one folder each")
       ->required()

@@ -41,8 +41,8 @@ ClassroomLink::ClassroomLink(const SyncOptions& options, dds::Domain domain)
 Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& options, std::uint8_t wire_role) {
   if (options.classroom.empty() || options.classroom.size() > 63 ||
       options.classroom.find_first_of("*?[]\\") != std::string::npos) {
-    return fail("sync.classroom: expected a name of 1 to 63 characters without * ? [ ] \\, got \"" +
-                options.classroom + "\"");
+    return fail("sync.classroom: expected a name of 1 to 63 characters without * ? [ ] \\, got \"" + options.classroom +
+                "\"");
   }
   // A secure station's folder is named after it (DIR/STATION/ of classroom-keys): that name, unless told another.
   const std::string name = !options.station.empty()        ? options.station
@@ -85,10 +85,11 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
     auto refused = RefusedPeers::create(p, options.refuse_after_ns);
     if (!refused) return fail("sync: " + refused.error());
     link->refused_ = refused.take();
-    link->log("sync: classroom \"" + options.classroom + "\" is secure: DDS Security with " +
-              options.security_dir + " (authenticated, access-controlled, encrypted)");
+    link->log("sync: classroom \"" + options.classroom + "\" is secure: DDS Security with " + options.security_dir +
+              " (authenticated, access-controlled, encrypted)");
   } else {
-    link->log("sync: classroom \"" + options.classroom + "\" is open: any DDS participant on this network can join "
+    link->log("sync: classroom \"" + options.classroom +
+              "\" is open: any DDS participant on this network can join "
               "it and publish to it (--sync-security DIR closes it; see lungar classroom-keys)");
   }
   if (Status a = link->waitset_->attach_reader(link->station_reader_->get()); !a) return fail("sync: " + a.error());
@@ -159,9 +160,11 @@ void ClassroomLink::log(const std::string& line) const {
 
 std::string ClassroomLink::not_permitted(const char* topic, const char* what, const std::string& cyclone) const {
   return "sync.security " + options_.security_dir + ": station \"" + name_ + "\" may not " + what + " " + topic +
-         " in classroom \"" + options_.classroom + "\": its permissions.p7s does not allow it (only the instructor's "
+         " in classroom \"" + options_.classroom +
+         "\": its permissions.p7s does not allow it (only the instructor's "
          "allow the shared patient, breath and scenario, and each station's only the classroom its keys were made "
-         "for; " + cyclone + ")";
+         "for; " +
+         cyclone + ")";
 }
 
 void ClassroomLink::malformed(const std::string& why) {

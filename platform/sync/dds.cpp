@@ -40,7 +40,8 @@ void log_sink(void*, const dds_log_data_t* data) {
   while (!line.empty() && (line.back() == '\n' || line.back() == ' ')) line.pop_back();
   std::lock_guard lock(g_log.mutex);
   if (error && g_log.capturing && g_log.first.empty()) g_log.first = line;
-  if (!error && about_security(line) && g_log.complaints_seen.size() < 256 && g_log.complaints_seen.insert(line).second) {
+  if (!error && about_security(line) && g_log.complaints_seen.size() < 256 &&
+      g_log.complaints_seen.insert(line).second) {
     g_log.complaints_new.push_back(line);
   }
 }
@@ -65,9 +66,7 @@ std::vector<std::string> take_security_complaints() {
   return taken;
 }
 
-std::string describe(const char* call, dds_return_t rc) {
-  return std::string(call) + ": " + dds_strretcode(rc);
-}
+std::string describe(const char* call, dds_return_t rc) { return std::string(call) + ": " + dds_strretcode(rc); }
 
 void Entity::reset() {
   if (handle_ > 0) dds_delete(handle_);
@@ -107,12 +106,14 @@ Result<Domain> Domain::create(std::uint32_t domain_id, const std::string& config
     d.domain_ = Entity(domain);
   }
   capture_errors(true);
-  auto participant = own("dds_create_participant",
-                         dds_create_participant(domain_id, participant_qos ? participant_qos->get() : nullptr, nullptr));
+  auto participant =
+      own("dds_create_participant",
+          dds_create_participant(domain_id, participant_qos ? participant_qos->get() : nullptr, nullptr));
   capture_errors(false);
   if (!participant) {
     const std::string complaint = captured_error();
-    if (participant_qos != nullptr && !complaint.empty()) return fail("DDS Security refused this station (" + complaint + ")");
+    if (participant_qos != nullptr && !complaint.empty())
+      return fail("DDS Security refused this station (" + complaint + ")");
     return fail(config_path + ": " + participant.error() + (complaint.empty() ? "" : " (" + complaint + ")"));
   }
   d.participant_ = participant.take();

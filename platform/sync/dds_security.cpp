@@ -21,11 +21,11 @@ Result<SecurityFiles> find_security_files(const std::string& dir) {
   SecurityFiles f;
   f.dir = fs::absolute(dir, ec).lexically_normal().string();
   const std::array<std::pair<const char*, std::string*>, 6> files{{{"identity_ca.pem", &f.identity_ca},
-                                                                  {"identity_cert.pem", &f.identity_cert},
-                                                                  {"identity_key.pem", &f.identity_key},
-                                                                  {"permissions_ca.pem", &f.permissions_ca},
-                                                                  {"governance.p7s", &f.governance},
-                                                                  {"permissions.p7s", &f.permissions}}};
+                                                                   {"identity_cert.pem", &f.identity_cert},
+                                                                   {"identity_key.pem", &f.identity_key},
+                                                                   {"permissions_ca.pem", &f.permissions_ca},
+                                                                   {"governance.p7s", &f.governance},
+                                                                   {"permissions.p7s", &f.permissions}}};
   for (const auto& [name, path] : files) {
     *path = (fs::path(f.dir) / name).string();
     if (::access(path->c_str(), R_OK) != 0) {
@@ -36,10 +36,12 @@ Result<SecurityFiles> find_security_files(const std::string& dir) {
     if (::access(crl.c_str(), R_OK) != 0) return fail(where + ": crl.pem is there but not readable");
     f.crl = crl.string();
   }
-  struct stat st{};
+  struct stat st {};
   if (::stat(f.identity_key.c_str(), &st) == 0 && (st.st_mode & (S_IRWXG | S_IRWXO)) != 0) {
-    return fail(where + ": identity_key.pem is readable by others than its owner; expected mode 0600 "
-                "(chmod 600 " + f.identity_key + ")");
+    return fail(where +
+                ": identity_key.pem is readable by others than its owner; expected mode 0600 "
+                "(chmod 600 " +
+                f.identity_key + ")");
   }
   return f;
 }
@@ -48,8 +50,10 @@ std::string security_plugin_dir() { return LUNGAR_DDS_SECURITY_DIR; }
 
 Status add_security_properties(const SecurityFiles& f, std::uint32_t domain, dds::Qos& qos) {
   if (domain > 230) {
-    return fail("sync.domain: a secure classroom needs a DDS domain id in [0, 230] (what a governance document "
-                "can name), got " + std::to_string(domain));
+    return fail(
+        "sync.domain: a secure classroom needs a DDS domain id in [0, 230] (what a governance document "
+        "can name), got " +
+        std::to_string(domain));
   }
   const std::string plugins = security_plugin_dir();
   for (const char* lib : {"libdds_security_auth.so", "libdds_security_ac.so", "libdds_security_crypto.so"}) {

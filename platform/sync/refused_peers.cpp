@@ -20,8 +20,8 @@ bool same_participant(const dds_guid_t& a, const dds_guid_t& b) { return std::me
 
 std::string guid_text(const dds_guid_t& g) {
   char text[40];
-  std::snprintf(text, sizeof text, "%02x%02x%02x%02x:%02x%02x%02x%02x:%02x%02x%02x%02x", g.v[0], g.v[1], g.v[2],
-                g.v[3], g.v[4], g.v[5], g.v[6], g.v[7], g.v[8], g.v[9], g.v[10], g.v[11]);
+  std::snprintf(text, sizeof text, "%02x%02x%02x%02x:%02x%02x%02x%02x:%02x%02x%02x%02x", g.v[0], g.v[1], g.v[2], g.v[3],
+                g.v[4], g.v[5], g.v[6], g.v[7], g.v[8], g.v[9], g.v[10], g.v[11]);
   return text;
 }
 
@@ -32,7 +32,8 @@ Result<std::unique_ptr<RefusedPeers>> RefusedPeers::create(dds_entity_t particip
                          dds_create_reader(participant, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr));
   if (!reader) return Error{reader.error()};
   r.reader_ = reader.take();
-  if (const dds_return_t rc = dds_get_guid(participant, &r.self_); rc < 0) return fail(dds::describe("dds_get_guid", rc));
+  if (const dds_return_t rc = dds_get_guid(participant, &r.self_); rc < 0)
+    return fail(dds::describe("dds_get_guid", rc));
   r.grace_ns_ = grace_ns;
   return made;
 }
@@ -70,7 +71,8 @@ void RefusedPeers::poll(dds_entity_t station_reader, std::int64_t now_ns,
                         const std::function<void(const std::string&)>& log) {
   take_discovered(now_ns);
   mark_joined(station_reader);
-  for (const std::string& complaint : dds::take_security_complaints()) log("sync: DDS Security refused a peer: " + complaint);
+  for (const std::string& complaint : dds::take_security_complaints())
+    log("sync: DDS Security refused a peer: " + complaint);
   std::uint64_t refused = 0;
   for (Heard& h : heard_) {
     if (h.joined && h.refused) {

@@ -86,7 +86,8 @@ bool BreathFollower::irregular(double a, double t_s) const {
 double BreathFollower::amplitude() const {
   std::array<double, kMaxMedianOf> a = amplitudes_.v;
   const std::size_t n = amplitudes_.count;
-  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n / 2), a.begin() + static_cast<std::ptrdiff_t>(n));
+  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(n / 2),
+                   a.begin() + static_cast<std::ptrdiff_t>(n));
   return a[n / 2];
 }
 
@@ -135,7 +136,8 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   } else {
     double limit = kHandoverMlPerS * std::max(0.0, t_s - out_t_);
     if (caught_up_ && following == was_following)
-      limit = std::max(limit, following ? std::abs(k * (last_value_ - used_value_)) : std::abs(model_dv_ml - used_model_));
+      limit =
+          std::max(limit, following ? std::abs(k * (last_value_ - used_value_)) : std::abs(model_dv_ml - used_model_));
     out_ml_ += std::clamp(target - out_ml_, -limit, limit);
   }
   caught_up_ = std::abs(target - out_ml_) < 1e-9;

@@ -27,9 +27,8 @@
 namespace lungar::sim {
 
 enum class BreathState { model, following, holding };
-inline constexpr EnumNames<BreathState, 3> kBreathStateNames{{{{BreathState::model, "model"},
-                                                                {BreathState::following, "following"},
-                                                                {BreathState::holding, "holding"}}}};
+inline constexpr EnumNames<BreathState, 3> kBreathStateNames{
+    {{{BreathState::model, "model"}, {BreathState::following, "following"}, {BreathState::holding, "holding"}}}};
 
 /// How fast dV may move when the source changes (lost, returned): 5 mL per 10 ms step.
 inline constexpr double kHandoverMlPerS = 500.0;
@@ -49,7 +48,7 @@ struct FollowerParams {
 struct FollowerOutput {
   double dv_ml = 0;
   BreathState state = BreathState::model;
-  double surrogate = 0;  ///< the last sample's value
+  double surrogate = 0;    ///< the last sample's value
   bool apnoea = false;     ///< no breath for FollowerParams::apnoea_s while the signal is present
   bool irregular = false;  ///< the last breath's depth or period was off the median
 };
@@ -100,17 +99,17 @@ class BreathFollower {
   FollowerParams p_;
   bool any_ = false, rising_ = true;
   double last_t_ = 0, last_value_ = 0;
-  Turn extreme_{0, 0};            ///< the candidate turn: the highest point while rising, lowest while falling
-  double lo_ = 0, hi_ = 0;        ///< the range seen before the first amplitude
+  Turn extreme_{0, 0};             ///< the candidate turn: the highest point while rising, lowest while falling
+  double lo_ = 0, hi_ = 0;         ///< the range seen before the first amplitude
   std::array<Turn, 2> troughs_{};  ///< the last two, oldest first
   std::size_t trough_count_ = 0;
-  Recent amplitudes_;              ///< peak minus the trough before it, the last median_of
-  Recent peak_times_;              ///< the last kMaxMedianOf peaks' times
+  Recent amplitudes_;  ///< peak minus the trough before it, the last median_of
+  Recent peak_times_;  ///< the last kMaxMedianOf peaks' times
   int breaths_ = 0, dropped_ = 0;
   bool irregular_ = false, in_apnoea_ = false;
   int irregular_breaths_ = 0, apnoeas_ = 0;
-  double returned_s_ = 0;  ///< when the signal last came back after a loss
-  int breaths_at_return_ = -1;    ///< breaths when the signal came back after a loss (-1: not lost)
+  double returned_s_ = 0;       ///< when the signal last came back after a loss
+  int breaths_at_return_ = -1;  ///< breaths when the signal came back after a loss (-1: not lost)
   BreathState state_ = BreathState::model;
   double out_ml_ = 0, out_t_ = 0;
   double used_value_ = 0, used_model_ = 0;  ///< the surrogate and the model's dV at the last at()

@@ -68,8 +68,10 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
           if (c == "mark") mark = i;
         }
         if (amplitude < 0 || timestamp < 0)
-          return at("Data_layout: expected columns amplitude and timestamp (RPM 1.6: "
-                    "amplitude,phase,timestamp,validflag,ttlin,mark,ttlout), got '" + header["Data_layout"] + "'");
+          return at(
+              "Data_layout: expected columns amplitude and timestamp (RPM 1.6: "
+              "amplitude,phase,timestamp,validflag,ttlin,mark,ttlout), got '" +
+              header["Data_layout"] + "'");
         part = Part::data;
         continue;
       }
@@ -80,10 +82,11 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
     }
     const std::vector<std::string> cells = split(line);
     if (cells.size() != layout.size())
-      return at("expected " + std::to_string(layout.size()) + " columns (" + header["Data_layout"] + "), got '" +
-                line + "'");
+      return at("expected " + std::to_string(layout.size()) + " columns (" + header["Data_layout"] + "), got '" + line +
+                "'");
     double amp = 0, ms = 0, valid = 0;
-    if (!number(cells[static_cast<std::size_t>(amplitude)], amp)) return at("amplitude: expected a number, got '" + line + "'");
+    if (!number(cells[static_cast<std::size_t>(amplitude)], amp))
+      return at("amplitude: expected a number, got '" + line + "'");
     if (!number(cells[static_cast<std::size_t>(timestamp)], ms))
       return at("timestamp: expected a number of milliseconds, got '" + line + "'");
     if (validflag >= 0 && !number(cells[static_cast<std::size_t>(validflag)], valid))
@@ -93,8 +96,10 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
       if (!m.empty() && m != "P" && m != "Z") return at("mark: expected P, Z or nothing, got '" + m + "'");
       out.peaks_marked += m == "P" ? 1 : 0;
     }
-    if (out.samples.empty() && out.invalid == 0) t0_ms = last_ms = ms;
-    else if (!(ms > last_ms)) return at("timestamp: expected times that increase, got '" + line + "'");
+    if (out.samples.empty() && out.invalid == 0)
+      t0_ms = last_ms = ms;
+    else if (!(ms > last_ms))
+      return at("timestamp: expected times that increase, got '" + line + "'");
     last_ms = ms;
     if (valid < 0) {
       ++out.invalid;
@@ -102,8 +107,9 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
     }
     out.samples.push_back({(ms - t0_ms) / 1000.0, amp});
   }
-  if (part != Part::data) return fail(path + ": expected a [Header] and a [Data] section, got " +
-                                      (part == Part::start ? std::string("neither") : std::string("no [Data]")));
+  if (part != Part::data)
+    return fail(path + ": expected a [Header] and a [Data] section, got " +
+                (part == Part::start ? std::string("neither") : std::string("no [Data]")));
   if (out.samples.size() < 2)
     return fail(path + ": expected at least two valid samples, got " + std::to_string(out.samples.size()) + " (" +
                 std::to_string(out.invalid) + " flagged invalid)");

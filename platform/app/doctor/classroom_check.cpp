@@ -16,7 +16,8 @@ Check check_classroom(const Settings& s) {
                   "--sync-security)");
   }
   auto files = sync::find_security_files(y.security);
-  if (!files) return failed("sync", files.error(), "run lungar classroom-keys again, or copy the station's whole folder");
+  if (!files)
+    return failed("sync", files.error(), "run lungar classroom-keys again, or copy the station's whole folder");
   dds::Qos qos;
   if (Status p = sync::add_security_properties(*files, static_cast<std::uint32_t>(y.domain), qos); !p) {
     return failed("sync", p.error(), "install libddsc0debian, or choose sync.domain in [0, 230]");

@@ -44,10 +44,16 @@ class SecureClassroom : public lungar::testing::StationsTest {
   /// A station named `name` in this test's classroom; `keys` its folder ("" : an open station).
   std::unique_ptr<StationProcess> start(const std::string& name, const std::string& role, double seconds,
                                         const std::string& keys) {
-    std::vector<std::string> a = {"--config", kConfig, "--asset", kAsset, "--sync", role, "--station", name,
-                                  "--classroom", room, "--sync-domain", domain, "--seconds", std::to_string(seconds),
-                                  "--tracker", "mock", "--stats-json", (dir / (name + ".json")).string(),
-                                  "--snapshot", (dir / (name + ".png")).string()};
+    std::vector<std::string> a = {"--config",      kConfig,
+                                  "--asset",       kAsset,
+                                  "--sync",        role,
+                                  "--station",     name,
+                                  "--classroom",   room,
+                                  "--sync-domain", domain,
+                                  "--seconds",     std::to_string(seconds),
+                                  "--tracker",     "mock",
+                                  "--stats-json",  (dir / (name + ".json")).string(),
+                                  "--snapshot",    (dir / (name + ".png")).string()};
     if (!keys.empty()) a.insert(a.end(), {"--sync-security", (dir / keys).string()});
     return std::make_unique<StationProcess>(kLungar, a, dir / name);
   }
@@ -84,9 +90,10 @@ TEST_F(SecureClassroom, TheInstructorAndTraineeMeetWhileIntrudersGainNoPeerAndAr
   EXPECT_NE(log.find("is secure: DDS Security with"), std::string::npos) << log;
   // The failed handshake is logged by the side that answered it (DDS orders the two by their GUIDs): instr names
   // evil's certificate, or evil names instr's.
-  const bool named = log.find("refused a peer: Begin handshake reply failed: Certificate not valid") != std::string::npos
-                         ? log.find("CN=evil") != std::string::npos
-                         : evil->err().find("CN=instr") != std::string::npos;
+  const bool named =
+      log.find("refused a peer: Begin handshake reply failed: Certificate not valid") != std::string::npos
+          ? log.find("CN=evil") != std::string::npos
+          : evil->err().find("CN=instr") != std::string::npos;
   EXPECT_TRUE(named) << "instr:\n" << log << "\nevil:\n" << evil->err();
   EXPECT_NE(log.find("refused DDS participant"), std::string::npos) << log;
   // The intruders' own view: neither ever had a peer, so neither could teach our trainee anything.

@@ -29,7 +29,11 @@ std::string rpm_file(int* peaks = nullptr) {
     const bool peak = i % 120 == 60, trough = i % 120 == 0;
     marked += peak ? 1 : 0;
     o << amp << "," << 2 * M_PI * u << "," << 1000 * 1000 + i * 100 / 3 << "," << (i >= 300 && i < 315 ? -1 : 0)
-      << ",0," << (peak ? "P" : trough ? "Z" : "") << ",0\r\n";
+      << ",0,"
+      << (peak     ? "P"
+          : trough ? "Z"
+                   : "")
+      << ",0\r\n";
   }
   if (peaks) *peaks = marked;
   return o.str();
@@ -74,7 +78,8 @@ TEST(VxpTrace, EachWrongFileIsOneLineNamingWhatWasExpected) {
       {"t_s,value\n0,1\n", "rpm.vxp:1: expected a Varian RPM file starting with [Header]"},
       {replaced("Samples_per_second=30", "Samples_per_second=0"), ": Samples_per_second: expected a positive number"},
       {replaced("Scale_factor=10.0", "Scale_factor=ten"), ": Scale_factor: expected a positive number"},
-      {replaced("Data_layout=amplitude,phase,timestamp", "Data_layout=amp,phase,time"), ": Data_layout: expected columns amplitude and timestamp"},
+      {replaced("Data_layout=amplitude,phase,timestamp", "Data_layout=amp,phase,time"),
+       ": Data_layout: expected columns amplitude and timestamp"},
       {replaced("Gating_mode=amplitude", "Gating mode amplitude"), "rpm.vxp:12: expected Key=Value"},
       {replaced(",0,P,0", ",0,Q,0"), ": mark: expected P, Z or nothing, got 'Q'"},
       {replaced("1000000,0,0,Z,0", "1000000,0,0,Z"), "rpm.vxp:14: expected 7 columns"},

@@ -15,6 +15,7 @@
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_serve.h"
 #include "drivers/mock/mock_reports.h"
+#include "drivers/plus/plus_sequence_writer.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
@@ -126,6 +127,31 @@ int dump(const std::string& file, const std::string& format, const std::string& 
   return 0;
 }
 
+/// The log as a PLUS sequence (3D Slicer opens it): its OpenIGTLink records decoded with the names of its header's
+/// [trackers], the others with its report layout.
+int to_plus(const std::string& file, const std::string& out) {
+  auto r = load_trk(file);
+  if (!r) return die(r.error());
+  TrackerConfig trackers;
+  if (!r->header.layout_toml.empty()) {
+    auto recorded = tracker_config_from_toml(r->header.layout_toml, file + " (header layout)");
+    if (!recorded) return die(recorded.error());
+    trackers = *recorded;
+  }
+  auto igtl = make_igtl_layout(trackers);
+  if (!igtl) return die(file + ": " + igtl.error());
+  const IgtlLayout layout = *igtl;
+  int skipped = 0;
+  auto seq = plus_from_trk(
+      *r, file, {{TrkSource::Igtl, [layout](std::span<const std::uint8_t> m) { return decode_igtl_message(m, layout); }}},
+      skipped);
+  if (!seq) return die(seq.error());
+  if (Status w = write_plus_sequence(out, *seq); !w) return die(w.error());
+  std::printf("%s: %zu frames from %zu records (%d malformed, left out)\n", out.c_str(), seq->frames.size(),
+              r->records.size(), skipped);
+  return 0;
+}
+
 int cut(const std::string& file, const std::string& out, double from_s, double to_s) {
   auto r = load_trk(file);
   if (!r) return die(r.error());
@@ -200,7 +226,7 @@ int serve(const ServeIgtlOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"lungar-trk: inspect, dump, cut and synthesise .trk tracker logs; serve OpenIGTLink poses"};
+  CLI::App app{"lungar-trk: inspect, dump, cut, convert and synthesise .trk tracker logs; serve OpenIGTLink poses"};
   app.set_version_flag("--version", std::string("lungar-trk ") + LUNGAR_VERSION);
   app.require_subcommand(1);
   std::string file, out, format = "csv", config_path, trajectory = "upright_to_supine";
@@ -217,6 +243,9 @@ int main(int argc, char** argv) {
   cut_cmd->add_option("out", out, "new .trk log")->required();
   cut_cmd->add_option("--from", from_s, "start, seconds from the first record");
   cut_cmd->add_option("--to", to_s, "end (exclusive), seconds from the first record");
+  auto* plus_cmd = app.add_subcommand("to-plus", "convert a log to a PLUS sequence (.igs.mha) that 3D Slicer opens");
+  plus_cmd->add_option("file", file, ".trk log")->required();
+  plus_cmd->add_option("out", out, "new .igs.mha")->required();
   auto* synth_cmd = app.add_subcommand("synth", "write a log of a mock trajectory through a report layout");
   synth_cmd->add_option("out", out, "new .trk log")->required();
   synth_cmd->add_option("--config", config_path, "config TOML whose [trackers] layout to use (default: built-in)");
@@ -245,6 +274,7 @@ int main(int argc, char** argv) {
   if (info_cmd->parsed()) return info(file);
   if (dump_cmd->parsed()) return dump(file, format, config_path);
   if (cut_cmd->parsed()) return cut(file, out, from_s, to_s);
+  if (plus_cmd->parsed()) return to_plus(file, out);
   if (serve_cmd->parsed()) return serve(serve_opts);
   return synth(out, config_path, trajectory, seconds, rate_hz, noise_mm, dropout);
 }

@@ -12,6 +12,7 @@
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
 #include "platform/app/open_output.h"
+#include "platform/app/plus_recording.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
@@ -59,7 +60,7 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
   drivers::TrackerOptions topts;
-  topts.record_path = o.record_path;
+  topts.record_path = tracker_record_path(o.record_path);
   topts.log = [](const std::string& line) { log_line(line); };
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
@@ -184,7 +185,14 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   log_limit(o, limit_s);
   const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
   if (!frames) log_line("error: " + frames.error());
-  return write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
+  int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
+  if (tracker_record_path(o.record_path) != o.record_path) {
+    runtime->reset();  // the tracker closes its log first
+    auto plus = finish_plus_recording(o.record_path, s.trackers);
+    log_line(plus ? *plus : "error: " + plus.error());
+    if (!plus) exit_code = 1;
+  }
+  return exit_code;
 }
 
 }  // namespace lungar::platform

@@ -104,7 +104,8 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default $XDG_STATE_HOME/lungar/snapshot.png)");
   app.add_option("--stats-json", o.stats_json_path, "stats JSON (default $XDG_STATE_HOME/lungar/stats.json)");
   app.add_option("--record", o.record_path,
-                 "record the raw tracker reports into FILE.trk (no FILE: into $XDG_STATE_HOME/lungar/recordings/)")
+                 "record the raw tracker reports into FILE.trk, or the poses as a PLUS sequence FILE.igs.mha (3D "
+                 "Slicer opens it) (no FILE: a .trk in $XDG_STATE_HOME/lungar/recordings/)")
       ->expected(0, 1);
   app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
       ->check(CLI::IsMember(names_of(sync::kSyncRoleNames)));

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "drivers/igtl/igtl_messages.h"
+#include "drivers/plus/plus_sequence.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
@@ -134,4 +135,20 @@ TEST(TrkTool, ServeIgtlStopsAfterItsSecondsAndBadOptionsAreOneLine) {
   r = run("serve-igtl --address 300.1.2.3 --port 0");
   EXPECT_EQ(r.rc, 1);
   EXPECT_EQ(r.out, "lungar-trk: 300.1.2.3:0: expected an IPv4 address and a port in [0, 65535]\n");
+}
+
+TEST(TrkTool, ToPlusWritesASequenceOfEveryRecordAndRefusesAMissingLog) {
+  const fs::path trk = dir() / "synth.trk", mha = dir() / "synth.igs.mha";
+  ASSERT_EQ(run("synth " + trk.string() + " --seconds 2").rc, 0);
+  const auto log = lungar::drivers::load_trk(trk.string());
+  ASSERT_TRUE(log) << log.error();
+  const ToolRun converted = run("to-plus " + trk.string() + " " + mha.string());
+  ASSERT_EQ(converted.rc, 0) << converted.out;
+  const auto seq = lungar::drivers::read_plus_sequence(mha.string());
+  ASSERT_TRUE(seq) << seq.error();
+  EXPECT_EQ(seq->frames.size(), log->records.size());
+  EXPECT_NE(converted.out.find(std::to_string(log->records.size()) + " frames"), std::string::npos) << converted.out;
+  const ToolRun missing = run("to-plus " + (dir() / "none.trk").string() + " " + (dir() / "none.igs.mha").string());
+  EXPECT_EQ(missing.rc, 1) << missing.out;
+  EXPECT_FALSE(fs::exists(dir() / "none.igs.mha"));
 }

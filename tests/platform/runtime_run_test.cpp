@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drivers/plus/plus_sequence.h"
 #include "platform/app/run.h"
 
 using namespace lungar;
@@ -183,6 +184,30 @@ TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
   EXPECT_LT(j["frames"].get<int>(), 100000);
   EXPECT_EQ(j["tracker_reports"], 750);  // every record of the log
   EXPECT_EQ(j["tracker_malformed"], 0);
+}
+
+// --record FILE.igs.mha: the replayed log's 750 reports come out as a PLUS sequence of as many frames (the .trk it
+// was recorded through is gone), which replays as a tracker.
+TEST_F(RuntimeRun, ARecordingAsAPlusSequenceHoldsEveryReportAndReplays) {
+  std::filesystem::create_directories(dir);
+  const std::string recording = (dir / "session.igs.mha").string();
+  settings.trackers.source = drivers::TrackerSource::Replay;
+  settings.trackers.replay_file = kData + "upright_to_supine.trk";
+  settings.trackers.replay_realtime = false;
+  options.frames = 100000;
+  options.seconds = 60.0;
+  options.record_path = recording;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_FALSE(std::filesystem::exists(recording + ".trk"));
+  auto seq = drivers::read_plus_sequence(recording);
+  ASSERT_TRUE(seq) << seq.error();
+  EXPECT_EQ(seq->frames.size(), 750u);
+  ASSERT_NE(seq->frames.back().find("Reference"), nullptr);
+  options.record_path.clear();
+  settings.trackers.replay_file = recording;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["tracker_malformed"], 0);
+  EXPECT_GT(stats()["tracker_reports"].get<int>(), 750);  // a report per valid tool in each frame
 }
 
 TEST_F(RuntimeRun, CpuEq7MonoMeshRuns) {

@@ -16,9 +16,9 @@
 
 namespace lungar::drivers {
 
-/// Which role a PLUS tool feeds, PLUS's own naming: Reference (the marker on the patient) the patient, Stylus or
-/// StylusTip the stylus, HMD or Head the head; none for another tool (not applied).
-std::optional<Role> plus_tool_role(const std::string& tool);
+/// Which role a PLUS tool feeds by `names` ([trackers.plus]; PLUS's own by default: Reference, the marker on the
+/// patient, the patient; Stylus or StylusTip the stylus; HMD or Head the head); none for another tool (not applied).
+std::optional<Role> plus_tool_role(const std::string& tool, const PlusConfig& names = {});
 
 struct PlusReplay {
   TrkLog log;              ///< OpenIGTLink records, one per valid transform of a role, frame by frame

@@ -34,13 +34,16 @@ std::string matrix_text(const Eigen::Matrix4d& m) {
 
 }  // namespace
 
-const char* plus_tool_of(Role role) {
+const std::string& plus_tool_of(Role role, const PlusConfig& names) {
   switch (role) {
-    case Role::Patient: return "Reference";
-    case Role::Stylus: return "Stylus";
-    case Role::Head: break;
+    case Role::Patient:
+      return names.patient;
+    case Role::Stylus:
+      return names.stylus;
+    case Role::Head:
+      break;
   }
-  return "HMD";
+  return names.head;
 }
 
 std::string plus_sequence_text(const PlusSequence& seq) {
@@ -81,8 +84,8 @@ Status write_plus_sequence(const std::string& path, const PlusSequence& seq) {
   return write_file_atomically(path, plus_sequence_text(seq));
 }
 
-Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, const std::vector<RecordDecoder>& decoders,
-                                   int& skipped) {
+Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path,
+                                   const std::vector<RecordDecoder>& decoders, const PlusConfig& names, int& skipped) {
   TrackerConfig trackers;
   if (!log.header.layout_toml.empty()) {
     auto recorded = tracker_config_from_toml(log.header.layout_toml, path + " (header layout)");
@@ -124,7 +127,7 @@ Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, c
       const Latest& l = latest[static_cast<std::size_t>(role)];
       if (!l.seen) continue;
       PlusTransform t;
-      t.tool = plus_tool_of(role);
+      t.tool = plus_tool_of(role, names);
       t.frame = "Tracker";
       t.matrix = l.matrix;
       t.valid = f.timestamp_s - l.t_s <= kFreshS;
@@ -132,8 +135,8 @@ Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, c
     }
     seq.frames.push_back(std::move(f));
   }
-  if (seq.frames.empty()) return fail(path + ": expected records with poses, got none (" + std::to_string(skipped) +
-                                      " did not decode)");
+  if (seq.frames.empty())
+    return fail(path + ": expected records with poses, got none (" + std::to_string(skipped) + " did not decode)");
   return seq;
 }
 

@@ -144,7 +144,7 @@ int to_plus(const std::string& file, const std::string& out) {
   int skipped = 0;
   auto seq = plus_from_trk(
       *r, file, {{TrkSource::Igtl, [layout](std::span<const std::uint8_t> m) { return decode_igtl_message(m, layout); }}},
-      skipped);
+      trackers.plus, skipped);
   if (!seq) return die(seq.error());
   if (Status w = write_plus_sequence(out, *seq); !w) return die(w.error());
   std::printf("%s: %zu frames from %zu records (%d malformed, left out)\n", out.c_str(), seq->frames.size(),

@@ -83,6 +83,17 @@ struct IgtlConfig {
   bool operator==(const IgtlConfig&) const = default;
 };
 
+/// [trackers.plus]: the PLUS sequence tool that feeds each role (`<Tool>To<Frame>Transform`), read by a replayed or
+/// calibrating `.igs.mha` and written by `--record FILE.igs.mha`. PLUS's own names by default; at the defaults
+/// `StylusTip` also reads as the stylus and `Head` as the head.
+struct PlusConfig {
+  std::string head = "HMD";
+  std::string patient = "Reference";
+  std::string stylus = "Stylus";
+
+  bool operator==(const PlusConfig&) const = default;
+};
+
 /// One sensor inside a report; the role it feeds is the key it sits under ([trackers.head], ...).
 struct SensorConfig {
   bool enabled = false;
@@ -143,6 +154,7 @@ struct TrackerConfig {
   std::array<double, 3> world_offset_mm = {0.0, 0.0, 0.0};  ///< tracker origin in the world, mm
   HidConfig hid;
   IgtlConfig igtl;
+  PlusConfig plus;
   ReportConfig report;
   SensorConfig head{true, 1, 6, {}};
   SensorConfig patient{true, 2, 6, {}};

@@ -56,8 +56,8 @@ inline std::optional<std::vector<std::uint8_t>> parse_hex_bytes(std::string_view
     if (text.substr(pos, 2) == "0x" || text.substr(pos, 2) == "0X") pos += 2;
     int digits = 0, value = 0;
     for (; pos < text.size() && std::isxdigit(static_cast<unsigned char>(text[pos])); ++pos, ++digits) {
-      value = value * 16 + (std::isdigit(static_cast<unsigned char>(text[pos])) ? text[pos] - '0'
-                                                                                : (text[pos] | 0x20) - 'a' + 10);
+      value = value * 16 +
+              (std::isdigit(static_cast<unsigned char>(text[pos])) ? text[pos] - '0' : (text[pos] | 0x20) - 'a' + 10);
     }
     if (digits < 1 || digits > 2 || (pos < text.size() && text[pos] != ' ' && text[pos] != ',')) return std::nullopt;
     out.push_back(static_cast<std::uint8_t>(value));
@@ -120,8 +120,8 @@ inline void check_workspace(config::TomlSection& s, const TrackerConfig& t) {
   for (int k = 0; k < 3; ++k) {
     if (!(t.workspace_min_mm[k] < t.workspace_max_mm[k])) {
       s.fail("workspace_max_mm", "expected every component above workspace_min_mm's, got " +
-                                     std::to_string(t.workspace_max_mm[k]) + " <= " +
-                                     std::to_string(t.workspace_min_mm[k]) + " at index " + std::to_string(k));
+                                     std::to_string(t.workspace_max_mm[k]) +
+                                     " <= " + std::to_string(t.workspace_min_mm[k]) + " at index " + std::to_string(k));
     }
   }
 }
@@ -129,8 +129,7 @@ inline void check_workspace(config::TomlSection& s, const TrackerConfig& t) {
 /// The report's own checks: the Euler sequence, and the station byte and the time inside the report.
 inline void check_report(config::TomlSection& s, const ReportConfig& r) {
   if (r.euler_sequence.size() != 3 ||
-      !parse_signed_axes(std::string{r.euler_sequence[0], ',', r.euler_sequence[1], ',', r.euler_sequence[2]},
-                         "xyz")) {
+      !parse_signed_axes(std::string{r.euler_sequence[0], ',', r.euler_sequence[1], ',', r.euler_sequence[2]}, "xyz")) {
     s.fail("euler_sequence",
            "expected three distinct axes among x, y, z (e.g. \"zyx\"), got \"" + r.euler_sequence + "\"");
   }
@@ -190,8 +189,8 @@ void visit(Io& s, HidConfig& h) {
     for (std::size_t k = 0; k < reports.size(); ++k) {
       auto bytes = tracker_toml::parse_hex_bytes(reports[k]);
       if (!bytes) {
-        s.fail("init_feature_reports", "expected hex bytes, report id first (e.g. \"0x02 0x01\"), got \"" +
-                                           reports[k] + "\" at index " + std::to_string(k));
+        s.fail("init_feature_reports", "expected hex bytes, report id first (e.g. \"0x02 0x01\"), got \"" + reports[k] +
+                                           "\" at index " + std::to_string(k));
       }
       parsed.push_back(std::move(*bytes));
     }
@@ -226,6 +225,33 @@ void visit(Io& s, IgtlConfig& g) {
   s.number("scale", g.scale, 1e-6, 1e6, "mm per unit");
   s.number("rigid_tolerance", g.rigid_tolerance, 1e-7, 0.5, "");
   s.number("connect_timeout_ms", g.connect_timeout_ms, 10.0, 60000.0, "ms");
+  s.finish();
+}
+
+/// [trackers.plus].
+template <class Io>
+void visit(Io& s, PlusConfig& p) {
+  const std::pair<const char*, std::string*> names[] = {
+      {"head", &p.head}, {"patient", &p.patient}, {"stylus", &p.stylus}};
+  for (const auto& [key, name] : names) {
+    s.text(key, *name);
+    if constexpr (tracker_toml::kReads<Io>) {
+      // The tool is what comes before "To" in <Tool>To<Frame>Transform; OpenIGTLink carries <Tool>To<Frame> in 20.
+      if (name->empty() || name->size() > 17 || name->find("To") != std::string::npos ||
+          name->find_first_of(" =") != std::string::npos) {
+        s.fail(key,
+               "expected a PLUS tool name of 1 to 17 characters without \"To\", spaces or '=' (such as "
+               "\"Reference\"), got \"" +
+                   *name + "\"");
+      }
+    }
+  }
+  if constexpr (tracker_toml::kReads<Io>) {
+    if (p.head == p.patient || p.head == p.stylus || p.patient == p.stylus) {
+      s.fail("patient", "expected a different tool for each of head, patient and stylus, got \"" + p.head + "\", \"" +
+                            p.patient + "\", \"" + p.stylus + "\"");
+    }
+  }
   s.finish();
 }
 
@@ -302,6 +328,8 @@ void visit(Io& s, TrackerConfig& t) {
   visit(hid, t.hid);
   Io igtl = s.section("igtl");
   visit(igtl, t.igtl);
+  Io plus = s.section("plus");
+  visit(plus, t.plus);
   Io report = s.section("report");
   visit(report, t.report);
   const std::pair<const char*, SensorConfig*> roles[] = {

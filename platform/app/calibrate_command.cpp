@@ -8,6 +8,7 @@
 #include "platform/app/settings_load.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
+#include "drivers/plus/plus_replay.h"
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
@@ -51,14 +52,19 @@ Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::str
   if (!config) return config.with_context("");
   StylusLog out;
   if (*config) out.tip_offset_mm = tip_of(**config);
+  const drivers::PlusConfig names = *config ? (*config)->plus : drivers::PlusConfig{};
+  const auto tool_of = [&](const drivers::PlusFrame& f, drivers::Role role) -> const drivers::PlusTransform* {
+    for (const drivers::PlusTransform& t : f.transforms)
+      if (drivers::plus_tool_role(t.tool, names) == role) return &t;
+    return nullptr;
+  };
   const double t0 = seq->frames.empty() ? 0.0 : seq->frames.front().timestamp_s;
   for (const drivers::PlusFrame& f : seq->frames) {
-    const drivers::PlusTransform* stylus = f.find("Stylus");
-    if (!stylus) stylus = f.find("StylusTip");
+    const drivers::PlusTransform* stylus = tool_of(f, drivers::Role::Stylus);
     if (!stylus || !stylus->valid) continue;
     Eigen::Matrix4d in_patient = stylus->matrix;
-    if (stylus->frame != "Reference") {
-      const drivers::PlusTransform* reference = f.find("Reference");
+    if (stylus->frame != names.patient) {
+      const drivers::PlusTransform* reference = tool_of(f, drivers::Role::Patient);
       if (!reference || !reference->valid || reference->frame != stylus->frame) continue;
       in_patient = reference->matrix.inverse() * stylus->matrix;
     }
@@ -66,8 +72,9 @@ Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::str
     out.poses.push_back(Eigen::Isometry3d(in_patient));
   }
   if (out.poses.empty()) {
-    return fail(path + ": expected frames with a valid Stylus transform relative to the Reference (or to the "
-                       "tracker beside a valid Reference), got none");
+    return fail(path + ": expected frames with a valid " + names.stylus + " transform relative to the " +
+                names.patient + " (or to the tracker beside a valid " + names.patient +
+                "), got none ([trackers.plus] names the tools)");
   }
   return out;
 }

@@ -25,9 +25,10 @@ Result<std::string> finish_plus_recording(const std::string& record_path, const 
   std::vector<drivers::RecordDecoder> decoders{
       {drivers::TrkSource::Igtl, [layout](std::span<const std::uint8_t> m) { return decode_igtl_message(m, layout); }}};
   int skipped = 0;
-  auto seq = drivers::plus_from_trk(*log, trk, decoders, skipped);
+  auto seq = drivers::plus_from_trk(*log, trk, decoders, trackers.plus, skipped);
   if (!seq) return fail("recording: " + seq.error() + "; " + trk + " kept");
-  if (Status w = drivers::write_plus_sequence(record_path, *seq); !w) return fail("recording: " + w.error() + "; " + trk + " kept");
+  if (Status w = drivers::write_plus_sequence(record_path, *seq); !w)
+    return fail("recording: " + w.error() + "; " + trk + " kept");
   std::error_code ec;
   std::filesystem::remove(trk, ec);
   std::set<std::string> tools;

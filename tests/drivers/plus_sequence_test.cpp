@@ -140,5 +140,28 @@ TEST(PlusSequence, ReplaysAsATrackerSkippingInvalidFramesWithNoMalformedOnes) {
   EXPECT_NE(none.error().find("expected transforms of Reference"), std::string::npos) << none.error();
 }
 
+// [trackers.plus] renames the tools: a phantom's marker called "Phantom" and a pointer called "Pointer" feed the
+// patient and the stylus; with PLUS's names they feed nothing.
+TEST(PlusSequence, TheToolsNamedInTrackersPlusFeedTheirRoles) {
+  std::string renamed = sequence_text();
+  for (const auto& [from, to] : {std::pair<const char*, const char*>{"Reference", "Phantom"}, {"Stylus", "Pointer"}}) {
+    for (std::size_t at = renamed.find(from); at != std::string::npos; at = renamed.find(from))
+      renamed.replace(at, std::strlen(from), to);
+  }
+  TempFile f(renamed);
+  auto seq = read_plus_sequence(f.path.string());
+  ASSERT_TRUE(seq) << seq.error();
+  TrackerConfig t;
+  EXPECT_FALSE(plus_replay(*seq, t, "renamed.igs.mha")) << "PLUS's own names find neither tool";
+  t.plus.patient = "Phantom";
+  t.plus.stylus = "Pointer";
+  auto replay = plus_replay(*seq, t, "renamed.igs.mha");
+  ASSERT_TRUE(replay) << replay.error();
+  EXPECT_NE(replay->describe.find("Phantom -> patient"), std::string::npos) << replay->describe;
+  EXPECT_NE(replay->describe.find("Pointer -> stylus"), std::string::npos) << replay->describe;
+  EXPECT_EQ(plus_tool_role("StylusTip", t.plus), std::nullopt) << "PLUS's alias only at PLUS's names";
+  EXPECT_EQ(plus_tool_role("StylusTip"), Role::Stylus);
+}
+
 }  // namespace
 }  // namespace lungar::drivers

@@ -36,7 +36,8 @@ TEST(PlusSequenceWriter, WhatItWritesReadsBackFrameForFrame) {
     if (f != 2) frame.transforms.push_back({"Stylus", "Tracker", f != 1, pose(0.2 * f, 10.0 * f, -5.5, 40.25)});
     seq.frames.push_back(frame);
   }
-  const auto path = std::filesystem::temp_directory_path() / ("lungar_plus_writer_" + std::to_string(::getpid()) + ".igs.mha");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("lungar_plus_writer_" + std::to_string(::getpid()) + ".igs.mha");
   ASSERT_TRUE(write_plus_sequence(path.string(), seq));
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), {});
@@ -70,7 +71,7 @@ TEST(PlusSequenceWriter, ARecordedLogBecomesOneFramePerRecordWithEachToolsNewest
   auto log = load_trk(testing::tracker_data("upright_to_supine.trk"));
   ASSERT_TRUE(log) << log.error();
   int skipped = -1;
-  auto seq = plus_from_trk(*log, "upright_to_supine.trk", {}, skipped);
+  auto seq = plus_from_trk(*log, "upright_to_supine.trk", {}, PlusConfig{}, skipped);
   ASSERT_TRUE(seq) << seq.error();
   EXPECT_EQ(seq->frames.size() + static_cast<std::size_t>(skipped), log->records.size());
   // The last frame holds, for the patient, the pose of the last record that carried one.
@@ -116,7 +117,7 @@ TEST(PlusSequenceWriter, AToolSilentForMoreThanATenthOfASecondIsInvalid) {
   ASSERT_EQ(two.records.size(), 2u);
   two.records[1].t_arrival_ns = two.records[0].t_arrival_ns + 500'000'000;
   int skipped = 0;
-  auto seq = plus_from_trk(two, "two.trk", {}, skipped);
+  auto seq = plus_from_trk(two, "two.trk", {}, PlusConfig{}, skipped);
   ASSERT_TRUE(seq) << seq.error();
   ASSERT_EQ(seq->frames.size(), 2u);
   const std::set<std::string> now = tools_of(two.records[1]);

@@ -91,6 +91,7 @@ TrackerConfig every_key_changed() {
   t.world_offset_mm = {1.5, -2.5, 1e-9};
   t.hid = {0x1532, 0x0b00, "SN\x01\xc3\xbc", "/dev/hidraw3", 20.5, {{0x02, 0x01}, {0x00, 0xff, 0x10}}};
   t.igtl = {"tracker.local", 1, "H", "", "StylusTip12345678901", 1000.0, 2e-7, 10.0};
+  t.plus = {"Headset", "Phantom", "Pointer"};
   ReportConfig& r = t.report;
   r.report_id = -1;
   r.length = 64;
@@ -185,6 +186,13 @@ TEST(TrackerConfigToml, ReadingChecksAcrossKeys) {
             "x:3: key 'trackers.report.position_frac_bits': expected at most 0 fractional bits for a i16 field, got 4");
   EXPECT_EQ(tracker_config_from_toml("[trackers]\nsource = \"replay\"\n", "x").error(),
             "x:1: key 'trackers.replay_file': expected a .trk file when source = \"replay\", got nothing");
+  EXPECT_EQ(tracker_config_from_toml("[trackers.plus]\npatient = \"HMD\"\n", "x").error(),
+            "x:2: key 'trackers.plus.patient': expected a different tool for each of head, patient and stylus, got "
+            "\"HMD\", \"HMD\", \"Stylus\"");
+  EXPECT_NE(tracker_config_from_toml("[trackers.plus]\nstylus = \"StylusToTracker\"\n", "x")
+                .error()
+                .find("x:2: key 'trackers.plus.stylus': expected a PLUS tool name of 1 to 17 characters without \"To\""),
+            std::string::npos);
   // Tables other than [trackers] belong to others (a whole config file may be given).
   auto whole = tracker_config_from_toml("[display]\noutput = \"window\"\n[trackers]\nstale_ms = 50.0\n", "x");
   ASSERT_TRUE(whole) << whole.error();

@@ -26,6 +26,73 @@ bool number(const std::string& text, double& out) {
   return !text.empty() && *end == '\0' && std::isfinite(out);
 }
 
+/// Where the columns lungar reads sit in each data row, from the header's Data_layout.
+struct VxpColumns {
+  std::string layout;
+  std::size_t count = 0;
+  int amplitude = -1, timestamp = -1, validflag = -1, mark = -1;
+};
+
+/// The header's checks at [Data]: the rate and scale positive, the layout naming amplitude and timestamp.
+Result<VxpColumns> vxp_columns(std::map<std::string, std::string>& header, BreathTrace& out) {
+  const auto positive = [&](const char* key, double& v) {
+    return header.count(key) && number(header[key], v) && v > 0;
+  };
+  double scale = 0;
+  if (!positive("Samples_per_second", out.samples_per_second))
+    return fail("Samples_per_second: expected a positive number in the header, got '" + header["Samples_per_second"] +
+                "'");
+  if (!positive("Scale_factor", scale))
+    return fail("Scale_factor: expected a positive number in the header, got '" + header["Scale_factor"] + "'");
+  VxpColumns c;
+  c.layout = header["Data_layout"];
+  const std::vector<std::string> names = split(c.layout);
+  c.count = names.size();
+  for (int i = 0; i < static_cast<int>(names.size()); ++i) {
+    const std::string& name = names[static_cast<std::size_t>(i)];
+    if (name == "amplitude") c.amplitude = i;
+    if (name == "timestamp") c.timestamp = i;
+    if (name == "validflag") c.validflag = i;
+    if (name == "mark") c.mark = i;
+  }
+  if (c.amplitude < 0 || c.timestamp < 0)
+    return fail(
+        "Data_layout: expected columns amplitude and timestamp (RPM 1.6: "
+        "amplitude,phase,timestamp,validflag,ttlin,mark,ttlout), got '" +
+        c.layout + "'");
+  return c;
+}
+
+/// One data row into `out`: its sample, or its invalid flag counted; `last_ms` the previous row's timestamp.
+Status vxp_row(const std::string& line, const VxpColumns& c, BreathTrace& out, double& t0_ms, double& last_ms) {
+  const std::vector<std::string> cells = split(line);
+  if (cells.size() != c.count)
+    return fail("expected " + std::to_string(c.count) + " columns (" + c.layout + "), got '" + line + "'");
+  const auto cell = [&](int i) -> const std::string& { return cells[static_cast<std::size_t>(i)]; };
+  double amp = 0, ms = 0, valid = 0;
+  if (!number(cell(c.amplitude), amp)) return fail("amplitude: expected a number, got '" + line + "'");
+  if (!number(cell(c.timestamp), ms)) return fail("timestamp: expected a number of milliseconds, got '" + line + "'");
+  if (c.validflag >= 0 && !number(cell(c.validflag), valid))
+    return fail("validflag: expected a number, got '" + line + "'");
+  if (c.mark >= 0) {
+    const std::string& m = cell(c.mark);
+    if (!m.empty() && m != "P" && m != "Z") return fail("mark: expected P, Z or nothing, got '" + m + "'");
+    out.peaks_marked += m == "P" ? 1 : 0;
+  }
+  if (out.samples.empty() && out.invalid == 0) {
+    t0_ms = last_ms = ms;
+  } else if (!(ms > last_ms)) {
+    return fail("timestamp: expected times that increase, got '" + line + "'");
+  }
+  last_ms = ms;
+  if (valid < 0) {
+    ++out.invalid;  // RPM lost the marker block: skipped, never followed
+    return ok();
+  }
+  out.samples.push_back({(ms - t0_ms) / 1000.0, amp});
+  return ok();
+}
+
 }  // namespace
 
 Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
@@ -34,8 +101,7 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
   const auto at = [&](const std::string& why) { return fail(path + ":" + std::to_string(line_no) + ": " + why); };
   enum class Part { start, header, data } part = Part::start;
   std::map<std::string, std::string> header;
-  std::vector<std::string> layout;
-  int amplitude = -1, timestamp = -1, validflag = -1, mark = -1;
+  VxpColumns columns;
   BreathTrace out;
   out.format = "vxp";
   double t0_ms = 0, last_ms = 0;
@@ -46,66 +112,18 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
     if (part == Part::start) {
       if (line != "[Header]") return at("expected a Varian RPM file starting with [Header], got '" + line + "'");
       part = Part::header;
-      continue;
-    }
-    if (part == Part::header) {
-      if (line == "[Data]") {
-        const auto positive = [&](const char* key, double& v) {
-          return header.count(key) && number(header[key], v) && v > 0;
-        };
-        double scale = 0;
-        if (!positive("Samples_per_second", out.samples_per_second))
-          return at("Samples_per_second: expected a positive number in the header, got '" +
-                    header["Samples_per_second"] + "'");
-        if (!positive("Scale_factor", scale))
-          return at("Scale_factor: expected a positive number in the header, got '" + header["Scale_factor"] + "'");
-        layout = split(header["Data_layout"]);
-        for (int i = 0; i < static_cast<int>(layout.size()); ++i) {
-          const std::string& c = layout[static_cast<std::size_t>(i)];
-          if (c == "amplitude") amplitude = i;
-          if (c == "timestamp") timestamp = i;
-          if (c == "validflag") validflag = i;
-          if (c == "mark") mark = i;
-        }
-        if (amplitude < 0 || timestamp < 0)
-          return at(
-              "Data_layout: expected columns amplitude and timestamp (RPM 1.6: "
-              "amplitude,phase,timestamp,validflag,ttlin,mark,ttlout), got '" +
-              header["Data_layout"] + "'");
-        part = Part::data;
-        continue;
-      }
+    } else if (part == Part::header && line == "[Data]") {
+      auto c = vxp_columns(header, out);
+      if (!c) return at(c.error());
+      columns = *c;
+      part = Part::data;
+    } else if (part == Part::header) {
       const auto eq = line.find('=');
       if (eq == std::string::npos) return at("expected Key=Value in the header or [Data], got '" + line + "'");
       header[line.substr(0, eq)] = line.substr(eq + 1);
-      continue;
+    } else if (Status row = vxp_row(line, columns, out, t0_ms, last_ms); !row) {
+      return at(row.error());
     }
-    const std::vector<std::string> cells = split(line);
-    if (cells.size() != layout.size())
-      return at("expected " + std::to_string(layout.size()) + " columns (" + header["Data_layout"] + "), got '" + line +
-                "'");
-    double amp = 0, ms = 0, valid = 0;
-    if (!number(cells[static_cast<std::size_t>(amplitude)], amp))
-      return at("amplitude: expected a number, got '" + line + "'");
-    if (!number(cells[static_cast<std::size_t>(timestamp)], ms))
-      return at("timestamp: expected a number of milliseconds, got '" + line + "'");
-    if (validflag >= 0 && !number(cells[static_cast<std::size_t>(validflag)], valid))
-      return at("validflag: expected a number, got '" + line + "'");
-    if (mark >= 0) {
-      const std::string& m = cells[static_cast<std::size_t>(mark)];
-      if (!m.empty() && m != "P" && m != "Z") return at("mark: expected P, Z or nothing, got '" + m + "'");
-      out.peaks_marked += m == "P" ? 1 : 0;
-    }
-    if (out.samples.empty() && out.invalid == 0)
-      t0_ms = last_ms = ms;
-    else if (!(ms > last_ms))
-      return at("timestamp: expected times that increase, got '" + line + "'");
-    last_ms = ms;
-    if (valid < 0) {
-      ++out.invalid;
-      continue;
-    }
-    out.samples.push_back({(ms - t0_ms) / 1000.0, amp});
   }
   if (part != Part::data)
     return fail(path + ": expected a [Header] and a [Data] section, got " +

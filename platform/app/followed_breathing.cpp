@@ -16,6 +16,9 @@ FollowedBreathing::FollowedBreathing(sim::BreathTrace trace, std::string path,
     : trace_(std::move(trace)), path_(std::move(path)), model_(std::move(model)), t0_ns_(t0_ns) {
   sim::FollowerParams p;
   p.tidal_volume_ml = model_->start.tidal_volume_ml;
+  // Each frame's sample age is measured (the frame's time against the newest sample's); beyond it, the frame
+  // reaches the eye about one refresh of a 60 Hz HMD later.
+  p.predict_s = kFrameToPhotonsS;
   follower_ = sim::BreathFollower(p);
 }
 

@@ -16,6 +16,9 @@
 
 namespace lungar::platform {
 
+/// The display's share of the delay a followed breath is predicted over: one refresh at 60 Hz.
+inline constexpr double kFrameToPhotonsS = 1.0 / 60.0;
+
 class FollowedBreathing final : public BreathingClock {
  public:
   FollowedBreathing(sim::BreathTrace trace, std::string path, std::shared_ptr<const sim::BreathingScript> model,

@@ -52,6 +52,31 @@ void BreathFollower::add(double t_s, double value) {
   }
   last_t_ = t_s;
   last_value_ = value;
+  newest_[newest_next_] = {t_s, value};
+  newest_next_ = (newest_next_ + 1) % newest_.size();
+  newest_count_ = std::min(newest_count_ + 1, newest_.size());
+}
+
+double BreathFollower::predicted(double t_s) const {
+  // Least squares slope over the samples of the last kSlopeWindowS: noise averages out, a turn bends it little.
+  double st = 0, sv = 0, stt = 0, stv = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < newest_count_; ++i) {
+    const Turn& s = newest_[(newest_next_ + newest_.size() - 1 - i) % newest_.size()];
+    if (last_t_ - s.t_s > kSlopeWindowS) break;
+    const double t = s.t_s - last_t_;
+    st += t, sv += s.value, stt += t * t, stv += t * s.value;
+    ++n;
+  }
+  const double det = n * stt - st * st;
+  if (n < 3 || !(det > 0)) return last_value_;
+  const double slope = (n * stv - st * sv) / det;
+  const double ahead = std::clamp(t_s - last_t_, 0.0, kMaxPredictS);
+  // Within the breath: no deeper than the deepest of the last breaths, no lower than the end-exhale level, so that
+  // the turn at a peak or a trough, where a straight line overshoots, stays where the breaths turned.
+  const double deepest = *std::max_element(amplitudes_.v.begin(), amplitudes_.v.begin() + amplitudes_.count);
+  const double base = baseline(last_t_), top = base + deepest;
+  return std::clamp(last_value_ + slope * ahead, std::min(base, last_value_), std::max(top, last_value_));
 }
 
 void BreathFollower::turn_found(bool trough, const Turn& t) {
@@ -114,7 +139,7 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   const bool lost = !any_ || t_s - last_t_ > p_.lost_after_s;
   const bool calibrated = breaths_ >= p_.calibration_breaths && amplitudes_.count > 0 &&
                           (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 2);
-  double target = model_dv_ml, k = 0;
+  double target = model_dv_ml, k = 0, seen_value = last_value_;
   const bool was_following = state_ == BreathState::following;
   if (lost) {
     const bool recently = any_ && t_s - last_t_ - p_.lost_after_s < p_.holding_s;
@@ -122,7 +147,8 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   } else if (calibrated) {
     state_ = BreathState::following;
     k = p_.tidal_volume_ml / amplitude();
-    target = k * (last_value_ - baseline(last_t_));
+    seen_value = p_.predict ? predicted(t_s + p_.predict_s) : last_value_;
+    target = k * (seen_value - baseline(last_t_));
   } else {
     state_ = BreathState::model;
   }
@@ -137,12 +163,12 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
     double limit = kHandoverMlPerS * std::max(0.0, t_s - out_t_);
     if (caught_up_ && following == was_following)
       limit =
-          std::max(limit, following ? std::abs(k * (last_value_ - used_value_)) : std::abs(model_dv_ml - used_model_));
+          std::max(limit, following ? std::abs(k * (seen_value - used_value_)) : std::abs(model_dv_ml - used_model_));
     out_ml_ += std::clamp(target - out_ml_, -limit, limit);
   }
   caught_up_ = std::abs(target - out_ml_) < 1e-9;
   out_t_ = t_s;
-  used_value_ = last_value_;
+  used_value_ = seen_value;
   used_model_ = model_dv_ml;
   // Apnoea: the signal is there (not lost) and has made no breath for apnoea_s since the last one it made (or
   // since it came back after a loss: what happened in the gap is not known).

@@ -12,6 +12,11 @@
 /// - States: `model` (not yet calibrated, or handed over), `following`, `holding` (the signal stopped: dV moves
 ///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once two breaths of the
 ///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
+/// - Prediction: dV is the surrogate extrapolated to the time it will be seen, `at()`'s time plus predict_s (the
+///   display's share of the delay), from the newest sample along the slope of the last kSlopeWindowS of samples,
+///   at most kMaxPredictS ahead and kept between the end-exhale level and the deepest recent breath: a sample is old by
+///   the time a frame shows it (its transport, the frame's wait), and an overlay that lags the chest by 150 ms is
+///   visibly behind it.
 /// - Flags: `apnoea` while the signal is there but no breath has been found for apnoea_s (10 s, the clinical
 ///   definition of an apnoea), once the follower has seen the patient breathe; `irregular` from a breath whose
 ///   depth or period is off the median of the last ones by more than irregular_share (a sigh, a cough, a gasp)
@@ -32,6 +37,9 @@ inline constexpr EnumNames<BreathState, 3> kBreathStateNames{
 
 /// How fast dV may move when the source changes (lost, returned): 5 mL per 10 ms step.
 inline constexpr double kHandoverMlPerS = 500.0;
+/// Prediction: the slope is fitted over this much of the newest samples, and dV is extrapolated at most this far.
+inline constexpr double kSlopeWindowS = 0.15;
+inline constexpr double kMaxPredictS = 0.3;
 /// The most breaths the amplitude's median and the rate are taken over.
 inline constexpr int kMaxMedianOf = 9;
 
@@ -43,6 +51,8 @@ struct FollowerParams {
   int median_of = 5;               ///< breaths in the amplitude's median (at most kMaxMedianOf)
   double apnoea_s = 10.0;          ///< no breath for this long, the signal present: apnoea
   double irregular_share = 0.5;    ///< a breath's depth or period this far off the median (as a share): irregular
+  double predict_s = 0.0;          ///< beyond at()'s time: the display's delay (frame to photons), s
+  bool predict = true;             ///< extrapolate the newest sample to the time it is seen (false: hold it)
 };
 
 struct FollowerOutput {
@@ -91,6 +101,8 @@ class BreathFollower {
     }
   };
   void turn_found(bool trough, const Turn& t);
+  /// The surrogate extrapolated to `t_s` from the newest samples (their value when there is no slope to fit).
+  double predicted(double t_s) const;
   /// Whether a breath of depth `a` peaking at `t_s` is off the last breaths' medians.
   bool irregular(double a, double t_s) const;
   double amplitude() const;
@@ -103,8 +115,10 @@ class BreathFollower {
   double lo_ = 0, hi_ = 0;         ///< the range seen before the first amplitude
   std::array<Turn, 2> troughs_{};  ///< the last two, oldest first
   std::size_t trough_count_ = 0;
-  Recent amplitudes_;  ///< peak minus the trough before it, the last median_of
-  Recent peak_times_;  ///< the last kMaxMedianOf peaks' times
+  Recent amplitudes_;              ///< peak minus the trough before it, the last median_of
+  Recent peak_times_;              ///< the last kMaxMedianOf peaks' times
+  std::array<Turn, 16> newest_{};  ///< the newest samples, a ring: what the slope is fitted to
+  std::size_t newest_next_ = 0, newest_count_ = 0;
   int breaths_ = 0, dropped_ = 0;
   bool irregular_ = false, in_apnoea_ = false;
   int irregular_breaths_ = 0, apnoeas_ = 0;

@@ -54,8 +54,8 @@ struct Followed {
   std::vector<BreathState> state;
 };
 
-Followed follow(const Trace& trace, double seconds) {
-  BreathFollower f;
+Followed follow(const Trace& trace, double seconds, FollowerParams p = {}) {
+  BreathFollower f(p);
   Followed r;
   std::size_t next = 0;
   for (double t = 0; t <= seconds; t += 0.01) {
@@ -124,7 +124,11 @@ TEST(BreathFollower, FollowsADriftingIrregularTraceBreathByBreath) {
 
 TEST(BreathFollower, ALostSignalHandsOverWithoutAJumpAndIsPickedUpAgain) {
   const Trace trace = make_trace(90, 40, 55);  // 15 s without samples
-  const Followed run = follow(trace, 90);
+  // The held signal, so that "its own step" below is the samples' (predicted, it is the extrapolation's, which
+  // moves between samples: BreathPrediction.* covers that).
+  FollowerParams held;
+  held.predict = false;
+  const Followed run = follow(trace, 90, held);
   double biggest_before = 0;  // the signal's own steps while followed, away from the loss
   for (std::size_t i = 1; i < run.t.size(); ++i) {
     const double step = std::abs(run.dv[i] - run.dv[i - 1]);

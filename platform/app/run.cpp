@@ -7,8 +7,9 @@
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
-#include "platform/app/settings_load.h"
+#include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
+#include "platform/app/followed_breathing.h"
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
 #include "platform/app/open_output.h"
@@ -16,9 +17,8 @@
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
-#include "platform/app/followed_breathing.h"
 #include "platform/app/script_breathing.h"
-#include "drivers/tracker_factory/tracker_factory.h"
+#include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/runtime.h"
 #include "sim/asset/asset_io.h"
@@ -54,8 +54,8 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
 
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
-Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                   RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
+Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, RuntimeParts& parts,
+                   std::shared_ptr<sync::ClassroomStation>& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
@@ -73,8 +73,9 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
     parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
   } else {
     if (s.sync.role != sync::SyncRole::Off) {
-      return fail("--breath: a classroom shares the model's breathing only, not yet a followed trace (a trainee "
-                  "breathes with its instructor); run the station without --breath or without --sync");
+      return fail(
+          "--breath: a classroom shares the model's breathing only, not yet a followed trace (a trainee "
+          "breathes with its instructor); run the station without --breath or without --sync");
     }
     auto trace = sim::read_breath_trace(o.breath_path);
     if (!trace) return trace.with_context("--breath: ");
@@ -159,10 +160,18 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
   return exit_code;
 }
 
+/// An emphysema's poor recoil is the breathing's: the emphysema preset, unless the breathing was chosen otherwise.
+void breathe_as_the_pathologies_do(Settings& s) {
+  if (!sim::has_emphysema(s.sim.pathologies) || s.breathing.preset != "normal" || !s.breathing.scenario.empty()) return;
+  s.breathing.preset = "emphysema";
+  log_line("pathology: emphysema breathes with the emphysema preset (compliant, slow to recoil: tau 1.5 s)");
+}
+
 }  // namespace
 
 int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   Settings s = configured;  // the demo's CT lungs may set the registration
+  breathe_as_the_pathologies_do(s);
   log_line(summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;

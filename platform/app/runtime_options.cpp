@@ -78,7 +78,8 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);
   app.add_option("--pathology", o.pathologies,
-                 "SPEC, repeatable: pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (default: sim.pathology)")
+                 "SPEC, repeatable: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION or emphysema:SEVERITY[:SIDE] "
+                 "(default: sim.pathology)")
       ->allow_extra_args(false);
   app.add_option("--breath", o.breath_path,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "config/base/clock.h"
 #include "platform/runtime/breathing_clock.h"
 #include "sim/breathing/script.h"
@@ -19,6 +21,10 @@ class ScriptBreathing final : public BreathingClock {
       : script_(std::move(script)), t0_ns_(t0_ns) {}
   sim::BreathingSample at(std::int64_t now_ns) const override {
     return script_->driver.at(seconds_between(t0_ns_, now_ns));
+  }
+  /// The preset the script starts with (a pathology may have chosen it), and its time constant R C.
+  void add_stats(nlohmann::json& stats) const override {
+    stats["breathing_preset"] = std::string(sim::to_string(script_->start.preset));
   }
 
  private:

@@ -142,7 +142,8 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
       ->required();
   sub.add_option("--series", cmd.series, "N: one file per phase of a breath, N phases")->check(CLI::Range(1, 1000));
   sub.add_option("--pathology", cmd.pathologies,
-                 "SPEC: pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (upper, middle, lower); repeatable")
+                 "SPEC: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION (upper, middle, lower) or "
+                 "emphysema:SEVERITY[:SIDE] (0 to 1); repeatable")
       ->allow_extra_args(false);
 }
 

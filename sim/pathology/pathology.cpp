@@ -12,8 +12,8 @@ namespace lungar::sim {
 namespace {
 
 const char* const kExpected =
-    "expected pneumothorax:SIDE:PERCENT or consolidation:SIDE:REGION (SIDE left or right, PERCENT 1 to 90, REGION "
-    "upper, middle or lower)";
+    "expected pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION or emphysema:SEVERITY[:SIDE] (SIDE left or right, "
+    "PERCENT 1 to 90, REGION upper, middle or lower, SEVERITY 0 to 1)";
 
 std::vector<std::string_view> split(std::string_view text, char sep) {
   std::vector<std::string_view> out;
@@ -82,16 +82,15 @@ Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l) {
   return area > 0 ? Eigen::Vector3d(sum / area) : vec(lung.centre.data());
 }
 
-/// Shrinks lung l about its hilum to (1 - percent/100) of its volume; its breath weight falls to the collapsed
-/// lung's. The first-order swept volumes scale with the area (s^2): the per-vertex response T is kept, so a
-/// unit of force moves the same millimetres over a smaller surface.
-void collapse(BakedAsset& a, std::size_t l, double percent) {
+/// Scales lung l about its hilum to `volume_factor` of its volume, keeping its shape. The first-order swept
+/// volumes scale with the area (s^2): the per-vertex response T is kept, so a unit of force moves the same
+/// millimetres over a smaller (or larger) surface.
+void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor) {
   BakedLung& lung = a.lungs[l];
-  const double s = std::cbrt(1.0 - percent / 100.0);
+  const double s = std::cbrt(volume_factor);
   const Eigen::Vector3d h = hilum(a, l);
   for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
-    for (int k = 0; k < 3; ++k)
-      a.positions[3 * i + k] = static_cast<float>(h[k] + s * (a.positions[3 * i + k] - h[k]));
+    for (int k = 0; k < 3; ++k) a.positions[3 * i + k] = static_cast<float>(h[k] + s * (a.positions[3 * i + k] - h[k]));
     a.areas[i] = static_cast<float>(a.areas[i] * s * s);
   }
   for (int k = 0; k < 3; ++k) lung.centre[k] = static_cast<float>(h[k] + s * (lung.centre[k] - h[k]));
@@ -100,7 +99,27 @@ void collapse(BakedAsset& a, std::size_t l, double percent) {
   for (double& v : lung.volume_grad) v *= s * s;
   if (lung.healthy_volumes)
     for (double& v : *lung.healthy_volumes) v *= s * s;
-  lung.breath_weight *= kCollapsedLungBreathWeight;
+}
+
+/// Collapses lung l to (1 - percent/100) of its volume; its breath weight falls to the collapsed lung's.
+void collapse(BakedAsset& a, std::size_t l, double percent) {
+  scale_about_hilum(a, l, 1.0 - percent / 100.0);
+  a.lungs[l].breath_weight *= kCollapsedLungBreathWeight;
+}
+
+Result<Pathology> parse_emphysema(std::string_view spec, const std::vector<std::string_view>& parts, Pathology p) {
+  if (parts.size() != 2 && parts.size() != 3)
+    return bad(spec, "expected emphysema:SEVERITY or emphysema:SEVERITY:SIDE");
+  const std::string number(parts[1]);
+  char* end = nullptr;
+  p.severity = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !(p.severity >= 0.0 && p.severity <= 1.0))
+    return bad(spec, "SEVERITY: expected a number from 0 to 1");
+  if (parts.size() == 3) {
+    if (parts[2] != "left" && parts[2] != "right") return bad(spec, "SIDE: expected left or right");
+    p.side = std::string(parts[2]);
+  }
+  return p;
 }
 
 /// 1 - how much of the region's weight a vertex at height z carries: 1 inside the third, 0 beyond the ramp.
@@ -148,12 +167,12 @@ Result<Pathology> parse_pathology(std::string_view spec) {
   p.spec = std::string(spec);
   const std::optional<PathologyKind> kind = kPathologyKindNames.parse(parts[0]);
   if (!kind) {
-    if (parts[0] == "ards" || parts[0] == "emphysema")
-      return bad(spec, "'" + std::string(parts[0]) + "' is not modelled yet; lungar models pneumothorax and "
-                                                     "consolidation");
+    if (parts[0] == "ards")
+      return bad(spec, "'ards' is not modelled yet; lungar models pneumothorax, consolidation and emphysema");
     return bad(spec, kExpected);
   }
   p.kind = *kind;
+  if (p.kind == PathologyKind::emphysema) return parse_emphysema(spec, parts, p);
   if (parts.size() != 3) return bad(spec, kExpected);
   if (parts[1] != "left" && parts[1] != "right") return bad(spec, "SIDE: expected left or right");
   p.side = std::string(parts[1]);
@@ -173,6 +192,14 @@ Result<Pathology> parse_pathology(std::string_view spec) {
 }
 
 Status apply_pathology(BakedAsset& asset, const Pathology& p) {
+  if (p.kind == PathologyKind::emphysema) {
+    const std::size_t only = p.side.empty() ? asset.lungs.size() : find_lung(asset, p.side);
+    if (!p.side.empty() && only == asset.lungs.size())
+      return bad(p.spec, "the asset has no lung named '" + p.side + "'");
+    for (std::size_t l = 0; l < asset.lungs.size(); ++l)
+      if (p.side.empty() || l == only) scale_about_hilum(asset, l, 1.0 + kEmphysemaFrcGain * p.severity);
+    return {};
+  }
   const std::size_t l = find_lung(asset, p.side);
   if (l == asset.lungs.size()) return bad(p.spec, "the asset has no lung named '" + p.side + "'");
   if (p.kind == PathologyKind::pneumothorax) {
@@ -180,6 +207,14 @@ Status apply_pathology(BakedAsset& asset, const Pathology& p) {
     return {};
   }
   return consolidate(asset, l, p.region, p.spec);
+}
+
+bool has_emphysema(const std::vector<std::string>& specs) {
+  for (const std::string& spec : specs) {
+    Result<Pathology> p = parse_pathology(spec);
+    if (p && p->kind == PathologyKind::emphysema) return true;
+  }
+  return false;
 }
 
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {

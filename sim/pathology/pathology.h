@@ -16,7 +16,13 @@
 ///   volume stays what the breathing delivers, so the part of it the region no longer takes spreads over
 ///   everything that still ventilates, in both lungs, in proportion.
 ///
-/// Both are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at load: no
+/// - `emphysema:SEVERITY[:SIDE]` (SEVERITY 0 to 1; both lungs unless SIDE): destroyed alveolar walls trap air, so
+///   the lung rests larger. It grows about its hilum, keeping its shape, to 1 + kEmphysemaFrcGain x SEVERITY of its
+///   volume (severe COPD's functional residual capacity is 130-150 % of predicted). Its poor recoil, a slower and
+///   longer expiration, is the breathing's: the runtime breathes with the `emphysema` preset (compliance 140
+///   mL/cmH2O, resistance 10.5 cmH2O.s/L, tau 1.5 s against the normal 0.36 s) when the breathing is at its default.
+///
+/// All are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at load: no
 /// second bake, no larger asset, no work in the frame (docs/design.md, "Pathologies").
 #pragma once
 
@@ -30,11 +36,12 @@
 
 namespace lungar::sim {
 
-enum class PathologyKind { pneumothorax, consolidation };
+enum class PathologyKind { pneumothorax, consolidation, emphysema };
 enum class LungThird { upper, middle, lower };
 
-inline constexpr EnumNames<PathologyKind, 2> kPathologyKindNames{
-    {{{PathologyKind::pneumothorax, "pneumothorax"}, {PathologyKind::consolidation, "consolidation"}}}};
+inline constexpr EnumNames<PathologyKind, 3> kPathologyKindNames{{{{PathologyKind::pneumothorax, "pneumothorax"},
+                                                                   {PathologyKind::consolidation, "consolidation"},
+                                                                   {PathologyKind::emphysema, "emphysema"}}}};
 inline constexpr EnumNames<LungThird, 3> kLungThirdNames{
     {{{LungThird::upper, "upper"}, {LungThird::middle, "middle"}, {LungThird::lower, "lower"}}}};
 
@@ -45,15 +52,18 @@ inline constexpr double kCollapsedLungBreathWeight = 0.05;
 inline constexpr double kConsolidatedResponse = 0.1;
 /// The ramp from consolidated to healthy outside the region, as a fraction of the lung's height.
 inline constexpr double kConsolidationRamp = 0.05;
+/// Emphysema at severity 1 rests this much larger (a share of the healthy volume).
+inline constexpr double kEmphysemaFrcGain = 0.4;
 /// Pneumothorax sizes accepted, percent of the lung's volume.
 inline constexpr double kMinPneumothoraxPercent = 1.0, kMaxPneumothoraxPercent = 90.0;
 
 struct Pathology {
   PathologyKind kind = PathologyKind::pneumothorax;
-  std::string side;                      ///< the lung's name in the asset: "left" or "right"
-  double percent = 0;                    ///< pneumothorax: the volume lost, percent
+  std::string side;                     ///< the lung's name in the asset: "left" or "right" ("" emphysema: both)
+  double percent = 0;                   ///< pneumothorax: the volume lost, percent
   LungThird region = LungThird::lower;  ///< consolidation: which third of the height
-  std::string spec;                      ///< as the user wrote it
+  double severity = 0;                  ///< emphysema: 0 to 1
+  std::string spec;                     ///< as the user wrote it
 };
 
 /// "pneumothorax:right:30" or "consolidation:left:upper" -> a Pathology, or one line saying what was expected.
@@ -61,6 +71,9 @@ Result<Pathology> parse_pathology(std::string_view spec);
 
 /// Applies `p` to `asset`; an error (asset untouched) when the asset has no lung on that side.
 Status apply_pathology(BakedAsset& asset, const Pathology& p);
+
+/// Whether any of `specs` is an emphysema (whose recoil is the breathing's: the runtime's preset).
+bool has_emphysema(const std::vector<std::string>& specs);
 
 /// Parses and applies each spec in order; the error names the spec. All or nothing: on an error `asset` is
 /// unchanged.

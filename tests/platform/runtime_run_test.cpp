@@ -186,6 +186,20 @@ TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
   EXPECT_EQ(j["tracker_malformed"], 0);
 }
 
+// Emphysema: the lungs rest larger (the asset) and breathe with the emphysema preset (its slow recoil); a breathing
+// chosen in the settings is kept.
+TEST_F(RuntimeRun, EmphysemaBreathesWithTheEmphysemaPresetUnlessTheBreathingWasChosen) {
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["breathing_preset"], "normal");
+  settings.sim.pathologies = {"emphysema:0.8"};
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["breathing_preset"], "emphysema");
+  EXPECT_NE(stats()["asset"].get<std::string>().find("with emphysema:0.8"), std::string::npos);
+  settings.breathing.preset = "fibrosis";
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["breathing_preset"], "fibrosis") << "the preset the user chose";
+}
+
 // --record FILE.igs.mha: the replayed log's 750 reports come out as a PLUS sequence of as many frames (the .trk it
 // was recorded through is gone), which replays as a tracker.
 TEST_F(RuntimeRun, ARecordingAsAPlusSequenceHoldsEveryReportAndReplays) {

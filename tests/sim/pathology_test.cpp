@@ -119,6 +119,23 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
   }
 }
 
+TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
+  const Breath before = breathe(healthy, 500);
+  const Breath both = breathe(with({"emphysema:0.75"}), 500);
+  for (std::size_t l : {right, left}) {
+    EXPECT_NEAR(both.rest_ml[l] / before.rest_ml[l], 1.0 + kEmphysemaFrcGain * 0.75, 0.005) << l;
+  }
+  EXPECT_NEAR(both.change_ml[right] + both.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
+  const Breath one = breathe(with({"emphysema:1:left"}), 500);
+  EXPECT_NEAR(one.rest_ml[left] / before.rest_ml[left], 1.0 + kEmphysemaFrcGain, 0.005);
+  EXPECT_NEAR(one.rest_ml[right], before.rest_ml[right], 1e-9) << "SIDE: the other lung keeps its shape";
+  EXPECT_EQ(with({"emphysema:0"}).positions, healthy.positions) << "severity 0 changes nothing";
+  EXPECT_TRUE(has_emphysema({"pneumothorax:right:30", "emphysema:0.5"}));
+  EXPECT_FALSE(has_emphysema({"pneumothorax:right:30"}));
+}
+
 TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
   auto p = parse_pathology("pneumothorax:left:25.5");
   ASSERT_TRUE(p) << p.error();
@@ -137,6 +154,10 @@ TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
       {"pneumothorax:right:nan", "PERCENT"},
       {"consolidation:left:lobe", "REGION: expected upper, middle or lower"},
       {"ards:0.6", "not modelled yet"},
+      {"emphysema", "expected emphysema:SEVERITY or emphysema:SEVERITY:SIDE"},
+      {"emphysema:1.5", "SEVERITY: expected a number from 0 to 1"},
+      {"emphysema:-0.1", "SEVERITY"},
+      {"emphysema:0.5:both", "SIDE: expected left or right"},
       {"asthma", "expected pneumothorax:SIDE:PERCENT"},
       {"", "expected"}};
   for (const auto& [spec, why] : refused) {

@@ -11,9 +11,20 @@
 
 namespace lungar::platform {
 
-FollowedBreathing::FollowedBreathing(sim::BreathTrace trace, std::string path,
+void TraceFeed::feed(double t_s, sim::BreathFollower& follower) {
+  for (; next_ < trace_.samples.size() && trace_.samples[next_].t_s <= t_s; ++next_)
+    follower.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
+}
+
+void TraceFeed::add_stats(nlohmann::json& stats) const {
+  stats["breath_source"] = "trace";
+  stats["breath_file"] = path_;
+  stats["breath_invalid_samples"] = trace_.invalid;
+}
+
+FollowedBreathing::FollowedBreathing(std::shared_ptr<SurrogateFeed> feed,
                                      std::shared_ptr<const sim::BreathingScript> model, std::int64_t t0_ns)
-    : trace_(std::move(trace)), path_(std::move(path)), model_(std::move(model)), t0_ns_(t0_ns) {
+    : feed_(std::move(feed)), model_(std::move(model)), t0_ns_(t0_ns) {
   sim::FollowerParams p;
   p.tidal_volume_ml = model_->start.tidal_volume_ml;
   // Each frame's sample age is measured (the frame's time against the newest sample's); beyond it, the frame
@@ -24,8 +35,7 @@ FollowedBreathing::FollowedBreathing(sim::BreathTrace trace, std::string path,
 
 sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
   const double t = seconds_between(t0_ns_, now_ns);
-  for (; next_ < trace_.samples.size() && trace_.samples[next_].t_s <= t; ++next_)
-    follower_.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
+  feed_->feed(t, follower_);
   sim::BreathingSample s = model_->driver.at(t);
   const sim::FollowerOutput o = follower_.at(t, s.dv_ml);
   if (o.state == sim::BreathState::following) {
@@ -48,15 +58,13 @@ sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
 }
 
 void FollowedBreathing::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = "trace";
-  stats["breath_file"] = path_;
+  feed_->add_stats(stats);
   stats["breath_state"] = sim::kBreathStateNames.name(state_);
   stats["breath_rate_per_min"] = follower_.rate_per_min();
   stats["breath_lag_ms"] = lag_n_ > 0 ? 1000.0 * lag_sum_s_ / static_cast<double>(lag_n_) : 0.0;
   stats["breath_following_s"] = following_s_;
   stats["breath_apnoeas"] = follower_.apnoeas();
   stats["breath_irregular"] = follower_.irregular_breaths();
-  stats["breath_invalid_samples"] = trace_.invalid;
 }
 
 }  // namespace lungar::platform

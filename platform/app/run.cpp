@@ -12,6 +12,7 @@
 #include "platform/app/followed_breathing.h"
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
+#include "platform/app/marker_feed.h"
 #include "platform/app/open_output.h"
 #include "platform/app/plus_recording.h"
 #include "platform/app/runtime_settings.h"
@@ -52,6 +53,19 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
   return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 
+/// `--breath marker:ROLE`: the live marker's feed (none for a trace file), or what was wrong with ROLE.
+Result<std::shared_ptr<MarkerFeed>> marker_of(const std::string& breath, std::int64_t t0) {
+  if (breath.rfind("marker:", 0) != 0) return std::shared_ptr<MarkerFeed>{};
+  const std::optional<drivers::Role> role = drivers::role_from_string(breath.substr(7));
+  if (!role || *role == drivers::Role::Patient) {
+    return fail(
+        "marker:ROLE: expected the tracker role carrying the chest marker, stylus or head (the patient's "
+        "pose is the frame it is read in), got '" +
+        breath.substr(7) + "'");
+  }
+  return std::make_shared<MarkerFeed>(*role, t0);
+}
+
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
 Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, RuntimeParts& parts,
@@ -62,6 +76,9 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   drivers::TrackerOptions topts;
   topts.record_path = tracker_record_path(o.record_path);
   topts.log = [](const std::string& line) { log_line(line); };
+  auto marker = marker_of(o.breath_path, t0);
+  if (!marker) return marker.with_context("--breath: ");
+  if (*marker) topts.on_sample = [feed = *marker](const drivers::PoseSample& sample) { feed->push(sample); };
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
@@ -77,11 +94,19 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
           "--breath: a classroom shares the model's breathing only, not yet a followed trace (a trainee "
           "breathes with its instructor); run the station without --breath or without --sync");
     }
-    auto trace = sim::read_breath_trace(o.breath_path);
-    if (!trace) return trace.with_context("--breath: ");
-    log_line("breathing: following " + o.breath_path + " (" + std::to_string(trace->samples.size()) + " samples" +
-             (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
-    parts.breathing = std::make_unique<FollowedBreathing>(trace.take(), o.breath_path, shared_script, t0);
+    std::shared_ptr<SurrogateFeed> feed = *marker;
+    if (*marker) {
+      log_line("breathing: following the " + o.breath_path.substr(7) +
+               " marker live (its breathing axis from its first " +
+               std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then");
+    } else {
+      auto trace = sim::read_breath_trace(o.breath_path);
+      if (!trace) return trace.with_context("--breath: ");
+      log_line("breathing: following " + o.breath_path + " (" + std::to_string(trace->samples.size()) + " samples" +
+               (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
+      feed = std::make_shared<TraceFeed>(trace.take(), o.breath_path);
+    }
+    parts.breathing = std::make_unique<FollowedBreathing>(feed, shared_script, t0);
   }
   auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, t0,
                                      parts, [](const std::string& line) { log_line(line); });

@@ -83,7 +83,8 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
       ->allow_extra_args(false);
   app.add_option("--breath", o.breath_path,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "
-                 "Varian RPM .vxp), the model taking over before calibration and when the trace ends");
+                 "Varian RPM .vxp), the model taking over before calibration and when the trace ends; marker:ROLE: "
+                 "with a chest marker tracked live as that role (stylus or head)");
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker,

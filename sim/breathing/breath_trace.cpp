@@ -14,38 +14,41 @@ namespace {
 
 constexpr double kAxisWindowS = 30.0;
 
-/// Projects marker positions on their principal axis over the first kAxisWindowS, inhalation up.
+/// Projects marker positions on their breathing axis over the first kAxisWindowS.
 std::vector<TraceSample> project_marker(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  std::size_t n = 0;
-  for (; n < p.size() && t[n] - t.front() <= kAxisWindowS; ++n) mean += p[n];
-  mean /= static_cast<double>(n);
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (std::size_t i = 0; i < n; ++i) scatter += (p[i] - mean) * (p[i] - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
-  Eigen::Vector3d axis = eig.eigenvectors().col(2);
+  const Eigen::Vector3d axis = breathing_axis(t, p, kAxisWindowS);
   std::vector<TraceSample> out;
-  for (std::size_t i = 0; i < p.size(); ++i) out.push_back({t[i] - t.front(), axis.dot(p[i] - mean)});
-  // Inhalation is the shorter phase: the signal spends less time rising than falling. Count the time spent
-  // rising over the window (a 0.2 s difference, so that noise does not count).
-  double rising = 0, falling = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    std::size_t j = i;
-    while (j > 0 && out[i].t_s - out[j].t_s < 0.2) --j;
-    const double dt = out[i].t_s - out[i - 1].t_s;
-    (out[i].value > out[j].value ? rising : falling) += dt;
-  }
-  if (rising > falling)
-    for (TraceSample& s : out) s.value = -s.value;
+  for (std::size_t i = 0; i < p.size(); ++i) out.push_back({t[i] - t.front(), axis.dot(p[i] - p.front())});
   return out;
 }
 
 }  // namespace
 
+Eigen::Vector3d breathing_axis(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p, double window_s) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::size_t n = 0;
+  for (; n < p.size() && t[n] - t.front() <= window_s; ++n) mean += p[n];
+  if (n == 0) return Eigen::Vector3d::UnitZ();
+  mean /= static_cast<double>(n);
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) scatter += (p[i] - mean) * (p[i] - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  const Eigen::Vector3d axis = eig.eigenvectors().col(2);
+  // Inhalation is the shorter phase: the signal spends less time rising than falling. Count the time spent
+  // rising over the window (a 0.2 s difference, so that noise does not count).
+  double rising = 0, falling = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    std::size_t j = i;
+    while (j > 0 && t[i] - t[j] < 0.2) --j;
+    (axis.dot(p[i]) > axis.dot(p[j]) ? rising : falling) += t[i] - t[i - 1];
+  }
+  return rising > falling ? Eigen::Vector3d(-axis) : axis;
+}
+
 Result<BreathTrace> read_breath_trace(const std::string& path) {
   std::ifstream in(path);
-  const bool vxp = path.size() > 4 && (path.compare(path.size() - 4, 4, ".vxp") == 0 ||
-                                       path.compare(path.size() - 4, 4, ".VXP") == 0);
+  const bool vxp = path.size() > 4 &&
+                   (path.compare(path.size() - 4, 4, ".vxp") == 0 || path.compare(path.size() - 4, 4, ".VXP") == 0);
   if (!in)
     return fail(path + ": cannot open: expected " +
                 (vxp ? "a Varian RPM .vxp file" : "a CSV trace (t_s,value or t_s,x_mm,y_mm,z_mm)"));
@@ -65,9 +68,12 @@ Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path) {
     if (line.empty() || line[0] == '#') continue;
     const auto at = [&](const std::string& why) { return fail(path + ":" + std::to_string(line_no) + ": " + why); };
     if (columns == 0) {
-      if (line == "t_s,value") columns = 2;
-      else if (line == "t_s,x_mm,y_mm,z_mm") columns = 4;
-      else return at("header: expected 't_s,value' or 't_s,x_mm,y_mm,z_mm', got '" + line + "'");
+      if (line == "t_s,value")
+        columns = 2;
+      else if (line == "t_s,x_mm,y_mm,z_mm")
+        columns = 4;
+      else
+        return at("header: expected 't_s,value' or 't_s,x_mm,y_mm,z_mm', got '" + line + "'");
       continue;
     }
     std::stringstream fields(line);
@@ -77,14 +83,17 @@ Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path) {
     for (; got < 4 && std::getline(fields, cell, ','); ++got) {
       char* end = nullptr;
       v[got] = std::strtod(cell.c_str(), &end);
-      if (cell.empty() || *end != '\0' || !std::isfinite(v[got])) return at("expected finite numbers, got '" + line + "'");
+      if (cell.empty() || *end != '\0' || !std::isfinite(v[got]))
+        return at("expected finite numbers, got '" + line + "'");
     }
     if (got != columns || std::getline(fields, cell, ','))
       return at("expected " + std::to_string(columns) + " numbers, got '" + line + "'");
     if (!t.empty() && v[0] <= t.back()) return at("t_s: expected times that increase, got '" + line + "'");
     t.push_back(v[0]);
-    if (columns == 2) out.samples.push_back({v[0], v[1]});
-    else p.emplace_back(v[1], v[2], v[3]);
+    if (columns == 2)
+      out.samples.push_back({v[0], v[1]});
+    else
+      p.emplace_back(v[1], v[2], v[3]);
   }
   if (columns == 0) return fail(path + ": expected a header and samples, got none");
   if (t.size() < 2) return fail(path + ": expected at least two samples, got " + std::to_string(t.size()));

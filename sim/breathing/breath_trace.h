@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "config/base/result.h"
 
 namespace lungar::sim {
@@ -27,6 +29,11 @@ struct BreathTrace {
   int peaks_marked = 0;              ///< vxp: samples RPM marked P (its own end-inhale peaks), for comparison
   double samples_per_second = 0;     ///< vxp: the header's Samples_per_second
 };
+
+/// A marker's main breathing axis: the principal axis of its positions `p` (at times `t`, increasing) over the
+/// first `window_s`, signed so that inhalation, the shorter of the two phases in quiet breathing, is its positive
+/// direction. A breath's excursion is then axis . (p - p0).
+Eigen::Vector3d breathing_axis(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p, double window_s);
 
 /// Reads a trace, by its name: `.vxp` is Varian RPM's format, anything else the CSV. The error is one line naming
 /// the file, the line and what was expected (times must increase).

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers/plus/plus_sequence.h"
+#include "drivers/plus/plus_sequence_writer.h"
 #include "platform/app/run.h"
 
 using namespace lungar;
@@ -171,6 +172,47 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   std::ofstream(trace) << "t_s,value\n0,1\n0,2\n";
   options.seconds = 1.0;
   EXPECT_NE(platform::run_runtime(settings, options), 0);
+}
+
+// --breath marker:stylus: a marker on the chest, replayed live from a PLUS sequence, moves 8 mm along an oblique
+// axis in the patient's frame at 30 breaths a minute (inhalation a third of each breath), while the patient turns
+// 30 degrees. The lungs follow it: its axis is found in the patient's frame, inhalation up, and its rate is read.
+TEST_F(RuntimeRun, ALiveChestMarkerDrivesTheBreathAlongTheAxisItFinds) {
+  std::filesystem::create_directories(dir);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.2, -0.9, 0.4).normalized();
+  drivers::PlusSequence seq;
+  for (int i = 0; i < 18 * 50; ++i) {
+    const double t = i / 50.0, u = std::fmod(t, 2.0) / 2.0;
+    const double breath = u < 1.0 / 3 ? 0.5 - 0.5 * std::cos(3 * M_PI * u) : 0.5 + 0.5 * std::cos(1.5 * M_PI * (u - 1.0 / 3));
+    Eigen::Isometry3d patient = Eigen::Isometry3d::Identity();
+    patient.linear() = Eigen::AngleAxisd(M_PI / 6 * t / 18.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    patient.translation() = Eigen::Vector3d(0, 0, 1000);
+    Eigen::Isometry3d marker = Eigen::Isometry3d::Identity();
+    marker.translation() = patient * (Eigen::Vector3d(10, -150, 200) + 8.0 * breath * axis);
+    drivers::PlusFrame f;
+    f.timestamp_s = t;
+    f.transforms = {{"Reference", "Tracker", true, patient.matrix()}, {"Stylus", "Tracker", true, marker.matrix()}};
+    seq.frames.push_back(f);
+  }
+  const std::string path = (dir / "chest.igs.mha").string();
+  ASSERT_TRUE(drivers::write_plus_sequence(path, seq));
+  settings.trackers.source = drivers::TrackerSource::Replay;
+  settings.trackers.replay_file = path;
+  settings.trackers.replay_realtime = true;  // the breath is followed on the run's clock
+  options.breath_path = "marker:stylus";
+  options.frames.reset();
+  options.seconds = 17.0;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  EXPECT_EQ(j["breath_source"], "marker:stylus");
+  ASSERT_EQ(j["breath_marker_axis"].size(), 3u) << j.dump();
+  const Eigen::Vector3d found(j["breath_marker_axis"][0], j["breath_marker_axis"][1], j["breath_marker_axis"][2]);
+  EXPECT_GT(found.dot(axis), 0.99) << "the axis in the patient's frame, inhalation its positive direction";
+  EXPECT_EQ(j["breath_state"], "following");
+  EXPECT_NEAR(j["breath_rate_per_min"].get<double>(), 30.0, 2.0);
+  options.breath_path = "marker:patient";
+  options.seconds = 1.0;
+  EXPECT_NE(platform::run_runtime(settings, options), 0) << "the patient's pose is the frame, not a marker";
 }
 
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {

@@ -197,9 +197,11 @@ TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
   EXPECT_NE(slurp(dir.file("e.ply")).find("with pneumothorax:left:20 with consolidation:right:upper"),
             std::string::npos);
   std::filesystem::remove(dir.file("e.ply"));
-  EXPECT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 1);
+  ASSERT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 0) << slurp(dir.file("err"));
+  std::filesystem::remove(dir.file("e.ply"));
+  EXPECT_EQ(run(args + " --pathology ards:0.4", dir.file("err")), 1);
   const std::string err = slurp(dir.file("err"));
-  EXPECT_NE(err.find("'emphysema:0.4'"), std::string::npos) << err;
+  EXPECT_NE(err.find("'ards:0.4'"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
 }

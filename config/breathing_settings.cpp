@@ -10,6 +10,8 @@ void read_breathing_settings(TomlSection s, BreathingSettings& b) {
   s.number("ie_ratio", b.ie_ratio, 0.1, 4.0, "(inspiration:expiration)");
   s.number("tidal_volume_ml", b.tidal_volume_ml, 50.0, 3000.0, "mL");
   s.text("scenario", b.scenario);
+  s.text("source", b.source);
+  if (b.source.empty()) s.fail("source", "expected \"model\", a trace file or \"marker:ROLE\", got \"\"");
   s.finish();
 }
 

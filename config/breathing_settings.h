@@ -15,6 +15,9 @@ struct BreathingSettings {
   double ie_ratio = 0.5;          ///< inspiration : expiration time, 1:2 = 0.5
   double tidal_volume_ml = 500.0;
   std::string scenario;           ///< optional scenario TOML (relative to the config file)
+  /// What drives the breath: "model" (the above), a recorded trace (CSV or .vxp, relative to the config file) or
+  /// "marker:ROLE" (a chest marker tracked live); `lungar --breath` overrides it.
+  std::string source = "model";
 };
 
 /// Reads [breathing] over `b`; throws ConfigError naming the file, key and expectation.

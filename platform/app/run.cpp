@@ -76,8 +76,11 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   drivers::TrackerOptions topts;
   topts.record_path = tracker_record_path(o.record_path);
   topts.log = [](const std::string& line) { log_line(line); };
-  auto marker = marker_of(o.breath_path, t0);
-  if (!marker) return marker.with_context("--breath: ");
+  // --breath, else [breathing] source ("model": the script itself).
+  const std::string breath = !o.breath_path.empty() ? o.breath_path : s.breathing.source == "model" ? "" : s.breathing.source;
+  const std::string where = !o.breath_path.empty() ? "--breath: " : "breathing.source: ";
+  auto marker = marker_of(breath, t0);
+  if (!marker) return marker.with_context(where);
   if (*marker) topts.on_sample = [feed = *marker](const drivers::PoseSample& sample) { feed->push(sample); };
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
@@ -86,25 +89,25 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
-  if (o.breath_path.empty()) {
+  if (breath.empty()) {
     parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
   } else {
     if (s.sync.role != sync::SyncRole::Off) {
       return fail(
-          "--breath: a classroom shares the model's breathing only, not yet a followed trace (a trainee "
-          "breathes with its instructor); run the station without --breath or without --sync");
+          where + "a classroom shares the model's breathing only, not yet a followed trace (a trainee breathes "
+          "with its instructor); run the station without --breath (breathing.source = \"model\") or without --sync");
     }
     std::shared_ptr<SurrogateFeed> feed = *marker;
     if (*marker) {
-      log_line("breathing: following the " + o.breath_path.substr(7) +
+      log_line("breathing: following the " + breath.substr(7) +
                " marker live (its breathing axis from its first " +
                std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then");
     } else {
-      auto trace = sim::read_breath_trace(o.breath_path);
-      if (!trace) return trace.with_context("--breath: ");
-      log_line("breathing: following " + o.breath_path + " (" + std::to_string(trace->samples.size()) + " samples" +
+      auto trace = sim::read_breath_trace(breath);
+      if (!trace) return trace.with_context(where);
+      log_line("breathing: following " + breath + " (" + std::to_string(trace->samples.size()) + " samples" +
                (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
-      feed = std::make_shared<TraceFeed>(trace.take(), o.breath_path);
+      feed = std::make_shared<TraceFeed>(trace.take(), breath);
     }
     parts.breathing = std::make_unique<FollowedBreathing>(feed, shared_script, t0);
   }

@@ -100,6 +100,7 @@ Result<Settings> load_settings(const std::string& path) {
       if (!p.empty() && std::filesystem::path(p).is_relative()) p = (dir / p).lexically_normal().string();
     };
     resolve(r->breathing.scenario);
+    if (r->breathing.source != "model" && r->breathing.source.rfind("marker:", 0) != 0) resolve(r->breathing.source);
     resolve(r->trackers.replay_file);
     resolve(r->sim.asset);
     resolve(r->sync.cyclonedds_xml);

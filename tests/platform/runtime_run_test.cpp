@@ -169,6 +169,14 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   EXPECT_GT(j["breath_following_s"].get<double>(), 2.0);
   EXPECT_NE(j["breath_state"], "following") << "the trace ended at 7 s";
   EXPECT_NEAR(j["volume_ml_max"].get<double>(), 500.0, 30.0);
+  // The same trace named in the settings ([breathing] source) rather than on the command line.
+  options.breath_path.clear();
+  settings.breathing.source = trace;
+  options.seconds = 1.0;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["breath_source"], "trace");
+  settings.breathing.source = "model";
+  options.breath_path = trace;
   std::ofstream(trace) << "t_s,value\n0,1\n0,2\n";
   options.seconds = 1.0;
   EXPECT_NE(platform::run_runtime(settings, options), 0);

@@ -126,6 +126,15 @@ TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
   auto r = load_settings(file.string());
   ASSERT_TRUE(r) << r.error();
   EXPECT_EQ(r->trackers.replay_file, (dir / "logs" / "a.trk").string());
+  // The breath's source: a trace file resolves the same way; "model" and a live marker are not paths.
+  for (const auto& [given, read] : {std::pair<std::string, std::string>{"breath.vxp", (dir / "profiles" / "breath.vxp").string()},
+                                    {"model", "model"},
+                                    {"marker:stylus", "marker:stylus"}}) {
+    std::ofstream(file) << "[breathing]\nsource = \"" << given << "\"\n";
+    auto b = load_settings(file.string());
+    ASSERT_TRUE(b) << b.error();
+    EXPECT_EQ(b->breathing.source, read);
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -9,7 +9,7 @@
 #include "config/base/atomic_file.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
-#include "drivers/tracker/tracker_config_toml.h"
+#include "drivers/replay/recorded_trackers.h"
 
 namespace lungar::drivers {
 
@@ -84,16 +84,16 @@ Status write_plus_sequence(const std::string& path, const PlusSequence& seq) {
   return write_file_atomically(path, plus_sequence_text(seq));
 }
 
-Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path,
-                                   const std::vector<RecordDecoder>& decoders, const PlusConfig& names, int& skipped) {
-  TrackerConfig trackers;
-  if (!log.header.layout_toml.empty()) {
-    auto recorded = tracker_config_from_toml(log.header.layout_toml, path + " (header layout)");
-    if (!recorded) return recorded.with_context("");
-    trackers = *recorded;
-  }
-  auto layout = make_layout(trackers);
+Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, const TrackerConfig& otherwise,
+                                   int& skipped) {
+  auto trackers = recorded_trackers(log, path, otherwise);
+  if (!trackers) return trackers.with_context("");
+  auto layout = make_layout(*trackers);
   if (!layout) return layout.with_context(path + ": report layout: ");
+  auto igtl_layout = make_igtl_layout(*trackers);
+  if (!igtl_layout) return igtl_layout.with_context(path + ": ");
+  const RecordDecoder igtl = igtl_record_decoder(*igtl_layout);
+  const PlusConfig& names = trackers->plus;
   PlusSequence seq;
   skipped = 0;
   const std::int64_t t0 = log.records.empty() ? 0 : log.records.front().t_arrival_ns;
@@ -105,11 +105,7 @@ Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path,
   std::array<Latest, kRoleCount> latest{};
   constexpr double kFreshS = 0.1;
   for (const TrkRecord& rec : log.records) {
-    DecodedReport r;
-    bool decoded = false;
-    for (const RecordDecoder& d : decoders)
-      if (d.source == rec.source) r = d.decode(rec.report), decoded = true;
-    if (!decoded) r = decode_report(rec.report, *layout);
+    const DecodedReport r = rec.source == igtl.source ? igtl.decode(rec.report) : decode_report(rec.report, *layout);
     if (r.error != DecodeError::None || r.count == 0) {
       ++skipped;  // a malformed record is never written as a pose
       continue;

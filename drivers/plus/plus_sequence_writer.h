@@ -11,7 +11,7 @@
 
 #include "config/base/result.h"
 #include "drivers/plus/plus_sequence.h"
-#include "drivers/replay/replay_interface.h"
+#include "drivers/pose/pose_sample.h"
 #include "drivers/tracker/tracker_config.h"
 #include "drivers/trk/trk_reader.h"
 
@@ -27,12 +27,12 @@ Status write_plus_sequence(const std::string& path, const PlusSequence& seq);
 /// Reference (the patient), HMD (the head), Stylus.
 const std::string& plus_tool_of(Role role, const PlusConfig& names = {});
 
-/// A recorded .trk log as a PLUS sequence: one frame per record that decodes (through `decoders` for the records of
-/// their sources, through the log's own report layout for the others), at its arrival time from the first record,
-/// holding each tool seen so far (its role's PLUS name, relative to the tracker) at its newest pose, INVALID once
-/// that is more than 0.1 s old, the tools named by `names`. Records that do not decode are skipped and counted in
-/// `skipped`.
-Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path,
-                                   const std::vector<RecordDecoder>& decoders, const PlusConfig& names, int& skipped);
+/// A recorded .trk log as a PLUS sequence: one frame per record that decodes, with the [trackers] it was recorded
+/// with (its header's, else `otherwise`: its report layout, its OpenIGTLink names, its PLUS tool names), at its
+/// arrival time from the first record, holding each tool seen so far (its role's PLUS name, relative to the
+/// tracker) at its newest pose, INVALID once that is more than 0.1 s old. Records that do not decode are skipped and
+/// counted in `skipped`.
+Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, const TrackerConfig& otherwise,
+                                   int& skipped);
 
 }  // namespace lungar::drivers

@@ -127,24 +127,12 @@ int dump(const std::string& file, const std::string& format, const std::string& 
   return 0;
 }
 
-/// The log as a PLUS sequence (3D Slicer opens it): its OpenIGTLink records decoded with the names of its header's
-/// [trackers], the others with its report layout.
+/// The log as a PLUS sequence (3D Slicer opens it), decoded with the [trackers] of its header (else the defaults).
 int to_plus(const std::string& file, const std::string& out) {
   auto r = load_trk(file);
   if (!r) return die(r.error());
-  TrackerConfig trackers;
-  if (!r->header.layout_toml.empty()) {
-    auto recorded = tracker_config_from_toml(r->header.layout_toml, file + " (header layout)");
-    if (!recorded) return die(recorded.error());
-    trackers = *recorded;
-  }
-  auto igtl = make_igtl_layout(trackers);
-  if (!igtl) return die(file + ": " + igtl.error());
-  const IgtlLayout layout = *igtl;
   int skipped = 0;
-  auto seq = plus_from_trk(
-      *r, file, {{TrkSource::Igtl, [layout](std::span<const std::uint8_t> m) { return decode_igtl_message(m, layout); }}},
-      trackers.plus, skipped);
+  auto seq = plus_from_trk(*r, file, TrackerConfig{}, skipped);
   if (!seq) return die(seq.error());
   if (Status w = write_plus_sequence(out, *seq); !w) return die(w.error());
   std::printf("%s: %zu frames from %zu records (%d malformed, left out)\n", out.c_str(), seq->frames.size(),

@@ -11,6 +11,7 @@
 #include "drivers/mock/mock_interface.h"
 #include "drivers/mock/mock_trajectory.h"
 #include "drivers/plus/plus_replay.h"
+#include "drivers/replay/recorded_trackers.h"
 #include "drivers/replay/replay_interface.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/tracker/tracker_core.h"
@@ -43,10 +44,7 @@ Result<std::unique_ptr<TrackerDevice>> plus_device(const TrackerConfig& settings
   if (!seq) return fail(seq.error());
   Result<PlusReplay> replay = plus_replay(*seq, settings, settings.replay_file);
   if (!replay) return fail(replay.error());
-  const IgtlLayout layout = replay->layout;
-  RecordDecoder igtl{TrkSource::Igtl, [layout](std::span<const std::uint8_t> message) {
-                       return decode_igtl_message(message, layout);
-                     }};
+  RecordDecoder igtl = igtl_record_decoder(replay->layout);
   const std::string what = settings.replay_file + " (PLUS sequence: " + replay->describe + ")";
   return replay_create(std::move(replay->log), what, settings.replay_realtime, settings.replay_loop, {std::move(igtl)});
 }
@@ -68,9 +66,7 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
       // The bytes are decoded with the configured layout, as the live device would; a log made with another
       // layout says so in its header, and the mismatch is worth a line.
       layout_differs = recorded_with_another_layout(*log, settings);
-      RecordDecoder igtl{TrkSource::Igtl, [igtl_layout](std::span<const std::uint8_t> message) {
-                           return decode_igtl_message(message, igtl_layout);
-                         }};
+      RecordDecoder igtl = igtl_record_decoder(igtl_layout);
       return replay_create(log.take(), settings.replay_file, settings.replay_realtime, settings.replay_loop,
                            {std::move(igtl)});
     }
@@ -79,7 +75,8 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
       std::call_once(init, [] { hid_init(); });
       return hid_create(settings);
     }
-    case TrackerSource::Igtl: return igtl_create(settings, igtl_layout);
+    case TrackerSource::Igtl:
+      return igtl_create(settings, igtl_layout);
   }
   return fail("trackers.source: expected " + kTrackerSourceNames.expected());
 }
@@ -104,8 +101,9 @@ Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, con
   }
   core->log(-1, "tracker: %s", (*device)->describe().c_str());
   if (layout_differs) {
-    core->log(-1, "replay %s: the log was recorded with another report layout than the config's; decoding with "
-                  "the config's (lungar-trk dump uses the log's own)",
+    core->log(-1,
+              "replay %s: the log was recorded with another report layout than the config's; decoding with "
+              "the config's (lungar-trk dump uses the log's own)",
               settings.replay_file.c_str());
   }
   return std::make_unique<Tracker>(std::move(core), device.take());

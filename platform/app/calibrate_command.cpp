@@ -5,13 +5,14 @@
 #include <cstdio>
 #include <optional>
 
-#include "platform/app/settings_load.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
 #include "drivers/plus/plus_replay.h"
 #include "drivers/plus/plus_sequence.h"
+#include "drivers/replay/recorded_trackers.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
+#include "platform/app/settings_load.h"
 #include "platform/registration/landmark_matching.h"
 #include "platform/registration/pivot_calibration.h"
 
@@ -30,15 +31,6 @@ Result<std::optional<drivers::TrackerConfig>> config_trackers(const std::string&
 Eigen::Vector3d tip_of(const drivers::TrackerConfig& t) {
   const auto& tip = t.stylus.tip_offset_mm;
   return Eigen::Vector3d(tip[0], tip[1], tip[2]);
-}
-
-/// The report layout a log was recorded with: its header's, else the config's, else the defaults.
-Result<drivers::TrackerConfig> log_layout(const drivers::TrkLog& log, const std::string& log_path,
-                                           const std::optional<drivers::TrackerConfig>& config) {
-  if (!log.header.layout_toml.empty()) {
-    return drivers::tracker_config_from_toml(log.header.layout_toml, log_path + " (header layout)");
-  }
-  return config ? *config : drivers::TrackerConfig{};
 }
 
 }  // namespace
@@ -85,7 +77,8 @@ Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::
   if (!loaded) return loaded.with_context("");
   auto config = config_trackers(config_path);
   if (!config) return config.with_context("");
-  auto trackers = log_layout(*loaded, log_path, *config);
+  // The report layout the log was recorded with: its header's, else the config's, else the defaults.
+  auto trackers = drivers::recorded_trackers(*loaded, log_path, *config ? **config : drivers::TrackerConfig{});
   if (!trackers) return trackers.with_context("");
   auto layout = drivers::make_layout(*trackers);
   if (!layout) return layout.with_context(log_path + ": report layout: ");
@@ -160,7 +153,8 @@ int run_calibrate(const CalibrateOptions& o) {
   if (o.stylus_csv.empty() == o.stylus_log.empty()) {
     return say("expected exactly one of --stylus FILE.csv or --stylus-log FILE.trk"), 2;
   }
-  if (o.stylus_tip_mm && !o.stylus_csv.empty()) return say("--stylus-tip-mm applies to --stylus-log, not to --stylus"), 2;
+  if (o.stylus_tip_mm && !o.stylus_csv.empty())
+    return say("--stylus-tip-mm applies to --stylus-log, not to --stylus"), 2;
   Registration r;
   std::vector<double> fre_mm;
   if (!o.stylus_csv.empty()) {  // the touches as pairs, in the model's order

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <set>
 
-#include "drivers/igtl/igtl_decoder.h"
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/plus/plus_sequence_writer.h"
 
@@ -19,13 +18,8 @@ Result<std::string> finish_plus_recording(const std::string& record_path, const 
   const std::string trk = tracker_record_path(record_path);
   auto log = drivers::load_trk(trk);
   if (!log) return fail("recording: " + log.error() + " (kept)");
-  auto igtl_layout = drivers::make_igtl_layout(trackers);
-  if (!igtl_layout) return fail("recording: " + igtl_layout.error() + "; " + trk + " kept");
-  const drivers::IgtlLayout layout = *igtl_layout;
-  std::vector<drivers::RecordDecoder> decoders{
-      {drivers::TrkSource::Igtl, [layout](std::span<const std::uint8_t> m) { return decode_igtl_message(m, layout); }}};
   int skipped = 0;
-  auto seq = drivers::plus_from_trk(*log, trk, decoders, trackers.plus, skipped);
+  auto seq = drivers::plus_from_trk(*log, trk, trackers, skipped);
   if (!seq) return fail("recording: " + seq.error() + "; " + trk + " kept");
   if (Status w = drivers::write_plus_sequence(record_path, *seq); !w)
     return fail("recording: " + w.error() + "; " + trk + " kept");

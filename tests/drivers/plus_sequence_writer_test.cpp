@@ -71,7 +71,7 @@ TEST(PlusSequenceWriter, ARecordedLogBecomesOneFramePerRecordWithEachToolsNewest
   auto log = load_trk(testing::tracker_data("upright_to_supine.trk"));
   ASSERT_TRUE(log) << log.error();
   int skipped = -1;
-  auto seq = plus_from_trk(*log, "upright_to_supine.trk", {}, PlusConfig{}, skipped);
+  auto seq = plus_from_trk(*log, "upright_to_supine.trk", TrackerConfig{}, skipped);
   ASSERT_TRUE(seq) << seq.error();
   EXPECT_EQ(seq->frames.size() + static_cast<std::size_t>(skipped), log->records.size());
   // The last frame holds, for the patient, the pose of the last record that carried one.
@@ -117,7 +117,7 @@ TEST(PlusSequenceWriter, AToolSilentForMoreThanATenthOfASecondIsInvalid) {
   ASSERT_EQ(two.records.size(), 2u);
   two.records[1].t_arrival_ns = two.records[0].t_arrival_ns + 500'000'000;
   int skipped = 0;
-  auto seq = plus_from_trk(two, "two.trk", {}, PlusConfig{}, skipped);
+  auto seq = plus_from_trk(two, "two.trk", TrackerConfig{}, skipped);
   ASSERT_TRUE(seq) << seq.error();
   ASSERT_EQ(seq->frames.size(), 2u);
   const std::set<std::string> now = tools_of(two.records[1]);

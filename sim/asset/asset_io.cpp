@@ -87,8 +87,9 @@ class Reader {
     return true;
   }
 
-  /// Reads section `tag` whose payload must be exactly `expected` bytes; checks its CRC.
-  bool section(const char tag[4], std::uint64_t expected, std::string& payload) {
+  /// Reads section `tag` whose payload must be exactly `expected` bytes (or `optional_empty` and none); checks its
+  /// CRC.
+  bool section(const char tag[4], std::uint64_t expected, std::string& payload, bool optional_empty = false) {
     const std::string name = std::string("section '") + std::string(tag, 4) + "'";
     char found[4];
     std::uint64_t length = 0;
@@ -99,9 +100,10 @@ class Reader {
       return fail(name + ": expected tag '" + std::string(tag, 4) + "', found '" + shown + "'");
     }
     if (!raw(&length, sizeof length, (name + " length").c_str())) return false;
-    if (length != expected) {
+    if (length != expected && !(optional_empty && length == 0)) {
       std::ostringstream m;
-      m << name << ": length " << length << " bytes; expected " << expected << " from the header's counts";
+      m << name << ": length " << length << " bytes; expected " << expected << (optional_empty ? " (or 0)" : "")
+        << " from the header's counts";
       return fail(m.str());
     }
     if (length + 4 > left_) {
@@ -175,7 +177,8 @@ std::string validate_asset(const BakedAsset& a) {
   if (a.bands < 1 || a.bands > 8) return "bands: expected 1 to 8, found " + std::to_string(a.bands);
   if (a.lungs.empty() || a.lungs.size() > kMaxLungs) return "lung count: expected 1 to 16";
   if (a.positions.size() != 3 * n || a.normals.size() != 3 * n || a.directions.size() != 3 * n || a.areas.size() != n ||
-      a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n || (a.has_off_axis() && a.off_axis.size() != 12 * n))
+      a.sh_coeffs.size() != c * n || a.linear_coeffs.size() != 4 * n || (a.has_off_axis() && a.off_axis.size() != 12 * n) ||
+      (a.has_sphere_dirs() && a.sphere_dirs.size() != 3 * n))
     return "per-vertex arrays: sizes disagree with the vertex count " + std::to_string(n);
   if ((a.motion_model == MotionModel::sliding) != a.has_off_axis())
     return "off_axis: expected 12 values a vertex for the sliding model and none for the paper's";
@@ -213,7 +216,7 @@ std::string validate_asset(const BakedAsset& a) {
   if (next_vertex != n || next_index != a.triangles.size()) return "lungs: ranges do not cover every vertex and triangle";
   if (!all_finite(a.positions) || !all_finite(a.normals) || !all_finite(a.directions) || !all_finite(a.areas) ||
       !all_finite(a.sh_coeffs) ||
-      !all_finite(a.linear_coeffs) || !all_finite(a.off_axis))
+      !all_finite(a.linear_coeffs) || !all_finite(a.off_axis) || !all_finite(a.sphere_dirs))
     return "per-vertex arrays: expected finite numbers";
   if (a.has_transfer_rows()) {
     if (a.transfer_row_ptr.size() != n + 1 || a.transfer_row_ptr.front() != 0 ||
@@ -270,6 +273,7 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   write_section(out, "SHCO", a.sh_coeffs);
   write_section(out, "LINC", a.linear_coeffs);
   write_section(out, "OFFA", a.off_axis);
+  write_section(out, "SDIR", a.sphere_dirs);
   write_section(out, "TRIS", a.triangles);
   write_section(out, "TROW", a.transfer_row_ptr);
   write_section(out, "TCOL", a.transfer_cols);
@@ -294,7 +298,7 @@ Result<HeadCounts> read_head(Reader& r, const std::string& path, BakedAsset& a) 
   }
   std::uint32_t version = 0;
   if (!r.raw(&version, 4, "version")) return fail(r.error());
-  if (version != 1 && version != kAssetVersion) {
+  if (version < 1 || version > kAssetVersion) {
     return fail(path + ": version: expected 1 to " + std::to_string(kAssetVersion) + ", found " +
                 std::to_string(version) + " (re-bake with this lungar-bake)");
   }
@@ -392,8 +396,8 @@ Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& 
   const std::uint64_t n = h.vertices;
   const bool rows = h.nnz > 0;
   std::string payload;
-  auto read_into = [&](const char* tag, std::uint64_t bytes, auto& vec) {
-    if (!r.section(tag, bytes, payload)) return false;
+  auto read_into = [&](const char* tag, std::uint64_t bytes, auto& vec, bool optional_empty = false) {
+    if (!r.section(tag, bytes, payload, optional_empty)) return false;
     payload_to(payload, vec);
     return true;
   };
@@ -401,6 +405,7 @@ Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& 
       (h.version >= 2 && !read_into("MDIR", 12 * n, a.directions)) || !read_into("AREA", 4 * n, a.areas) || !read_into("LOFV", n, a.lung_of_vertex) ||
       !read_into("SHCO", 4 * n * c, a.sh_coeffs) || !read_into("LINC", 16 * n, a.linear_coeffs) ||
       (h.version >= 2 && !read_into("OFFA", a.motion_model == MotionModel::sliding ? 48 * n : 0, a.off_axis)) ||
+      (h.version >= 3 && !read_into("SDIR", 12 * n, a.sphere_dirs, true)) ||
       !read_into("TRIS", 12ull * h.triangles, a.triangles) ||
       !read_into("TROW", rows ? 4 * (n + 1) : 0, a.transfer_row_ptr) || !read_into("TCOL", 4 * h.nnz, a.transfer_cols) ||
       !read_into("TVAL", 4 * h.nnz, a.transfer_vals)) {

@@ -5,9 +5,11 @@
 /// payload length, the payload and the payload's CRC-32. Sections, in order: HEAD (bands, vertex, triangle and
 /// lung counts, transfer nnz, p0, gamma, l, epsilon), MODL (u32 motion model: 0 paper, 1 sliding), LUNG (per-lung
 /// records), POSI, NORM, MDIR (each vertex's direction of motion), AREA, LOFV, SHCO, LINC, OFFA (the sliding model's
-/// off-axis linear basis, 12 floats a vertex; empty for the paper's model), TRIS, TROW, TCOL, TVAL (the last three
-/// empty when the asset holds no explicit transfer rows). Version 1 files (no MODL, no MDIR)
-/// still load, as the paper's model with directions equal to the normals.
+/// off-axis linear basis, 12 floats a vertex; empty for the paper's model), SDIR (each vertex's point u_I on the
+/// sphere of the SH fit, 3 floats a vertex, or empty), TRIS, TROW, TCOL, TVAL (the last three empty when the asset
+/// holds no explicit transfer rows). Version 1 files (no MODL, no MDIR) still load, as the paper's model with
+/// directions equal to the normals; version 1 and 2 files (no SDIR) load without sphere points, so that no force
+/// pattern beyond the linear pressure (ARDS) can be projected onto their SH (sim/force/dependent_collapse.h).
 #pragma once
 
 #include <string>
@@ -18,7 +20,7 @@
 namespace lungar::sim {
 
 inline constexpr char kAssetMagic[8] = {'L', 'U', 'N', 'G', 'B', 'A', 'K', 'E'};
-inline constexpr std::uint32_t kAssetVersion = 2;
+inline constexpr std::uint32_t kAssetVersion = 3;
 
 /// Writes `asset` to a temporary file beside `path` and renames it into place: `path` is either the whole new
 /// asset or untouched. The error names the file.

@@ -13,14 +13,17 @@
 #pragma once
 
 #include <array>
-#include <optional>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/motion/motion_model.h"
 
 namespace lungar::sim {
+
+class DependentCollapse;
 
 /// Orientation angles of the paper's eq. (8)-(9): pi/2, pi, 3pi/2, 2pi about each of X, Y, Z.
 inline constexpr int kPaperAxes = 3;
@@ -63,6 +66,10 @@ struct BakedLung {
   /// split then also carries V(g) / V_healthy(g), the part of its healthy breath its surface can still take in
   /// the posture, so that what is left of the lung breathes as before.
   std::optional<std::array<double, 4>> healthy_volumes;
+  /// ARDS (set with it, never stored): the force that follows the posture, which replaces the linear pressure's
+  /// in force_sh.h for this lung, `collapse_index` its index there (sim/force/dependent_collapse.h).
+  std::shared_ptr<const DependentCollapse> collapse;
+  std::size_t collapse_index = 0;
 };
 
 /// The whole asset.
@@ -88,6 +95,12 @@ struct BakedAsset {
   /// e carries the SH (docs/design.md, "Vector displacement").
   std::vector<float> off_axis;
   bool has_off_axis() const { return !off_axis.empty(); }
+  /// 3 per vertex, unit: u_I, where the bake's sphere map put the vertex, the point at which the SH of a force is
+  /// evaluated for it (the force SH is the area-weighted fit of the pressure at the u_I). Lets a force pattern that
+  /// is not linear in position be projected at load and per posture (sim/force/dependent_collapse.h). Empty in
+  /// assets of format version 1 and 2.
+  std::vector<float> sphere_dirs;
+  bool has_sphere_dirs() const { return !sphere_dirs.empty(); }
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
 

@@ -147,6 +147,7 @@ void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::si
       a.positions.push_back(static_cast<float>(w.mesh.positions[i][k]));
       a.normals.push_back(static_cast<float>(w.geometry.normals[i][k]));
       a.directions.push_back(static_cast<float>(w.directions(i, k)));
+      a.sphere_dirs.push_back(static_cast<float>(w.sphere.u[i][k]));
     }
     a.areas.push_back(static_cast<float>(w.geometry.areas[i]));
     a.lung_of_vertex.push_back(static_cast<std::uint8_t>(lung_index));

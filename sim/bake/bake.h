@@ -129,6 +129,14 @@ struct BakeReport {
   MotionFigures motion_supine, motion_prone, motion_upright;
   MotionModel compared_model = MotionModel::paper;
   MotionFigures compared_supine, compared_prone, compared_upright;
+  /// How well the force SH and the linear basis carry each pathology's force (sim/force/dependent_collapse.h,
+  /// CollapseFitError), per posture: "none" is the healthy linear pressure, which pneumothorax, consolidation and
+  /// emphysema keep (they change the asset); "ards:0.6" the collapse that follows gravity.
+  struct PatternFit {
+    std::string pathology, posture;
+    double sh_rms_rel_error = 0, linear_rms_rel_error = 0;
+  };
+  std::vector<PatternFit> pathology_force;
 };
 
 struct BakeOutput {

@@ -12,6 +12,7 @@
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/breath_share.h"
+#include "sim/force/dependent_collapse.h"
 #include "sim/force/force_sh.h"
 #include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
@@ -302,6 +303,20 @@ std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& ba
   return out;
 }
 
+/// What the SH buys: the healthy pressure (linear: both fits carry it) and ARDS's collapse (not linear in
+/// position), each fitted by the force SH and by the linear basis, supine and prone.
+void pathology_force(const BakedAsset& a, BakeReport& report) {
+  if (!a.has_sphere_dirs()) return;
+  for (double severity : {0.0, 0.6}) {
+    Result<std::shared_ptr<const DependentCollapse>> pattern = DependentCollapse::build(a, severity);
+    if (!pattern) return;
+    for (const auto& [name, g] : {std::pair{"supine", kSupine}, std::pair{"prone", kProne}}) {
+      const CollapseFitError e = (*pattern)->fit_error(a, g);
+      report.pathology_force.push_back({severity == 0 ? "none" : "ards:0.6", name, e.sh_rms_rel, e.linear_rms_rel});
+    }
+  }
+}
+
 /// The motion object of the report: the asset's model through the float asset in three postures, and the other
 /// model, exact, on the same lungs.
 void motion(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a, const BakeOptions& opt,
@@ -339,6 +354,7 @@ void evaluate_bake(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
   if (progress) progress("evaluate", 0.9);
   physiology(a, report);
   motion(work, a, opt, workers, report);
+  pathology_force(a, report);
   check_cancel(workers);
   report.evaluated = true;
   if (progress) progress("evaluate", 1.0);

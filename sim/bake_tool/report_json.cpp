@@ -128,6 +128,13 @@ nlohmann::json report_json(const BakeReport& r, const std::vector<std::string>& 
   if (r.evaluated) {
     j["direction_rms_rel_error"] = r.direction_rms_rel_error;
     j["motion"] = motion_json(r);
+    nlohmann::json fits = nlohmann::json::array();
+    for (const BakeReport::PatternFit& f : r.pathology_force)
+      fits.push_back({{"pathology", f.pathology},
+                      {"posture", f.posture},
+                      {"sh_rms_rel_error", f.sh_rms_rel_error},
+                      {"linear_rms_rel_error", f.linear_rms_rel_error}});
+    j["pathology_force"] = fits;
   }
   j["bands_sweep"] = sweep_json(r.bands_sweep);
   j["maps"] = maps_json(r.maps);

@@ -7,18 +7,24 @@
 #include <cstdint>
 
 #include "sim/deform/deform_eq7.h"
+#include "sim/force/dependent_collapse.h"
 #include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::sim {
 
 void applied_force(const BakedAsset& asset, const Eigen::Vector3d& g, std::span<float> force_out) {
+  // ARDS: the pressure falls beyond the collapse plane g . x = t (sim/force/dependent_collapse.h).
+  const DependentCollapse* collapse = asset.lungs.empty() ? nullptr : asset.lungs.front().collapse.get();
+  const double t = collapse ? collapse->threshold_mm(g) : 0.0;
   for (const BakedLung& lung : asset.lungs) {
     const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);
     const double cg = g.x() * lung.centre[0] + g.y() * lung.centre[1] + g.z() * lung.centre[2];
     for (std::size_t j = lung.first_vertex; j < std::size_t{lung.first_vertex} + lung.vertex_count; ++j) {
       const float* x = asset.positions.data() + 3 * j;
-      const double p = asset.p0 + asset.gamma_per_mm * (g.x() * x[0] + g.y() * x[1] + g.z() * x[2] - cg);
+      const double depth = g.x() * x[0] + g.y() * x[1] + g.z() * x[2];
+      double p = asset.p0 + asset.gamma_per_mm * (depth - cg);
+      if (collapse) p *= DependentCollapse::pressure_factor(depth - t);
       force_out[j] = static_cast<float>(asset.areas[j] * p * scale);
     }
   }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/force/force_sh.h"
+
 namespace lungar::sim {
 
 namespace {
@@ -14,14 +16,12 @@ Eigen::Vector3d centre_of(const BakedLung& lung) {
 }
 
 /// The part of its healthy swept volume a lung whose response a pathology changed still sweeps with gravity g:
-/// V(g) / V_healthy(g), V(g) = p0 v0 + gamma g.v; 1 when healthy.
+/// V(g) / V_healthy(g), V(g) = p0 v0 + gamma g.v (or ARDS's, force_sh.h); 1 when healthy.
 double response_left(const BakedAsset& a, const BakedLung& lung, const Eigen::Vector3d& g) {
   if (!lung.healthy_volumes) return 1.0;
   const auto& h = *lung.healthy_volumes;
   const double healthy = a.p0 * h[0] + a.gamma_per_mm * (g.x() * h[1] + g.y() * h[2] + g.z() * h[3]);
-  const double now = a.p0 * lung.volume_const + a.gamma_per_mm * g.dot(Eigen::Vector3d(lung.volume_grad[0],
-                                                                                         lung.volume_grad[1],
-                                                                                         lung.volume_grad[2]));
+  const double now = swept_volume_mm3(a, lung, g);
   return healthy > 0 ? std::max(0.0, now / healthy) : 1.0;
 }
 

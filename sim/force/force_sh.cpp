@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "sim/force/dependent_collapse.h"
+
 namespace lungar::sim {
 
 EulerXYZ euler_xyz(const Eigen::Quaterniond& q) {
@@ -26,11 +28,18 @@ EulerXYZ euler_xyz(const Eigen::Quaterniond& q) {
 }
 
 double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g) {
+  if (lung.collapse) return lung.collapse->lung_force(asset, lung.collapse_index, g).swept_mm3;
   return asset.p0 * lung.volume_const +
          asset.gamma_per_mm * (g.x() * lung.volume_grad[0] + g.y() * lung.volume_grad[1] + g.z() * lung.volume_grad[2]);
 }
 
 std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g) {
+  if (lung.collapse) {
+    const CollapsedLungForce f = lung.collapse->lung_force(asset, lung.collapse_index, g);
+    const double scale = 1000.0 / f.swept_mm3;
+    return {static_cast<float>(f.linear[0] * scale), static_cast<float>(f.linear[1] * scale),
+            static_cast<float>(f.linear[2] * scale), static_cast<float>(f.linear[3] * scale)};
+  }
   const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);
   const double gamma = asset.gamma_per_mm * scale;
   return {static_cast<float>(asset.p0 * scale), static_cast<float>(gamma * g.x()), static_cast<float>(gamma * g.y()),
@@ -38,6 +47,12 @@ std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lu
 }
 
 void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g, float* out) {
+  if (lung.collapse) {
+    const CollapsedLungForce f = lung.collapse->lung_force(asset, lung.collapse_index, g);
+    const double scale = 1000.0 / f.swept_mm3;
+    for (std::size_t i = 0; i < f.sh.size(); ++i) out[i] = static_cast<float>(f.sh[i] * scale);
+    return;
+  }
   const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);  // mm^3 per mL
   const double a = asset.p0 * scale, gx = asset.gamma_per_mm * g.x() * scale,
                gy = asset.gamma_per_mm * g.y() * scale, gz = asset.gamma_per_mm * g.z() * scale;

@@ -26,7 +26,9 @@ struct EulerXYZ {
 EulerXYZ euler_xyz(const Eigen::Quaterniond& lung_in_world);
 
 /// Exact mode: f(g) = (p0 f0 + gamma g.f) * 1000 / (p0 v0 + gamma g.v), L^2 values into out: the force SH of
-/// one mL of swept volume, so that D = sum_lm f_lm T^I_lm is in mm per mL.
+/// one mL of swept volume, so that D = sum_lm f_lm T^I_lm is in mm per mL. A lung with ARDS (BakedLung::collapse)
+/// takes its collapsed pattern's SH instead, and linear_weights and swept_volume_mm3 follow it
+/// (sim/force/dependent_collapse.h).
 void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung, float* out);
 
 /// Paper mode, eq. (8)-(9) as written: f = f^a + f^b + f^c, f^a = [p^{a0} cos(a - a0) + p^{a1} cos(a - a1)] / 3,

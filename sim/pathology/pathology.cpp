@@ -6,14 +6,15 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "sim/force/dependent_collapse.h"
 #include "sim/motion/surface_regions.h"
 
 namespace lungar::sim {
 namespace {
 
 const char* const kExpected =
-    "expected pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION or emphysema:SEVERITY[:SIDE] (SIDE left or right, "
-    "PERCENT 1 to 90, REGION upper, middle or lower, SEVERITY 0 to 1)";
+    "expected pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE "
+    "left or right, PERCENT 1 to 90, REGION upper, middle or lower, SEVERITY 0 to 1)";
 
 std::vector<std::string_view> split(std::string_view text, char sep) {
   std::vector<std::string_view> out;
@@ -107,7 +108,9 @@ void collapse(BakedAsset& a, std::size_t l, double percent) {
   a.lungs[l].breath_weight *= kCollapsedLungBreathWeight;
 }
 
-Result<Pathology> parse_emphysema(std::string_view spec, const std::vector<std::string_view>& parts, Pathology p) {
+/// emphysema:SEVERITY[:SIDE] and ards:SEVERITY.
+Result<Pathology> parse_severity(std::string_view spec, const std::vector<std::string_view>& parts, Pathology p) {
+  if (p.kind == PathologyKind::ards && parts.size() != 2) return bad(spec, "expected ards:SEVERITY");
   if (parts.size() != 2 && parts.size() != 3)
     return bad(spec, "expected emphysema:SEVERITY or emphysema:SEVERITY:SIDE");
   const std::string number(parts[1]);
@@ -159,6 +162,23 @@ Status consolidate(BakedAsset& a, std::size_t l, LungThird third, std::string_vi
   return {};
 }
 
+/// ARDS: every lung takes the collapsed pattern's force (dependent_collapse.h), its healthy volumes kept for its
+/// weight in the split.
+Status collapse_dependent(BakedAsset& a, double severity, std::string_view spec) {
+  if (std::any_of(a.lungs.begin(), a.lungs.end(), [](const BakedLung& l) { return l.collapse != nullptr; }))
+    return bad(spec, "ARDS is given twice; give one severity");
+  Result<std::shared_ptr<const DependentCollapse>> pattern = DependentCollapse::build(a, severity);
+  if (!pattern) return bad(spec, pattern.error());
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    BakedLung& lung = a.lungs[l];
+    if (!lung.healthy_volumes)
+      lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
+    lung.collapse = *pattern;
+    lung.collapse_index = l;
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<Pathology> parse_pathology(std::string_view spec) {
@@ -166,13 +186,9 @@ Result<Pathology> parse_pathology(std::string_view spec) {
   Pathology p;
   p.spec = std::string(spec);
   const std::optional<PathologyKind> kind = kPathologyKindNames.parse(parts[0]);
-  if (!kind) {
-    if (parts[0] == "ards")
-      return bad(spec, "'ards' is not modelled yet; lungar models pneumothorax, consolidation and emphysema");
-    return bad(spec, kExpected);
-  }
+  if (!kind) return bad(spec, kExpected);
   p.kind = *kind;
-  if (p.kind == PathologyKind::emphysema) return parse_emphysema(spec, parts, p);
+  if (p.kind == PathologyKind::emphysema || p.kind == PathologyKind::ards) return parse_severity(spec, parts, p);
   if (parts.size() != 3) return bad(spec, kExpected);
   if (parts[1] != "left" && parts[1] != "right") return bad(spec, "SIDE: expected left or right");
   p.side = std::string(parts[1]);
@@ -192,6 +208,7 @@ Result<Pathology> parse_pathology(std::string_view spec) {
 }
 
 Status apply_pathology(BakedAsset& asset, const Pathology& p) {
+  if (p.kind == PathologyKind::ards) return collapse_dependent(asset, p.severity, p.spec);
   if (p.kind == PathologyKind::emphysema) {
     const std::size_t only = p.side.empty() ? asset.lungs.size() : find_lung(asset, p.side);
     if (!p.side.empty() && only == asset.lungs.size())
@@ -220,11 +237,16 @@ bool has_emphysema(const std::vector<std::string>& specs) {
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {
   if (specs.empty()) return {};
   BakedAsset changed = asset;
+  std::vector<Pathology> parsed;
   for (const std::string& spec : specs) {
     Result<Pathology> p = parse_pathology(spec);
     if (!p) return p.with_context("");
-    if (Status s = apply_pathology(changed, *p); !s) return s;
+    parsed.push_back(p.take());
   }
+  // ARDS's pattern is fitted to the response and geometry the others leave, so it goes last.
+  std::stable_partition(parsed.begin(), parsed.end(), [](const Pathology& p) { return p.kind != PathologyKind::ards; });
+  for (const Pathology& p : parsed)
+    if (Status s = apply_pathology(changed, p); !s) return s;
   asset = std::move(changed);
   return {};
 }

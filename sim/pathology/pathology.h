@@ -21,9 +21,15 @@
 ///   volume (severe COPD's functional residual capacity is 130-150 % of predicted). Its poor recoil, a slower and
 ///   longer expiration, is the breathing's: the runtime breathes with the `emphysema` preset (compliance 140
 ///   mL/cmH2O, resistance 10.5 cmH2O.s/L, tau 1.5 s against the normal 0.36 s) when the breathing is at its default.
+/// - `ards:SEVERITY` (0 to 1): the acute respiratory distress syndrome's heavy, wet lung collapses where it lies
+///   lowest, and which part that is follows the posture: supine the dorsal lung stops ventilating and the breath
+///   moves ventral, prone the dorsal lung recruits. Not a change of the asset but of the applied force, evaluated
+///   per posture (sim/force/dependent_collapse.h): a pattern that is not linear in position, carried by the SH.
+///   Applied after the others, whatever the order given.
 ///
-/// All are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at load: no
-/// second bake, no larger asset, no work in the frame (docs/design.md, "Pathologies").
+/// The first three are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at
+/// load: no second bake, no larger asset, no work in the frame; ARDS costs a projection of its pattern per change
+/// of posture (docs/design.md, "Pathologies").
 #pragma once
 
 #include <string>
@@ -36,12 +42,13 @@
 
 namespace lungar::sim {
 
-enum class PathologyKind { pneumothorax, consolidation, emphysema };
+enum class PathologyKind { pneumothorax, consolidation, emphysema, ards };
 enum class LungThird { upper, middle, lower };
 
-inline constexpr EnumNames<PathologyKind, 3> kPathologyKindNames{{{{PathologyKind::pneumothorax, "pneumothorax"},
+inline constexpr EnumNames<PathologyKind, 4> kPathologyKindNames{{{{PathologyKind::pneumothorax, "pneumothorax"},
                                                                    {PathologyKind::consolidation, "consolidation"},
-                                                                   {PathologyKind::emphysema, "emphysema"}}}};
+                                                                   {PathologyKind::emphysema, "emphysema"},
+                                                                   {PathologyKind::ards, "ards"}}}};
 inline constexpr EnumNames<LungThird, 3> kLungThirdNames{
     {{{LungThird::upper, "upper"}, {LungThird::middle, "middle"}, {LungThird::lower, "lower"}}}};
 
@@ -62,11 +69,12 @@ struct Pathology {
   std::string side;                     ///< the lung's name in the asset: "left" or "right" ("" emphysema: both)
   double percent = 0;                   ///< pneumothorax: the volume lost, percent
   LungThird region = LungThird::lower;  ///< consolidation: which third of the height
-  double severity = 0;                  ///< emphysema: 0 to 1
+  double severity = 0;                  ///< emphysema, ards: 0 to 1
   std::string spec;                     ///< as the user wrote it
 };
 
-/// "pneumothorax:right:30" or "consolidation:left:upper" -> a Pathology, or one line saying what was expected.
+/// "pneumothorax:right:30", "consolidation:left:upper", "emphysema:0.5", "ards:0.6" -> a Pathology, or one line
+/// saying what was expected.
 Result<Pathology> parse_pathology(std::string_view spec);
 
 /// Applies `p` to `asset`; an error (asset untouched) when the asset has no lung on that side.
@@ -75,8 +83,8 @@ Status apply_pathology(BakedAsset& asset, const Pathology& p);
 /// Whether any of `specs` is an emphysema (whose recoil is the breathing's: the runtime's preset).
 bool has_emphysema(const std::vector<std::string>& specs);
 
-/// Parses and applies each spec in order; the error names the spec. All or nothing: on an error `asset` is
-/// unchanged.
+/// Parses and applies each spec in order (ARDS last); the error names the spec. All or nothing: on an error
+/// `asset` is unchanged.
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs);
 
 }  // namespace lungar::sim

@@ -48,6 +48,7 @@ TEST(AssetIo, AVersionOneAssetLoadsAsThePapersModel) {
   ASSERT_TRUE(a) << a.error();
   EXPECT_EQ(a->motion_model, MotionModel::paper);
   EXPECT_EQ(a->directions, a->normals);
+  EXPECT_FALSE(a->has_sphere_dirs()) << "older assets hold no sphere points";
 }
 
 TEST(AssetIo, AnUnknownMotionModelIsRefusedByName) {
@@ -88,6 +89,8 @@ TEST(AssetIo, RoundTripKeepsEveryField) {
   EXPECT_EQ(b->positions, a.positions);
   EXPECT_EQ(b->normals, a.normals);
   EXPECT_EQ(b->directions, a.directions);
+  ASSERT_EQ(a.sphere_dirs.size(), a.positions.size()) << "the bake keeps each vertex's point on the SH sphere";
+  EXPECT_EQ(b->sphere_dirs, a.sphere_dirs);
   EXPECT_EQ(b->motion_model, a.motion_model);
   EXPECT_EQ(b->areas, a.areas);
   EXPECT_EQ(b->lung_of_vertex, a.lung_of_vertex);
@@ -174,7 +177,7 @@ TEST_F(DamagedAsset, WrongVersionIsNamed) {
   std::string damaged = bytes_;
   damaged[8] = 7;
   const std::string e = error_for(damaged);
-  EXPECT_NE(e.find("version: expected 1 to 2, found 7"), std::string::npos) << e;
+  EXPECT_NE(e.find("version: expected 1 to 3, found 7"), std::string::npos) << e;
 }
 
 TEST_F(DamagedAsset, WrongMagicIsNamed) {

@@ -199,9 +199,11 @@ TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
   std::filesystem::remove(dir.file("e.ply"));
   ASSERT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 0) << slurp(dir.file("err"));
   std::filesystem::remove(dir.file("e.ply"));
-  EXPECT_EQ(run(args + " --pathology ards:0.4", dir.file("err")), 1);
+  ASSERT_EQ(run(args + " --pathology ards:0.4", dir.file("err")), 0) << slurp(dir.file("err"));
+  std::filesystem::remove(dir.file("e.ply"));
+  EXPECT_EQ(run(args + " --pathology ards:1.4", dir.file("err")), 1);
   const std::string err = slurp(dir.file("err"));
-  EXPECT_NE(err.find("'ards:0.4'"), std::string::npos) << err;
+  EXPECT_NE(err.find("'ards:1.4'"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
 }

@@ -12,6 +12,7 @@
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
+#include "sim/pathology/pathology.h"
 #include "sim/force/gravity.h"
 
 namespace lungar::platform::bench {
@@ -131,6 +132,11 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(a.positions.size());
   std::optional<sim::Eq1Deformer> eq1;
   if (a.has_transfer_rows()) eq1.emplace(a);
+  sim::BakedAsset ards;
+  if (work == CpuWork::ForceShArds) {
+    ards = a;
+    if (Status s = sim::apply_pathologies(ards, {"ards:0.6"}); !s) return {};
+  }
   return time_reps(timing, [&](long k) {
     const double t = static_cast<double>(k * kFrameStepNs) * 1e-9;
     const Eigen::Quaterniond q = scripted_turn(t);
@@ -138,6 +144,9 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
     switch (work) {
       case CpuWork::ForceSh:
         sim::force_sh(a, sim::ForceMode::exact, q, force.data());
+        break;
+      case CpuWork::ForceShArds:
+        sim::force_sh(ards, sim::ForceMode::exact, q, force.data());
         break;
       case CpuWork::Eq7:
         sim::force_sh(a, sim::ForceMode::exact, q, force.data());

@@ -44,7 +44,9 @@ struct FrameResult {
 };
 
 /// The CPU work of a frame alone, without drawing: what the "CPU eq. (7) >= 20x faster than eq. (1)" target means.
-enum class CpuWork { ForceSh, Eq7, Eq1 };
+/// ForceShArds: the force SH with ARDS (sim/force/dependent_collapse.h), the posture changing every frame, so
+/// that the collapse plane and the pattern's fits are redone each time (the worst case).
+enum class CpuWork { ForceSh, ForceShArds, Eq7, Eq1 };
 
 class BenchScene {
  public:

@@ -224,7 +224,8 @@ class Run {
               {"transfer_nnz_per_row_mean", nodes ? static_cast<double>(s.asset().transfer_cols.size()) / nodes : 0.0}};
     double eq7 = 0, eq1 = 0;
     for (auto [work, key] :
-         {std::pair{CpuWork::ForceSh, "force_sh"}, std::pair{CpuWork::Eq7, "eq7"}, std::pair{CpuWork::Eq1, "eq1"}}) {
+         {std::pair{CpuWork::ForceSh, "force_sh"}, std::pair{CpuWork::ForceShArds, "force_sh_ards"},
+          std::pair{CpuWork::Eq7, "eq7"}, std::pair{CpuWork::Eq1, "eq1"}}) {
       const RepStats st = s.measure_cpu(work, timing_);
       j[key] = stats_json(st);
       j[key].erase("fps");

@@ -96,15 +96,17 @@ void HudLine::set_text(std::string_view text) {
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 
-void HudLine::draw(const Viewport& viewport, int scale) const {
+void HudLine::draw(const Viewport& viewport, int scale) const { draw_at(viewport, 4, viewport.height - 4, scale); }
+
+void HudLine::draw_at(const Viewport& viewport, int left_px, int top_px, int scale) const {
   if (chars_ == 0) return;
   GLint read = 0;
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
-  const int w = std::min(chars_ * kCellW * scale, viewport.width - 8);
-  const int top = viewport.y + viewport.height - 4;
-  glBlitFramebuffer(0, 0, w / scale, kCellH, viewport.x + 4, top - kCellH * scale, viewport.x + 4 + w, top,
-                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const int w = std::min(chars_ * kCellW * scale, viewport.width - 2 * left_px);
+  const int top = viewport.y + top_px, left = viewport.x + left_px;
+  glBlitFramebuffer(0, 0, w / scale, kCellH, left, top - kCellH * scale, left + w, top, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
 }
 

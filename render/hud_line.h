@@ -25,6 +25,8 @@ class HudLine {
   /// Blits the line into the top-left corner of `viewport` of the bound draw framebuffer, `scale` screen
   /// pixels per font pixel. The draw framebuffer binding is restored.
   void draw(const Viewport& viewport, int scale = 2) const;
+  /// The same with the line's top `top_px` above the viewport's bottom edge and its left `left_px` right of its left.
+  void draw_at(const Viewport& viewport, int left_px, int top_px, int scale = 2) const;
   /// The rasterised line (for tests): kMaxChars * kCellW by kCellH RGBA pixels, top row first; `width()` used.
   const std::uint8_t* pixels() const { return pixels_.data(); }
   int width() const { return chars_ * kCellW; }

@@ -43,9 +43,11 @@ Result<Renderer> Renderer::create(const LungDrawable& drawable) {
     if (!program) return fail(program.error());
     Slots& s = r.slots_[v];
     s.program = program.take();
-    s.program.find_uniforms({{&s.force, "u_force"}, {&s.linear, "u_linear"}, {&s.coeff, "u_coeff"}, {&s.coeff_width, "u_coeff_width"},
+    s.program.find_uniforms({{&s.force, "u_force"}, {&s.linear, "u_linear"}, {&s.volume, "u_volume"},
+                             {&s.sweep_ml, "u_sweep_ml"}, {&s.coeff, "u_coeff"}, {&s.coeff_width, "u_coeff_width"},
                              {&s.mvp, "u_model_view_proj"}, {&s.eye, "u_eye_model"}, {&s.color, "u_color"},
-                             {&s.ambient, "u_ambient"}, {&s.point_size, "u_point_size"}});
+                             {&s.ambient, "u_ambient"}, {&s.point_size, "u_point_size"},
+                             {&s.sweep_scale, "u_sweep_full_scale_mm"}});
     glUseProgram(s.program.id());
     if (s.coeff >= 0) glUniform1i(s.coeff, 0);  // texture unit 0
   }
@@ -91,13 +93,13 @@ void Renderer::use(const LungDrawable& drawable, Variant v) const {
 }
 
 void Renderer::set_force(Variant v, const LungFrame& lung) {
-  // The shader sees dV * f: eq. (7) scaled by the volume change (D in mm).
-  for (std::uint32_t k = 0; k < coefficients_; ++k) padded_force_[k] = lung.volume_change_ml * lung.force[k];
+  // The shader sees f per mL and dV apart: it moves the vertex by dV times the per-mL displacement, and the
+  // ventilation map needs that displacement per mL (times the last tidal volume).
+  std::copy_n(lung.force.begin(), coefficients_, padded_force_.begin());
   glUniform4fv(slots_[v].force, static_cast<GLsizei>(coeff_vec4_), padded_force_.data());
-  if (slots_[v].linear >= 0) {
-    const float dv = lung.volume_change_ml;
-    glUniform4f(slots_[v].linear, dv * lung.linear[0], dv * lung.linear[1], dv * lung.linear[2], dv * lung.linear[3]);
-  }
+  if (slots_[v].linear >= 0) glUniform4f(slots_[v].linear, lung.linear[0], lung.linear[1], lung.linear[2], lung.linear[3]);
+  glUniform1f(slots_[v].volume, lung.volume_change_ml);
+  if (slots_[v].sweep_ml >= 0) glUniform1f(slots_[v].sweep_ml, lung.sweep_ml);
 }
 
 void Renderer::set_eye(Variant v, const glm::mat4& model, const EyeView& eye, const glm::vec3& color,
@@ -110,6 +112,9 @@ void Renderer::set_eye(Variant v, const glm::mat4& model, const EyeView& eye, co
   glUniform3f(s.color, color.r, color.g, color.b);
   glUniform1f(s.ambient, f.ambient);
   glUniform1f(s.point_size, f.point_size_px);
+  // Only a draw that deforms knows each point's sweep; the rest overlay and drawn positions keep their colours.
+  const bool deforms = v == kDeformCull || v == kDeformNoCull;
+  if (s.sweep_scale >= 0) glUniform1f(s.sweep_scale, deforms ? f.ventilation_full_scale_mm : 0.f);
 }
 
 void Renderer::deform_once(const LungDrawable& drawable, std::span<const LungFrame> lungs,
@@ -201,7 +206,8 @@ Status Renderer::draw(const LungDrawable& drawable, const FrameInputs& f, FrameS
   if (f.source == PositionSource::Shader) {
     // Deform-once pays a transform-feedback pass to share the deformation between eyes; one eye has nothing to
     // share, so it deforms in its draw.
-    if (f.strategy == StereoStrategy::DeformOnce && f.eyes.size() > 1) {
+    // The ventilation map colours by the displacement, which only a deforming draw computes: it draws per eye.
+    if (f.strategy == StereoStrategy::DeformOnce && f.eyes.size() > 1 && !(f.ventilation_full_scale_mm > 0)) {
       deform_once(drawable, f.lungs, lung_counts);
       if (stats != nullptr) {
         for (std::uint32_t n : lung_counts) stats->points_deformed += n;

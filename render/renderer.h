@@ -38,11 +38,14 @@ inline const char* to_string(StereoStrategy v) { return kStereoStrategyNames.nam
 /// Per lung, per frame.
 struct LungFrame {
   std::span<const float> force;   ///< f_lm, drawable.coefficients() values, mm per mL per unit of T (normalised)
-  float volume_change_ml = 0.f;   ///< dV; the shader sees dV * f
+  float volume_change_ml = 0.f;   ///< dV; the vertex moves by dV times its displacement per mL
   glm::vec3 color{0.9f, 0.45f, 0.45f};
   /// The linear weights w of the orientation (sim/force/force_sh.h, linear_weights), mm per mL per unit of the
-  /// off-axis basis; the shader sees dV * w. Read only for a drawable with the off-axis part (the sliding model).
+  /// off-axis basis. Read only for a drawable with the off-axis part (the sliding model).
   std::array<float, 4> linear{};
+  /// The lung's volume swing over the last breath, mL: the ventilation map colours each point by the depth its
+  /// patch of surface swept in it (FrameInputs::ventilation_full_scale_mm).
+  float sweep_ml = 0.f;
 };
 
 struct FrameInputs {
@@ -60,6 +63,10 @@ struct FrameInputs {
   bool cull_back_facing = true;       ///< points mode
   float ambient = 0.3f;
   glm::vec3 rest_color{0.55f, 0.55f, 0.55f};
+  /// > 0: the ventilation map: each deformed point coloured by the depth of air (mm, volume per area) its patch
+  /// of surface swept over the last breath (LungFrame::sweep_ml), this depth at the ramp's top
+  /// (render/ventilation_ramp.h); 0: the lungs' colours. Drawn per eye whatever the strategy.
+  float ventilation_full_scale_mm = 0.f;
   bool clear = true;                  ///< clear the bound framebuffer to `background` first
   glm::vec3 background{0.f};
 };
@@ -87,7 +94,8 @@ class Renderer {
  private:
   struct Slots {
     gl::Program program;
-    GLint force = -1, linear = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1, color = -1, ambient = -1, point_size = -1;
+    GLint force = -1, linear = -1, volume = -1, sweep_ml = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1,
+          color = -1, ambient = -1, point_size = -1, sweep_scale = -1;
   };
   enum Variant { kDeformCull, kDeformNoCull, kPlainCull, kPlainNoCull, kCapture, kVariants };
 
@@ -104,7 +112,7 @@ class Renderer {
   std::uint32_t coeff_vec4_ = 0;
   std::uint32_t coefficients_ = 0;
   std::array<Slots, kVariants> slots_;
-  std::vector<float> padded_force_;  ///< dV * f, zero-padded to whole vec4s; sized once
+  std::vector<float> padded_force_;  ///< f, zero-padded to whole vec4s (dV goes apart); sized once
   gl::TransformFeedback feedback_;
   gl::Framebuffer capture_fbo_;      ///< transform feedback needs a complete framebuffer even with no raster
   gl::Renderbuffer capture_rb_;

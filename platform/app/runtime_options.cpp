@@ -33,6 +33,27 @@ Status override_choice(const char* option, const std::string& text, const EnumNa
   return ok();
 }
 
+/// --view: a view (mono, stereo), "ventilation" (the map over the config's view), or both, comma-separated.
+Status override_view(const std::string& text, Settings& s) {
+  if (text.empty()) return ok();
+  bool has_view = false;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    start = end + 1;
+    if (item == "ventilation") {
+      s.render.ventilation_map = true;
+    } else if (const auto view = kViewNames.parse(item); view && !has_view) {
+      s.hmd.view = *view;
+      has_view = true;
+    } else {
+      return fail("--view: expected mono, stereo or ventilation, or a view and the map (stereo,ventilation), got '" +
+                  text + "'");
+    }
+  }
+  return ok();
+}
+
 /// "igtl:HOST" or "igtl:HOST:PORT" (the config's port stands in when it is left out).
 Status override_igtl(const std::string& tracker, drivers::TrackerConfig& t) {
   t.source = drivers::TrackerSource::Igtl;
@@ -97,8 +118,16 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--fullscreen", o.fullscreen, "full screen on display.x11_output (the HMD), as the user unit runs it");
   app.add_option("--frames", o.frames, "stop after N frames");
   app.add_option("--seconds", o.seconds, "stop after S seconds (default 10 unless --frames; 0: until stopped)");
-  app.add_option("--view", o.view, "mono | stereo (default: from the config)")
-      ->check(CLI::IsMember(names_of(kViewNames)));
+  app.add_option("--view", o.view,
+                 "mono | stereo | ventilation, or a view and the map: stereo,ventilation (default: from the config; "
+                 "ventilation colours each point by its ventilation over the last breath)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            Settings scratch;
+            const Status s = override_view(text, scratch);
+            return s ? std::string() : s.error().substr(std::string("--view: ").size());
+          },
+          "VIEW"));
   app.add_option("--mode", o.mode, "points | mesh")->check(CLI::IsMember(names_of(render::kDrawModeNames)));
   app.add_option("--deform", o.deform,
                  "gpu (vertex shader, eq. 7) | cpu7 (CPU eq. 7) | cpu1 (CPU eq. 1) | none (the rest shape)")
@@ -134,7 +163,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (o.fullscreen) s.display.output = Output::Fullscreen;
   if (o.headless) s.display.output = Output::Headless;
   if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
-  if (Status v = override_choice("--view", o.view, kViewNames, s.hmd.view); !v) return v;
+  if (Status v = override_view(o.view, s); !v) return v;
   if (Status m = override_choice("--mode", o.mode, render::kDrawModeNames, s.render.mode); !m) return m;
   if (Status d = override_choice("--deform", o.deform, kDeformNames, s.render.deform); !d) return d;
   if (o.frames && *o.frames <= 0) {

@@ -28,6 +28,8 @@ RuntimeConfig runtime_config(const Settings& s) {
   c.point_size_px = static_cast<float>(r.point_size_px);
   c.level_of_detail = r.lod;
   c.hud = r.hud;
+  c.ventilation_map = r.ventilation_map;
+  c.ventilation_full_scale_mm = static_cast<float>(r.ventilation_full_scale_mm);
   c.color_left = to_glm(r.color_left);
   c.color_right = to_glm(r.color_right);
   c.background = to_glm(r.background);

@@ -26,6 +26,8 @@ void read_render(TomlSection s, RenderSettings& r) {
   s.boolean("lod", r.lod);
   s.boolean("half_float", r.half_float);
   s.boolean("hud", r.hud);
+  s.boolean("ventilation_map", r.ventilation_map);
+  s.number("ventilation_full_scale_mm", r.ventilation_full_scale_mm, 1.0, 100.0, "mm");
   s.numbers("color_left", r.color_left, 0.0, 1.0, "(linear RGB)");
   s.numbers("color_right", r.color_right, 0.0, 1.0, "(linear RGB)");
   s.numbers("background", r.background, 0.0, 1.0, "(linear RGB)");

@@ -232,6 +232,7 @@ bool EglContext::process_events() {
     if (event.type == KeyPress) {
       const KeySym key = XLookupKeysym(&event.xkey, 0);
       if (key == XK_Escape || key == XK_q) open_ = false;
+      if (key >= XK_a && key <= XK_z && keys_.size() < 64) keys_ += static_cast<char>('a' + (key - XK_a));
     }
   }
   return open_;

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "config/base/result.h"
 
@@ -46,6 +47,8 @@ class EglContext {
   Status swap_buffers();
   /// Handles pending window events; false once the window was closed or Escape/q pressed.
   bool process_events();
+  /// The letter keys pressed since the last call (lower-case), collected by process_events().
+  std::string take_keys() { return std::exchange(keys_, {}); }
   /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.
   std::string describe() const;
   /// The EGLDisplay, EGLConfig and EGLContext, for a runtime that takes the context (OpenXR's XR_MNDX_egl_enable).
@@ -65,6 +68,7 @@ class EglContext {
   int width_ = 0, height_ = 0;
   int x_ = 0, y_ = 0;
   bool open_ = true;
+  std::string keys_;
   std::string platform_;
 };
 

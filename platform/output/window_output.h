@@ -24,6 +24,7 @@ class WindowOutput final : public FrameOutput {
 
   std::string describe() const override;
   bool poll_events() override { return context_->process_events(); }
+  std::string take_keys() override { return context_->take_keys(); }
   Result<FrameTiming> begin_frame(std::int64_t now_ns) override {
     pacer_.wait(now_ns);  // on top of the swap interval, when display.max_fps asks for less
     return FrameTiming{};

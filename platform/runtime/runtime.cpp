@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "config/base/log_line.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
 #include "sim/deform/deform_eq7.h"
@@ -62,7 +63,12 @@ Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, Ru
   if (config.mode == render::DrawMode::Mesh && !parts.scene->drawable().has_triangles()) {
     return fail(parts.scene->name() + ": mesh mode expected an asset with triangles, got none");
   }
+  if (config.ventilation_map && position_source(config.deform) != render::PositionSource::Shader) {
+    return fail(std::string("ventilation map: it is drawn by the vertex shader, which knows each point's sweep: "
+                            "expected --deform gpu, got ") + to_string(config.deform));
+  }
   std::unique_ptr<Runtime> r(new Runtime(config, std::move(parts)));
+  r->ventilation_ = config.ventilation_map;
   r->max_ahead_ns_ = static_cast<std::int64_t>(config.prediction_max_ms * 1e6);
   const std::uint32_t c = asset.coefficients();
   r->force_.assign(asset.lungs.size() * c, 0.f);
@@ -92,6 +98,7 @@ Status Runtime::final_frame(const std::string& png_path) { return draw_frame(&pn
 
 bool Runtime::keep_running() {
   if (!parts_.output->poll_events()) return false;
+  take_keys();
   return !(frames_ > 0 && parts_.poses->finished());
 }
 
@@ -108,7 +115,7 @@ Status Runtime::draw_frame(const std::string* snapshot_png) {
   force_sh(now, state);                                   // 2. patient pose -> g in the lung frame -> f_lm
   const FrameViews& views = head_views(now, display_ns);  // 3. head pose at display time -> eye views
   if (timing->should_render) {
-    if (Status drawn = deform_and_draw(state, views); !drawn) return drawn;  // 4. dV * f_lm -> shader -> points
+    if (Status drawn = deform_and_draw(state, views); !drawn) return drawn;  // 4. f_lm, dV -> shader -> points
   }
   if (snapshot_png != nullptr) {
     if (Status shot = parts_.output->snapshot(*snapshot_png); !shot) return shot.with_context("snapshot: ");
@@ -145,13 +152,18 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
     deform_on_cpu(state);
     if (Status up = parts_.scene->drawable().upload_positions(cpu_positions_); !up) return up;
   }
-  // Each lung sweeps its posture's share of the breath (lying on a side, the lower lung takes more).
+  // Each lung sweeps its posture's share of the breath (lying on a side, the lower lung takes more), and of the
+  // last breath's swing for the ventilation map.
+  swing_.add(state.now_ns, state.breath.dv_ml);
+  const double swing_ml = swing_.swing_ml();
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
-    lung_frames_[l].volume_change_ml =
-        static_cast<float>(state.breath.dv_ml * sim::breath_share(asset_, l, state.gravity_lung));
+    const double share = sim::breath_share(asset_, l, state.gravity_lung);
+    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * share);
+    lung_frames_[l].sweep_ml = static_cast<float>(swing_ml * share);
   }
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
   draw_status_line(state.now_ns, state.breath.dv_ml, views);
+  draw_legend(views);
   for (const auto& listener : parts_.listeners) listener->on_frame(state);
   return ok();
 }
@@ -177,6 +189,7 @@ render::FrameInputs Runtime::frame_inputs(const FrameState& state, const FrameVi
   in.point_size_px = config_.point_size_px;
   in.level_of_detail = config_.level_of_detail;
   in.background = config_.background;
+  in.ventilation_full_scale_mm = ventilation_ ? config_.ventilation_full_scale_mm : 0.f;
   return in;
 }
 
@@ -213,6 +226,30 @@ void Runtime::draw_status_line(std::int64_t now_ns, double dv_ml, const FrameVie
   }
 }
 
+/// The ventilation map's legend in each view's bottom-left corner, while the map is shown.
+void Runtime::draw_legend(const FrameViews& views) {
+  if (!ventilation_) return;
+  if (!legend_) legend_.emplace(config_.ventilation_full_scale_mm);
+  for (std::size_t i = 0; i < views.count; ++i) {
+    if (!views.shared_target) parts_.output->bind_target(i);
+    legend_->draw(views.eyes[i].viewport);
+  }
+}
+
+/// V toggles the ventilation map.
+void Runtime::take_keys() {
+  for (char key : parts_.output->take_keys()) {
+    if (key != 'v') continue;
+    if (source_ != render::PositionSource::Shader) {
+      log_line("lungar", "ventilation map: drawn by the vertex shader; not with --deform " +
+                             std::string(to_string(config_.deform)));
+      continue;
+    }
+    ventilation_ = !ventilation_;
+    log_line("lungar", ventilation_ ? "ventilation map: on (V hides it)" : "ventilation map: off");
+  }
+}
+
 Status Runtime::present_and_record(const FrameState& state) {
   if (Status shown = parts_.output->end_frame(); !shown) return shown.with_context("output: ");
   const std::int64_t submitted = parts_.clock();
@@ -236,6 +273,7 @@ nlohmann::ordered_json Runtime::stats_json(double wall_s) const {
   j["nodes"] = asset_.vertex_count();
   j["view"] = config_.stereo ? "stereo" : "mono";
   j["deform"] = to_string(config_.deform);
+  j["ventilation_map"] = ventilation_;
   j["asset"] = parts_.scene->name();
   nlohmann::json parts = nlohmann::json::object();
   parts_.poses->add_stats(parts, wall_s);

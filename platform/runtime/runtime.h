@@ -26,8 +26,10 @@
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/pose_source.h"
 #include "platform/runtime/runtime_config.h"
+#include "platform/runtime/breath_swing.h"
 #include "render/hud_line.h"
 #include "render/renderer.h"
+#include "render/ventilation_legend.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/motion/ventral_share.h"
 
@@ -84,6 +86,8 @@ class Runtime {
   render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
   Status draw_views(const render::FrameInputs& in, const FrameViews& views);
   void draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views);
+  void draw_legend(const FrameViews& views);
+  void take_keys();
 
   const RuntimeConfig config_;
   RuntimeParts parts_;
@@ -99,6 +103,9 @@ class Runtime {
   render::PositionSource source_ = render::PositionSource::Shader;
 
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene
+  bool ventilation_ = false;            ///< the ventilation map is shown (config, then the V key)
+  std::optional<render::VentilationLegend> legend_;  ///< made when the map is first shown
+  BreathSwing swing_;                   ///< the last breath's dV swing, for the map
 
   drivers::PoseSample last_patient_, last_head_, measured_head_;
   double frame_estimate_ms_ = 16.0;

@@ -1,10 +1,15 @@
 // deform.vert — the paper's stage 3 (eq. 7) per vertex, then Lambert + ambient lighting for point or mesh drawing.
 //
-//   D_I = sum_lm T^I_lm f_lm          (f already multiplied by the volume change dV: D in mm)
-//   p'_I = p_I + D_I e_I + R_I w      (e_I: the vertex's baked direction of motion; its normal n_I in the paper's
+//   D_I = sum_lm T^I_lm f_lm          (f the force SH of one mL: D in mm per mL)
+//   u_I = D_I e_I + R_I w             (e_I: the vertex's baked direction of motion; its normal n_I in the paper's
 //                                      model, the principal direction of its vector displacement in the sliding
 //                                      model; R_I w: the sliding model's off-axis part, its 3x4 basis times the
 //                                      orientation's linear weights; docs/design.md "Vector displacement")
+//   p'_I = p_I + dV u_I
+//
+// The ventilation map colours each vertex by the depth of air its patch of surface swept over the last breath,
+// n_I . u_I times the lung's last tidal volume (mm: volume per area), on a ramp whose top is u_sweep_full_scale_mm
+// (render/ventilation_ramp.h holds the same ramp for the legend); 0 there draws the lung's own colour.
 //
 // The host prepends `#version 300 es` and these defines (render/shader_program.cpp):
 //   DEFORM          1: evaluate eq. (7); 0: draw a_position as given (rest shape, CPU-deformed or captured positions)
@@ -26,9 +31,11 @@ layout(location = 11) in vec3 a_direction;  // e_I, unit (render/lung_drawable.h
 layout(location = 12) in vec4 a_off_x;      // row x of R_I: (r0, r_x, r_y, r_z), mm per unit pressure
 layout(location = 13) in vec4 a_off_y;
 layout(location = 14) in vec4 a_off_z;
-uniform vec4 u_linear;                      // dV * w of this vertex's lung
+uniform vec4 u_linear;                      // w of this vertex's lung, mm per mL per unit of R
 #endif
-uniform vec4 u_force[COEFF_VEC4];  // dV * f_lm of this vertex's lung, mm per unit of T
+uniform vec4 u_force[COEFF_VEC4];  // f_lm of this vertex's lung, per mL: D in mm per mL
+uniform float u_volume;            // dV of this vertex's lung, mL
+uniform float u_sweep_ml;          // the lung's last tidal volume, mL (the ventilation map)
 #if COEFF_TEXTURE
 uniform highp sampler2D u_coeff;   // texel (v * COEFF_VEC4 + k) holds T^v_{4k..4k+3}
 uniform int u_coeff_width;         // texels per row of u_coeff
@@ -67,6 +74,7 @@ uniform vec3 u_eye_model;        // this eye's centre in the lung frame (back-fa
 uniform vec3 u_color;            // lung colour
 uniform float u_ambient;         // ambient share of the lighting
 uniform float u_point_size;      // pixels (the paper: 5)
+uniform float u_sweep_full_scale_mm;  // > 0: colour by the ventilation map, this sweep at the ramp's top
 
 out vec3 v_position;             // deformed position, captured by transform feedback
 flat out vec3 v_color;
@@ -113,14 +121,29 @@ float displacement_eq7() {
 #endif
 }
 
+// The ventilation map's ramp from no sweep (0) to full scale (1): dark blue, teal, green, yellow (viridis-like, so
+// that it reads in grey too); the same stops as render/ventilation_ramp.h.
+vec3 ventilation_ramp(float s) {
+  s = clamp(s, 0.0, 1.0);
+  vec3 c0 = vec3(0.27, 0.00, 0.33), c1 = vec3(0.23, 0.32, 0.55), c2 = vec3(0.13, 0.57, 0.55),
+       c3 = vec3(0.37, 0.79, 0.38), c4 = vec3(0.99, 0.91, 0.14);
+  if (s < 0.25) return mix(c0, c1, s * 4.0);
+  if (s < 0.5) return mix(c1, c2, (s - 0.25) * 4.0);
+  if (s < 0.75) return mix(c2, c3, (s - 0.5) * 4.0);
+  return mix(c3, c4, (s - 0.75) * 4.0);
+}
+
 void main() {
 #if DEFORM
-  vec3 p = a_position + displacement_eq7() * a_direction;  // p' = p + D e
+  vec3 u = displacement_eq7() * a_direction;  // D e, mm per mL
 #if OFF_AXIS
-  p += vec3(dot(a_off_x, u_linear), dot(a_off_y, u_linear), dot(a_off_z, u_linear));  // + R w
+  u += vec3(dot(a_off_x, u_linear), dot(a_off_y, u_linear), dot(a_off_z, u_linear));  // + R w
 #endif
+  vec3 p = a_position + u_volume * u;  // p' = p + dV (D e + R w)
+  float sweep_mm = u_sweep_ml * dot(a_normal, u);
 #else
   vec3 p = a_position;
+  float sweep_mm = 0.0;
 #endif
   v_position = p;
 
@@ -128,7 +151,8 @@ void main() {
   vec3 to_eye = u_eye_model - p;
   float facing = dot(a_normal, to_eye) * inversesqrt(max(dot(to_eye, to_eye), 1e-12));  // cos of the view angle
   float lambert = max(facing, 0.0);
-  v_color = u_color * (u_ambient + (1.0 - u_ambient) * lambert);
+  vec3 base = u_sweep_full_scale_mm > 0.0 ? ventilation_ramp(sweep_mm / u_sweep_full_scale_mm) : u_color;
+  v_color = base * (u_ambient + (1.0 - u_ambient) * lambert);
   gl_PointSize = u_point_size;
   gl_Position = u_model_view_proj * vec4(p, 1.0);
 #if CULL

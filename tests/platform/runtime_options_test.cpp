@@ -48,7 +48,8 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
 
 TEST(RuntimeOptions, TheCommandLineRefusesNamesThatAreNotInTheTables) {
   RuntimeOptions o;
-  EXPECT_EQ(parse({"--view", "left"}, o), "--view: left not in {mono,stereo}");
+  EXPECT_EQ(parse({"--view", "left"}, o),
+            "--view: expected mono, stereo or ventilation, or a view and the map (stereo,ventilation), got 'left'");
   EXPECT_EQ(parse({"--deform", "cuda"}, o), "--deform: cuda not in {gpu,cpu7,cpu1,none}");
   EXPECT_EQ(parse({"--frames", "many"}, o), "Could not convert: --frames = many");
 }
@@ -103,7 +104,16 @@ TEST(RuntimeOptions, BadValuesAreNamed) {
   EXPECT_EQ(apply_overrides(o, s).error(), "--tracker: expected a port in [1, 65535] after igtl:HOST:, got '70000'");
   o = {};
   o.view = "left";
-  EXPECT_EQ(apply_overrides(o, s).error(), "--view: expected mono or stereo, got 'left'");
+  EXPECT_EQ(apply_overrides(o, s).error(),
+            "--view: expected mono, stereo or ventilation, or a view and the map (stereo,ventilation), got 'left'");
+  o = {};
+  o.view = "mono,ventilation";
+  ASSERT_TRUE(apply_overrides(o, s));
+  EXPECT_EQ(s.hmd.view, lungar::platform::View::Mono);
+  EXPECT_TRUE(s.render.ventilation_map);
+  o = {};
+  o.view = "mono,stereo";
+  EXPECT_FALSE(apply_overrides(o, s)) << "one view";
   o = {};
   o.deform = "cuda";
   EXPECT_EQ(apply_overrides(o, s).error(), "--deform: expected gpu, cpu7, cpu1 or none, got 'cuda'");

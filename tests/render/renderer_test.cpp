@@ -184,6 +184,38 @@ TEST_F(RendererTest, OverlayShowsTheRestShapeInGrey) {
   EXPECT_GT(grey, 1000u);
 }
 
+TEST_F(RendererTest, TheVentilationMapColoursEachPointByTheAirItsSurfaceSweptOverTheLastBreath) {
+  // The ramp's zero has no green (render/ventilation_ramp.h) and the green grows along it: a lung that swept
+  // nothing has no green pixel, one that swept a breath has, and more for a deeper breath. The map off draws the
+  // lungs' own colours, both with green.
+  auto green = [](const std::vector<std::uint8_t>& rgba, std::size_t& count) {
+    double sum = 0;
+    count = 0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4)
+      if (rgba[i + 1] > 10) sum += rgba[i + 1], ++count;
+    return count > 0 ? sum / static_cast<double>(count) : 0.0;
+  };
+  std::size_t lit = 0, still = 0, one = 0, deeper = 0;
+  FrameInputs f = frame_;
+  lungs_[0].sweep_ml = 0.f;
+  lungs_[1].sweep_ml = 0.f;
+  green(draw(f), lit);
+  EXPECT_GT(lit, 5000u) << "map off: the lungs' own colours";
+  f.ventilation_full_scale_mm = 2.f;
+  green(draw(f), still);
+  EXPECT_EQ(still, 0u) << "no lung swept anything: all at the ramp's zero";
+  lungs_[0].sweep_ml = 500.f;
+  const auto image = draw(f);
+  const double mean_one = green(image, one);
+  EXPECT_GT(one, lit / 5) << "one lung breathed: its points climb the ramp";
+  EXPECT_LT(one, lit * 3 / 4) << "the other did not";
+  lungs_[0].sweep_ml = 1500.f;
+  EXPECT_GT(green(draw(f), deeper), mean_one + 5.0) << "a deeper breath is further up the ramp";
+  f.strategy = StereoStrategy::DeformOnce;  // the map needs the deformation in the draw: drawn per eye anyway
+  lungs_[0].sweep_ml = 500.f;
+  EXPECT_LT(differing_fraction(draw(f), image), 0.001);
+}
+
 TEST_F(RendererTest, MeshModeFillsTheSilhouette) {
   const auto mesh_asset = test::ellipsoid_pair_mesh(48, 64, 4, 5);
   auto mesh = LungDrawable::create(mesh_asset);

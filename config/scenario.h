@@ -58,6 +58,9 @@ struct Scenario {
   std::string name;
   std::string description;
   double duration_s = 60.0;
+  /// The patient's pathologies for the whole scenario (sim/pathology/pathology.h specs, checked where the asset is
+  /// loaded), added to the settings' [sim] pathology: "a patient with ARDS, turned prone".
+  std::vector<std::string> pathologies;
   BreathingSettings start;  ///< preset, rate, I:E and tidal volume at t = 0
   std::string start_pose = "upright";
   std::array<double, 4> start_rotation_wxyz = {1.0, 0.0, 0.0, 0.0};  ///< used when start_pose is empty

@@ -202,6 +202,7 @@ Result<Scenario> parse(const std::string& text, const std::string& name, const B
     top.text("name", sc.name);
     top.text("description", sc.description);
     top.number("duration_s", sc.duration_s, 0.1, kMaxScenarioS, "s");
+    top.texts("pathology", sc.pathologies);
     read_start(top.section("start"), sc);
     {
       // [[event]] is an array of tables, which TomlSection does not read; unknown top-level keys are looked for
@@ -211,7 +212,9 @@ Result<Scenario> parse(const std::string& text, const std::string& name, const B
       TomlSection others(&rest, "", name);
       std::string ignored_text;
       double ignored_number = 0;
+      std::vector<std::string> ignored_texts;
       others.text("name", ignored_text);
+      others.texts("pathology", ignored_texts);
       others.text("description", ignored_text);
       others.number("duration_s", ignored_number, 0.1, kMaxScenarioS, "s");
       (void)others.section("start");

@@ -2,11 +2,13 @@
 /// @brief Wiring a Runtime from the settings, the frame loop's limits, and the outputs of a run.
 #include "platform/app/run.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
+#include "config/scenario_load.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
 #include "platform/app/followed_breathing.h"
@@ -188,6 +190,19 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
   return exit_code;
 }
 
+/// A scenario's patient brings its pathologies (after the settings' own); a scenario that does not load is
+/// reported where the breathing reads it.
+void take_the_scenarios_pathologies(Settings& s) {
+  if (s.breathing.scenario.empty()) return;
+  Result<config::Scenario> scenario = config::load_scenario(s.breathing.scenario, s.breathing);
+  if (!scenario) return;
+  for (const std::string& spec : scenario->pathologies) {
+    if (std::find(s.sim.pathologies.begin(), s.sim.pathologies.end(), spec) != s.sim.pathologies.end()) continue;
+    log_line("scenario " + scenario->name + ": pathology " + spec);
+    s.sim.pathologies.push_back(spec);
+  }
+}
+
 /// An emphysema's poor recoil is the breathing's: the emphysema preset, unless the breathing was chosen otherwise.
 void breathe_as_the_pathologies_do(Settings& s) {
   if (!sim::has_emphysema(s.sim.pathologies) || s.breathing.preset != "normal" || !s.breathing.scenario.empty()) return;
@@ -199,6 +214,7 @@ void breathe_as_the_pathologies_do(Settings& s) {
 
 int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   Settings s = configured;  // the demo's CT lungs may set the registration
+  take_the_scenarios_pathologies(s);
   breathe_as_the_pathologies_do(s);
   log_line(summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);

@@ -222,7 +222,7 @@ TEST(BadScenario, EventIsNotAnArrayOfTables) {
 
 TEST(BadScenario, UnknownTopLevelKey) {
   EXPECT_EQ(error_of("duration = 30\n"),
-            "bad.toml:1: unknown key 'duration'; expected one of: description, duration_s, name, start");
+            "bad.toml:1: unknown key 'duration'; expected one of: description, duration_s, name, pathology, start");
 }
 
 TEST(BadScenario, SyntaxErrorAndMissingFile) {

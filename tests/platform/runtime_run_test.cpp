@@ -11,12 +11,30 @@
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/plus/plus_sequence_writer.h"
 #include "platform/app/run.h"
+#include "sim/asset/asset_io.h"
+#include "sim/bake/bake.h"
 
 using namespace lungar;
 
 namespace {
 
 const std::string kData = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/";
+
+/// A small procedural pair in the current asset format (with the sphere points ARDS needs), baked once per run.
+const std::string& small_current_asset() {
+  static const std::string path = [] {
+    const std::string p = (std::filesystem::temp_directory_path() / "lungar_runtime_small_v3.lungbake").string();
+    sim::BakeOptions options;
+    options.threads = 2;
+    options.evaluate = false;
+    options.transfer_rows = false;
+    Result<sim::BakeOutput> out = sim::bake_procedural(4000, 7, options, nullptr);
+    if (!out) throw std::runtime_error(out.error());
+    if (Status s = sim::write_asset(out->asset, p); !s) throw std::runtime_error(s.error());
+    return p;
+  }();
+  return path;
+}
 
 class RuntimeRun : public ::testing::Test {
  protected:
@@ -147,6 +165,46 @@ TEST_F(RuntimeRun, ARightPneumothoraxLeavesTheRightLungUnderATenthOfEachBreath) 
   EXPECT_LE(right, 0.10 * total) << "the collapsed lung";
   settings.sim.pathologies = {"pneumothorax:middle:30"};
   EXPECT_NE(platform::run_runtime(settings, options), 0) << "a bad spec stops the run before it starts";
+}
+
+TEST_F(RuntimeRun, AScenariosArdsPatientTurnedProneBreathesIntoItsBackAgain) {
+  settings.sim.asset = small_current_asset();
+  const auto ventral = [&](const char* pose, const char* pathology) {
+    lay_patient(pose, 1.0);
+    if (pathology != nullptr) {  // the scenario brings the patient's lungs
+      const std::string text = "duration_s = 10.0\npathology = [\"" + std::string(pathology) +
+                               "\"]\n[start]\nrate_bpm = 30.0\npose = \"" + pose + "\"\n";
+      std::ofstream(settings.breathing.scenario, std::ios::trunc) << text;
+    }
+    EXPECT_EQ(platform::run_runtime(settings, options), 0) << pose;
+    const auto j = stats();
+    if (pathology != nullptr) {
+      EXPECT_NE(j["asset"].get<std::string>().find(pathology), std::string::npos) << j["asset"];
+    }
+    return j["ventral_share"].get<double>();
+  };
+  const double healthy = ventral("supine", nullptr), supine = ventral("supine", "ards:0.6"),
+               prone = ventral("prone", "ards:0.6");
+  EXPECT_GT(supine, healthy + 0.05) << "supine the back collapses: the breath goes to the front";
+  EXPECT_GT(1.0 - prone, (1.0 - supine) + 0.10) << "prone the back takes the breath again";
+  settings.sim.asset = kData + "hil_lungs.lungbake";  // format 1: no sphere points
+  settings.sim.pathologies = {"ards:0.6"};
+  EXPECT_NE(platform::run_runtime(settings, options), 0) << "an old asset refuses ARDS before the first frame";
+}
+
+TEST_F(RuntimeRun, TheVentilationMapIsTheShadersAndSaysSoInTheStats) {
+  settings.render.ventilation_map = true;  // --view ventilation (runtime_options_test reads the option)
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_TRUE(stats()["ventilation_map"].get<bool>());
+  EXPECT_EQ(stats()["view"], "stereo");
+  EXPECT_TRUE(snapshot_written());
+  settings.render.deform = platform::Deform::Cpu7;
+  EXPECT_NE(platform::run_runtime(settings, options), 0) << "the CPU paths cannot colour by the shader's sweep";
+  settings = {};
+  settings.sim.asset = kData + "hil_lungs.lungbake";
+  settings.display.output = platform::Output::Headless;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_FALSE(stats()["ventilation_map"].get<bool>()) << "off by default";
 }
 
 // --breath: the lungs breathe with a recorded trace (30 breaths a minute here, where the model breathes 12), then

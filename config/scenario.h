@@ -22,14 +22,16 @@ enum class ScenarioEventKind {
   Apnoea,       ///< no breathing for duration_s
   Ventilator,   ///< square pressure wave (pressure-controlled ventilation)
   Spontaneous,  ///< back to spontaneous breathing
+  Pathology,    ///< a pathology comes (add) or goes (remove: a needle decompression) over over_s
 };
-inline constexpr EnumNames<ScenarioEventKind, 7> kScenarioEventKindNames{{{{ScenarioEventKind::Turn, "turn"},
+inline constexpr EnumNames<ScenarioEventKind, 8> kScenarioEventKindNames{{{{ScenarioEventKind::Turn, "turn"},
                                                                           {ScenarioEventKind::Change, "change"},
                                                                           {ScenarioEventKind::Sigh, "sigh"},
                                                                           {ScenarioEventKind::Hold, "hold"},
                                                                           {ScenarioEventKind::Apnoea, "apnoea"},
                                                                           {ScenarioEventKind::Ventilator, "ventilator"},
-                                                                          {ScenarioEventKind::Spontaneous, "spontaneous"}}}};
+                                                                          {ScenarioEventKind::Spontaneous, "spontaneous"},
+                                                                          {ScenarioEventKind::Pathology, "pathology"}}}};
 inline const char* to_string(ScenarioEventKind kind) { return kScenarioEventKindNames.name(kind); }
 
 struct ScenarioEvent {
@@ -48,6 +50,8 @@ struct ScenarioEvent {
   // Turn target: a pose name, or (pose empty) a unit quaternion w, x, y, z of the lung frame in the world.
   std::string pose;
   std::array<double, 4> rotation_wxyz = {1.0, 0.0, 0.0, 0.0};
+  // Pathology: the spec that comes or goes (sim/pathology/pathology.h, checked where the asset is loaded).
+  std::string pathology_add, pathology_remove;
   // Where it came from, for messages: "FILE:LINE: key 'event[2]...'".
   int index = 0;
   int line = 0;

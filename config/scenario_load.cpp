@@ -83,7 +83,7 @@ ScenarioEvent read_event(TomlSection s, const toml::table& t, int index) {
   e.line = static_cast<int>(t.source().begin.line);
   if (!t.contains("kind")) {
     s.fail("kind", "expected one of \"turn\" | \"change\" | \"sigh\" | \"hold\" | \"apnoea\" | \"ventilator\" | "
-                   "\"spontaneous\", got nothing");
+                   "\"spontaneous\" | \"pathology\", got nothing");
   }
   s.choice("kind", e.kind, kScenarioEventKindNames);
   double at = kUnset;
@@ -138,6 +138,14 @@ ScenarioEvent read_event(TomlSection s, const toml::table& t, int index) {
     case ScenarioEventKind::Spontaneous:
       read_breathing_keys(s, e);
       transition();
+      break;
+    case ScenarioEventKind::Pathology:
+      s.text("add", e.pathology_add);
+      s.text("remove", e.pathology_remove);
+      if (e.pathology_add.empty() == e.pathology_remove.empty())
+        s.fail("add", "expected one of add = SPEC (the pathology comes) or remove = SPEC (it goes: a needle "
+                      "decompression), got " + std::string(e.pathology_add.empty() ? "neither" : "both"));
+      e.over_s = required("over_s", 0.0, 600.0, "s", "how long the change takes");
       break;
   }
   s.finish();

@@ -147,7 +147,7 @@ void Renderer::draw_lungs(const LungDrawable& drawable, Variant v, GLuint vao, c
   for (std::size_t i = 0; i < f.lungs.size(); ++i) {
     const LungRange& r = drawable.lungs()[i];
     if (v == kDeformCull || v == kDeformNoCull) set_force(v, f.lungs[i]);
-    set_eye(v, f.model, eye, rest_overlay ? f.rest_color : f.lungs[i].color, f);
+    set_eye(v, f.model * f.lungs[i].rest_transform, eye, rest_overlay ? f.rest_color : f.lungs[i].color, f);
     if (f.mode == DrawMode::Mesh) {
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(r.index_count), GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(static_cast<std::uintptr_t>(r.first_index) * 4));

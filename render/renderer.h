@@ -46,6 +46,9 @@ struct LungFrame {
   /// The lung's volume swing over the last breath, mL: the ventilation map colours each point by the depth its
   /// patch of surface swept in it (FrameInputs::ventilation_full_scale_mm).
   float sweep_ml = 0.f;
+  /// The lung's rest shape now, from the one uploaded (lung frame): a pathology changing during the run
+  /// (platform/runtime/lung_course.h); identity otherwise.
+  glm::mat4 rest_transform{1.f};
 };
 
 struct FrameInputs {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
@@ -16,6 +17,7 @@
 #include "platform/app/log.h"
 #include "platform/app/marker_feed.h"
 #include "platform/app/open_output.h"
+#include "platform/app/pathology_course.h"
 #include "platform/app/plus_recording.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
@@ -37,9 +39,21 @@ constexpr double kDemoSeconds = 10.0;
 const char* const kDefaultSnapshot = "out/snapshot.png";
 const char* const kDefaultStats = "out/stats.json";
 
+/// A scenario's pathology events: the lungs' course from the healthy asset and the drawn one (none without events).
+Result<std::shared_ptr<PathologyCourse>> pathology_course(const Settings& s, const sim::BakedAsset& healthy,
+                                                          const sim::BakedAsset& drawn) {
+  if (s.breathing.scenario.empty()) return std::shared_ptr<PathologyCourse>{};
+  Result<config::Scenario> scenario = config::load_scenario(s.breathing.scenario, s.breathing);
+  if (!scenario) return scenario.with_context("");
+  const auto has_event = [](const config::ScenarioEvent& e) { return e.kind == config::ScenarioEventKind::Pathology; };
+  if (std::none_of(scenario->events.begin(), scenario->events.end(), has_event))
+    return std::shared_ptr<PathologyCourse>{};
+  return PathologyCourse::create(healthy, drawn, s.sim.pathologies, *scenario, log_line);
+}
+
 /// The configured asset, or the demo's lungs baked once and cached (the CT pair, centred on the patient; the
-/// procedural one on --procedural); with the name the stats JSON reports.
-Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
+/// procedural one on --procedural); with the name the stats JSON reports, and a scenario's pathology course.
+Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, std::shared_ptr<PathologyCourse>& course) {
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == Deform::Cpu1;
   demo.procedural = procedural;
@@ -47,7 +61,14 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural) {
   if (!drawn) return drawn.with_context("");
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
   // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
+  std::optional<sim::BakedAsset> healthy;
+  if (!s.breathing.scenario.empty()) healthy = drawn->asset;  // for a scenario's pathology events
   if (Status p = sim::apply_pathologies(drawn->asset, s.sim.pathologies); !p) return p.with_context("sim.pathology: ");
+  if (healthy) {
+    Result<std::shared_ptr<PathologyCourse>> made = pathology_course(s, *healthy, drawn->asset);
+    if (!made) return made.with_context("");
+    course = made.take();
+  }
   for (const std::string& spec : s.sim.pathologies) {
     log_line("pathology: " + spec);
     drawn->name += " with " + spec;  // the stats JSON's "asset" says what was drawn
@@ -121,12 +142,13 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
 }
 
 /// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
-Status open_output_and_scene(Settings& s, bool procedural, RuntimeParts& parts) {
+Status open_output_and_scene(Settings& s, bool procedural, RuntimeParts& parts,
+                             std::shared_ptr<PathologyCourse>& course) {
   auto output = open_output(s, log_line);
   if (!output) return output.with_context("");
   parts.output = output.take();
   log_line("output: " + parts.output->describe());
-  auto scene = load_scene(s, procedural);
+  auto scene = load_scene(s, procedural, course);
   if (!scene) return scene.with_context("");
   parts.scene = scene.take();
   const sim::BakedAsset& a = parts.scene->asset();
@@ -198,7 +220,7 @@ void take_the_scenarios_pathologies(Settings& s) {
   if (!scenario) return;
   for (const std::string& spec : scenario->pathologies) {
     if (std::find(s.sim.pathologies.begin(), s.sim.pathologies.end(), spec) != s.sim.pathologies.end()) continue;
-    log_line("scenario " + scenario->name + ": pathology " + spec);
+    log_line("scenario " + (scenario->name.empty() ? scenario->source : scenario->name) + ": pathology " + spec);
     s.sim.pathologies.push_back(spec);
   }
 }
@@ -219,11 +241,16 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   log_line(summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
-  if (Status opened = open_output_and_scene(s, o.procedural, parts); !opened) {
+  std::shared_ptr<PathologyCourse> course;
+  if (Status opened = open_output_and_scene(s, o.procedural, parts, course); !opened) {
     log_line("error: " + opened.error());
     return 1;
   }
   const std::int64_t t0 = monotonic_ns();  // breathing, the scenario and the time limit start now
+  if (course) {
+    course->start_at(t0);
+    parts.course = course;
+  }
   std::shared_ptr<sync::ClassroomStation> classroom;
   if (Status sources = add_sources(s, o, limit_s, t0, parts, classroom); !sources) {
     log_line("error: " + sources.error());

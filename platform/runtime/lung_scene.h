@@ -24,6 +24,8 @@ class LungScene {
                                                    const render::DrawableOptions& options = {});
 
   const sim::BakedAsset& asset() const { return asset_; }
+  /// The asset, for the per-lung figures a LungCourse changes during a run (never its arrays: they are on the GPU).
+  sim::BakedAsset& mutable_asset() { return asset_; }
   render::LungDrawable& drawable() { return *drawable_; }
   render::Renderer& renderer() { return *renderer_; }
   const std::string& name() const { return name_; }

@@ -126,7 +126,21 @@ Status Runtime::draw_frame(const std::string* snapshot_png) {
 
 sim::BreathingSample Runtime::breathe(std::int64_t now_ns) const { return parts_.breathing->at(now_ns); }
 
+/// A scenario's pathology events: each lung's figures (its weight in the split, its volumes) into the asset the
+/// force and the split read, and its shape's map into its draw.
+void Runtime::follow_course(std::int64_t now_ns) {
+  if (!parts_.course) return;
+  const std::vector<sim::LungShape>& shapes = parts_.course->at(now_ns);
+  sim::take_figures(shapes, parts_.scene->mutable_asset());
+  for (std::size_t l = 0; l < lung_frames_.size() && l < shapes.size(); ++l) {
+    const Eigen::Matrix4d m = shapes[l].from_loaded.matrix();
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) lung_frames_[l].rest_transform[c][r] = static_cast<float>(m(r, c));
+  }
+}
+
 void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
+  follow_course(now_ns);
   const PoseSample patient = parts_.poses->latest(Role::Patient, now_ns);
   if (patient.valid()) last_patient_ = patient;
   const Eigen::Isometry3d lung = lung_to_world(pose_isometry(last_patient_), config_.registration);

@@ -23,6 +23,7 @@
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/frame_output.h"
 #include "platform/runtime/frame_stats.h"
+#include "platform/runtime/lung_course.h"
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/pose_source.h"
 #include "platform/runtime/runtime_config.h"
@@ -42,6 +43,8 @@ struct RuntimeParts {
   std::unique_ptr<PoseSource> poses;
   std::unique_ptr<BreathingClock> breathing;
   std::vector<std::shared_ptr<FrameListener>> listeners;
+  /// The lungs' shapes changing during the run (none: as loaded).
+  std::shared_ptr<LungCourse> course;
   /// The frame's clock (monotonic ns); the bench scripts it so that every configuration sees the same inputs.
   std::function<std::int64_t()> clock = monotonic_ns;
 };
@@ -82,6 +85,7 @@ class Runtime {
   Status deform_and_draw(const FrameState& state, const FrameViews& views);    // 4.
   Status present_and_record(const FrameState& state);                          // 5.
 
+  void follow_course(std::int64_t now_ns);
   void deform_on_cpu(const FrameState& state);
   render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
   Status draw_views(const render::FrameInputs& in, const FrameViews& views);

@@ -13,7 +13,7 @@ namespace lungar::sim {
 namespace {
 
 const char* const kExpected =
-    "expected pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE "
+    "expected pneumothorax:SIDE:PERCENT[:tension], consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE "
     "left or right, PERCENT 1 to 90, REGION upper, middle or lower, SEVERITY 0 to 1)";
 
 std::vector<std::string_view> split(std::string_view text, char sep) {
@@ -108,6 +108,60 @@ void collapse(BakedAsset& a, std::size_t l, double percent) {
   a.lungs[l].breath_weight *= kCollapsedLungBreathWeight;
 }
 
+/// The pair's volume-weighted mean x: the body's midline as the lungs give it.
+double midline_x(const BakedAsset& a) {
+  double x = 0, shares = 0;
+  for (const BakedLung& lung : a.lungs) {
+    x += lung.volume_share * lung.centre[0];
+    shares += lung.volume_share;
+  }
+  return shares > 0 ? x / shares : 0.0;
+}
+
+/// Tension: the collapsed lung l and the mediastinum move kTensionShiftMm towards the other side, and every other
+/// lung is pressed that far from its medial side: scaled along x about its lateral extreme, so that its medial face
+/// moves by the shift and its lateral face (on the ribs) stays. Its areas, normals, rest volume and swept volumes
+/// follow the scaling; its response per unit of force is its own.
+void push_mediastinum(BakedAsset& a, std::size_t l) {
+  const double mid = midline_x(a);
+  const Eigen::Vector3d towards_other = medial_direction(a.lungs[l].name, a.lungs[l].centre[0], mid);
+  const Eigen::Vector3d shift = kTensionShiftMm * towards_other;
+  BakedLung& pushed = a.lungs[l];
+  for (std::size_t i = pushed.first_vertex; i < std::size_t{pushed.first_vertex} + pushed.vertex_count; ++i)
+    for (int k = 0; k < 3; ++k) a.positions[3 * i + k] = static_cast<float>(a.positions[3 * i + k] + shift[k]);
+  for (int k = 0; k < 3; ++k) pushed.centre[k] = static_cast<float>(pushed.centre[k] + shift[k]);
+  for (std::size_t o = 0; o < a.lungs.size(); ++o) {
+    if (o == l) continue;
+    BakedLung& lung = a.lungs[o];
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+      lo = std::min(lo, double{a.positions[3 * i]});
+      hi = std::max(hi, double{a.positions[3 * i]});
+    }
+    if (!(hi - lo > 2 * kTensionShiftMm)) continue;
+    // Its lateral extreme is the one away from the pushed lung.
+    const double lateral = towards_other.x() > 0 ? hi : lo;
+    const double k = 1.0 - kTensionShiftMm / (hi - lo);
+    const double before = swept(a, lung, lung.force_const);
+    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+      a.positions[3 * i] = static_cast<float>(lateral + k * (a.positions[3 * i] - lateral));
+      // A surface element under x -> k x: area times sqrt(n_x^2 + k^2 (n_y^2 + n_z^2)), normal along (n_x / k, n_y, n_z).
+      Eigen::Vector3d n = vec(&a.normals[3 * i]);
+      a.areas[i] = static_cast<float>(a.areas[i] * std::sqrt(n.x() * n.x() + k * k * (n.y() * n.y() + n.z() * n.z())));
+      n.x() /= k;
+      n.normalize();
+      for (int c = 0; c < 3; ++c) a.normals[3 * i + c] = static_cast<float>(n[c]);
+    }
+    lung.centre[0] = static_cast<float>(lateral + k * (lung.centre[0] - lateral));
+    lung.rest_volume_ml *= k;
+    if (before > 0) {  // the bake's per-lung factor to the enclosed volume kept, as for a consolidation
+      const double factor = lung.volume_const / before;
+      lung.volume_const = factor * swept(a, lung, lung.force_const);
+      for (int c = 0; c < 3; ++c) lung.volume_grad[c] = factor * swept(a, lung, lung.force_grad[c]);
+    }
+  }
+}
+
 /// emphysema:SEVERITY[:SIDE] and ards:SEVERITY.
 Result<Pathology> parse_severity(std::string_view spec, const std::vector<std::string_view>& parts, Pathology p) {
   if (p.kind == PathologyKind::ards && parts.size() != 2) return bad(spec, "expected ards:SEVERITY");
@@ -189,7 +243,10 @@ Result<Pathology> parse_pathology(std::string_view spec) {
   if (!kind) return bad(spec, kExpected);
   p.kind = *kind;
   if (p.kind == PathologyKind::emphysema || p.kind == PathologyKind::ards) return parse_severity(spec, parts, p);
-  if (parts.size() != 3) return bad(spec, kExpected);
+  const bool tension = p.kind == PathologyKind::pneumothorax && parts.size() == 4;
+  if (tension && parts[3] != "tension") return bad(spec, "expected pneumothorax:SIDE:PERCENT or pneumothorax:SIDE:PERCENT:tension");
+  if (parts.size() != 3 && !tension) return bad(spec, kExpected);
+  p.tension = tension;
   if (parts[1] != "left" && parts[1] != "right") return bad(spec, "SIDE: expected left or right");
   p.side = std::string(parts[1]);
   if (p.kind == PathologyKind::pneumothorax) {
@@ -221,6 +278,7 @@ Status apply_pathology(BakedAsset& asset, const Pathology& p) {
   if (l == asset.lungs.size()) return bad(p.spec, "the asset has no lung named '" + p.side + "'");
   if (p.kind == PathologyKind::pneumothorax) {
     collapse(asset, l, p.percent);
+    if (p.tension) push_mediastinum(asset, l);
     return {};
   }
   return consolidate(asset, l, p.region, p.spec);

@@ -7,7 +7,9 @@
 ///   index measures from a chest film (%PTX = 100 (1 - L^3 / H^3), L the lung's and H the hemithorax's diameter:
 ///   a shape-keeping collapse). The collapsed lung takes kCollapsedLungBreathWeight of its healthy weight in the
 ///   split of each breath (sim/force/breath_share.h), under a tenth of the tidal volume: the other lung takes the
-///   rest.
+///   rest. `pneumothorax:SIDE:PERCENT:tension`: the air cannot leave, the pressure pushes the mediastinum over, and
+///   the collapsed lung with it moves kTensionShiftMm to the other side, pressing the other lung that far from its
+///   medial face (the tracheal deviation and mediastinal shift of a tension pneumothorax on the chest film).
 /// - `consolidation:SIDE:REGION` (upper, middle or lower third of the lung's height): the region fills with fluid
 ///   or cells, stops ventilating and stiffens. Its surface moves kConsolidatedResponse of its healthy motion (each
 ///   vertex's transfer row, T^I_lm, its linear basis and its off-axis part scaled), with a ramp of
@@ -61,6 +63,8 @@ inline constexpr double kConsolidatedResponse = 0.1;
 inline constexpr double kConsolidationRamp = 0.05;
 /// Emphysema at severity 1 rests this much larger (a share of the healthy volume).
 inline constexpr double kEmphysemaFrcGain = 0.4;
+/// A tension pneumothorax's mediastinal shift: a shift of 1 to 3 cm on the chest film is the usual sign.
+inline constexpr double kTensionShiftMm = 20.0;
 /// Pneumothorax sizes accepted, percent of the lung's volume.
 inline constexpr double kMinPneumothoraxPercent = 1.0, kMaxPneumothoraxPercent = 90.0;
 
@@ -68,6 +72,7 @@ struct Pathology {
   PathologyKind kind = PathologyKind::pneumothorax;
   std::string side;                     ///< the lung's name in the asset: "left" or "right" ("" emphysema: both)
   double percent = 0;                   ///< pneumothorax: the volume lost, percent
+  bool tension = false;                 ///< pneumothorax: the mediastinum pushed over
   LungThird region = LungThird::lower;  ///< consolidation: which third of the height
   double severity = 0;                  ///< emphysema, ards: 0 to 1
   std::string spec;                     ///< as the user wrote it

@@ -127,13 +127,13 @@ TEST(Scenario, KindSpecificKeys) {
 TEST(BadScenario, UnknownEvent) {
   EXPECT_EQ(error_of("[[event]]\nat_s = 5\nkind = \"cough\"\n"),
             "bad.toml:3: key 'event[0].kind': expected one of \"turn\" | \"change\" | \"sigh\" | \"hold\" | "
-            "\"apnoea\" | \"ventilator\" | \"spontaneous\", got the string \"cough\"");
+            "\"apnoea\" | \"ventilator\" | \"spontaneous\" | \"pathology\", got the string \"cough\"");
 }
 
 TEST(BadScenario, MissingKind) {
   EXPECT_EQ(error_of("duration_s = 30\n\n[[event]]\nat_s = 5\n"),
             "bad.toml:3: key 'event[0].kind': expected one of \"turn\" | \"change\" | \"sigh\" | \"hold\" | "
-            "\"apnoea\" | \"ventilator\" | \"spontaneous\", got nothing");
+            "\"apnoea\" | \"ventilator\" | \"spontaneous\" | \"pathology\", got nothing");
 }
 
 TEST(BadScenario, NegativeTime) {
@@ -218,6 +218,24 @@ TEST(BadScenario, SighOnTheVentilator) {
 
 TEST(BadScenario, EventIsNotAnArrayOfTables) {
   EXPECT_EQ(error_of("event = 3\n"), "bad.toml:1: key 'event': expected [[event]] tables, got the integer 3");
+}
+
+TEST(Scenario, APathologyEventSaysWhatComesOrGoesAndOverHowLong) {
+  auto s = load_scenario_from_string(
+      "pathology = [\"ards:0.6\"]\n[[event]]\nat_s = 3.0\nkind = \"pathology\"\nadd = \"pneumothorax:right:30\"\n"
+      "over_s = 5.0\n",
+      "p.toml");
+  ASSERT_TRUE(s) << s.error();
+  EXPECT_EQ(s->pathologies, std::vector<std::string>{"ards:0.6"});
+  ASSERT_EQ(s->events.size(), 1u);
+  EXPECT_EQ(s->events[0].kind, ScenarioEventKind::Pathology);
+  EXPECT_EQ(s->events[0].pathology_add, "pneumothorax:right:30");
+  EXPECT_EQ(s->events[0].over_s, 5.0);
+  EXPECT_EQ(error_of("[[event]]\nat_s = 3.0\nkind = \"pathology\"\nover_s = 5.0\n"),
+            "bad.toml:1: key 'event[0].add': expected one of add = SPEC (the pathology comes) or remove = SPEC (it "
+            "goes: a needle decompression), got neither");
+  EXPECT_NE(error_of("[[event]]\nat_s = 3.0\nkind = \"pathology\"\nremove = \"x\"\n").find("over_s"),
+            std::string::npos);
 }
 
 TEST(BadScenario, UnknownTopLevelKey) {

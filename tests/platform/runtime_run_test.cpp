@@ -192,6 +192,35 @@ TEST_F(RuntimeRun, AScenariosArdsPatientTurnedProneBreathesIntoItsBackAgain) {
   EXPECT_NE(platform::run_runtime(settings, options), 0) << "an old asset refuses ARDS before the first frame";
 }
 
+TEST_F(RuntimeRun, ANeedleDecompressionReExpandsTheLungDuringTheRun) {
+  // A right tension pneumothorax from the start, breathing once a second; with the needle at 0.5 s the right lung
+  // re-expands over 0.5 s and takes its share of the breaths after it, without it stays under a tenth.
+  const auto right_share = [&](bool needle) {
+    const std::string path = (dir / "ptx.toml").string();
+    std::filesystem::create_directories(dir);
+    std::ofstream(path, std::ios::trunc)
+        << "duration_s = 10.0\npathology = [\"pneumothorax:right:30:tension\"]\n[start]\nrate_bpm = 60.0\n"
+           "pose = \"supine\"\n"
+        << (needle ? "[[event]]\nat_s = 0.5\nkind = \"pathology\"\nremove = \"pneumothorax:right:30:tension\"\n"
+                     "over_s = 0.5\n"
+                   : "");
+    settings.breathing.scenario = path;
+    options.frames.reset();
+    options.seconds = 3.0;
+    EXPECT_EQ(platform::run_runtime(settings, options), 0);
+    double right = 0, total = 0;
+    const auto j = stats();
+    for (const auto& lung : j["per_lung"]) {
+      total += lung["tidal_ml"].get<double>();
+      if (lung["name"] == "right") right = lung["tidal_ml"].get<double>();
+    }
+    EXPECT_GT(total, 0.0) << j.dump();
+    return total > 0 ? right / total : -1.0;
+  };
+  EXPECT_LE(right_share(false), 0.10) << "collapsed all along";
+  EXPECT_GE(right_share(true), 0.35) << "re-expanded: it breathes again";
+}
+
 TEST_F(RuntimeRun, TheVentilationMapIsTheShadersAndSaysSoInTheStats) {
   settings.render.ventilation_map = true;  // --view ventilation (runtime_options_test reads the option)
   ASSERT_EQ(platform::run_runtime(settings, options), 0);

@@ -1,0 +1,42 @@
+/// @file lung_shapes.h
+/// @brief A change of pathologies while the lungs are drawn: the asset on the GPU stays the one loaded, and each
+///        lung's new shape is an affine map of its loaded one (exact for the changes that move or scale a lung:
+///        pneumothorax, its tension, emphysema) with its new figures (its weight in the split of the breath, its
+///        swept and rest volumes, its centre). A scenario's pathology events (a tension pneumothorax dropping, a
+///        needle decompression re-expanding it) blend two such states over the event's time.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "config/base/result.h"
+#include "sim/asset/baked_asset.h"
+
+namespace lungar::sim {
+
+/// One lung in one state of the pathologies.
+struct LungShape {
+  Eigen::Affine3d from_loaded = Eigen::Affine3d::Identity();  ///< loaded rest position -> this state's, lung frame
+  std::array<float, 3> centre{};
+  double rest_volume_ml = 0;
+  double volume_const = 0;
+  std::array<double, 3> volume_grad{};
+  double breath_weight = 1;
+  std::optional<std::array<double, 4>> healthy_volumes;
+};
+
+/// Each lung of `changed` as a map of the same lung in `loaded` (the same bake, other pathologies). An error names
+/// the lung whose change is not affine (a consolidation or ARDS changes the response, not the shape: those are
+/// given for the whole run).
+Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const BakedAsset& changed);
+
+/// `from` and `to` blended: w = 0 is `from`, 1 is `to` (the maps' matrices and the figures linearly).
+std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vector<LungShape>& to, double w);
+
+/// Sets each lung's figures of `asset` to those of `shapes` (the positions stay: the map is the drawing's).
+void take_figures(const std::vector<LungShape>& shapes, BakedAsset& asset);
+
+}  // namespace lungar::sim

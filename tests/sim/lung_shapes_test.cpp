@@ -1,0 +1,97 @@
+/// @file lung_shapes_test.cpp
+/// @brief A tension pneumothorax's mediastinal shift, and the per-lung maps a scenario blends a pathology in and
+///        out with (sim/pathology/lung_shapes.h).
+#include <gtest/gtest.h>
+
+#include "sim/pathology/lung_shapes.h"
+#include "sim/pathology/pathology.h"
+#include "sim_test_support.h"
+
+namespace lungar::sim {
+namespace {
+
+BakedAsset with(const std::vector<std::string>& specs) {
+  BakedAsset a = test::sliding_bake().asset;
+  const Status s = apply_pathologies(a, specs);
+  EXPECT_TRUE(s) << s.error();
+  return a;
+}
+
+std::size_t index_of(const BakedAsset& a, const std::string& name) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    if (a.lungs[l].name == name) return l;
+  ADD_FAILURE() << name;
+  return 0;
+}
+
+std::pair<double, double> x_range(const BakedAsset& a, const BakedLung& lung) {
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    lo = std::min(lo, double{a.positions[3 * i]});
+    hi = std::max(hi, double{a.positions[3 * i]});
+  }
+  return {lo, hi};
+}
+
+TEST(TensionPneumothorax, TheMediastinumMovesOverAndPressesTheOtherLungFromItsMedialSide) {
+  const BakedAsset plain = with({"pneumothorax:right:40"}), tension = with({"pneumothorax:right:40:tension"});
+  const std::size_t right = index_of(plain, "right"), left = index_of(plain, "left");
+  // LPS: +x is the patient's left. The collapsed right lung moves towards the left by the shift.
+  EXPECT_NEAR(tension.lungs[right].centre[0] - plain.lungs[right].centre[0], kTensionShiftMm, 1e-3);
+  EXPECT_NEAR(tension.lungs[right].rest_volume_ml, plain.lungs[right].rest_volume_ml, 1e-9);
+  // The left lung's medial face (its low x) moves over by the shift; its lateral face stays on the ribs.
+  const auto [plain_lo, plain_hi] = x_range(plain, plain.lungs[left]);
+  const auto [tension_lo, tension_hi] = x_range(tension, tension.lungs[left]);
+  EXPECT_NEAR(tension_lo - plain_lo, kTensionShiftMm, 0.01);
+  EXPECT_NEAR(tension_hi, plain_hi, 0.01);
+  const double k = 1.0 - kTensionShiftMm / (plain_hi - plain_lo);
+  EXPECT_NEAR(tension.lungs[left].rest_volume_ml / plain.lungs[left].rest_volume_ml, k, 1e-9);
+  EXPECT_LT(tension.lungs[left].volume_const, plain.lungs[left].volume_const) << "a pressed lung sweeps less";
+  auto p = parse_pathology("pneumothorax:right:40:tension");
+  ASSERT_TRUE(p) << p.error();
+  EXPECT_TRUE(p->tension);
+  auto bad = parse_pathology("pneumothorax:right:40:tight");
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find(":tension"), std::string::npos) << bad.error();
+}
+
+TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
+  const BakedAsset healthy = test::sliding_bake().asset, sick = with({"pneumothorax:right:40:tension"});
+  Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick);
+  ASSERT_TRUE(shapes) << shapes.error();
+  for (std::size_t l = 0; l < healthy.lungs.size(); ++l) {
+    const BakedLung& lung = healthy.lungs[l];
+    double worst = 0;
+    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+      const Eigen::Vector3d p(healthy.positions[3 * i], healthy.positions[3 * i + 1], healthy.positions[3 * i + 2]);
+      const Eigen::Vector3d q(sick.positions[3 * i], sick.positions[3 * i + 1], sick.positions[3 * i + 2]);
+      worst = std::max(worst, ((*shapes)[l].from_loaded * p - q).norm());
+    }
+    EXPECT_LT(worst, 0.01) << lung.name << ": every vertex, not only the fitted ones";
+    EXPECT_EQ((*shapes)[l].breath_weight, sick.lungs[l].breath_weight);
+  }
+  const std::vector<LungShape> same = lung_shapes(healthy, healthy).take();
+  const std::vector<LungShape> half = blend(same, *shapes, 0.5);
+  const std::size_t right = index_of(healthy, "right");
+  EXPECT_NEAR(half[right].centre[0], 0.5 * (healthy.lungs[right].centre[0] + sick.lungs[right].centre[0]), 1e-3);
+  EXPECT_NEAR(half[right].breath_weight, 0.5 * (1.0 + kCollapsedLungBreathWeight), 1e-9);
+  EXPECT_TRUE(blend(same, *shapes, 1.0)[right].from_loaded.isApprox((*shapes)[right].from_loaded));
+  EXPECT_TRUE(blend(same, *shapes, 0.0)[right].from_loaded.isApprox(Eigen::Affine3d::Identity(), 1e-9));
+  BakedAsset figures = healthy;
+  take_figures(*shapes, figures);
+  EXPECT_EQ(figures.lungs[right].volume_const, sick.lungs[right].volume_const);
+  EXPECT_EQ(figures.positions, healthy.positions) << "the positions are the drawing's map";
+}
+
+TEST(LungShapes, AChangeOfResponseIsNoShapeAndIsRefusedByLung) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  Result<std::vector<LungShape>> c = lung_shapes(healthy, with({"consolidation:left:lower"}));
+  ASSERT_FALSE(c);
+  EXPECT_NE(c.error().find("lung 'left'"), std::string::npos) << c.error();
+  EXPECT_FALSE(lung_shapes(healthy, with({"ards:0.5"})));
+  EXPECT_TRUE(lung_shapes(with({"ards:0.5"}), with({"ards:0.5", "pneumothorax:right:20"})))
+      << "ARDS at the same severity in both: only the shape changed";
+}
+
+}  // namespace
+}  // namespace lungar::sim

@@ -28,8 +28,8 @@ double upright_to_supine_angle(double t_s) {
 
 std::optional<PoseSample> mock_pose(const std::string& trajectory, Role role, double t_s) {
   const bool turn = trajectory == "upright_to_supine";
-  const bool orbit = trajectory == "head_orbit";
-  if (!turn && !orbit && trajectory != "static") return std::nullopt;
+  const bool orbit = trajectory == "head_orbit", bedside = trajectory == "bedside";
+  if (!turn && !orbit && !bedside && trajectory != "static") return std::nullopt;
   const Eigen::Vector3d centre(kMockPatientCentreMm.data());
   PoseSample p;
   p.role = role;
@@ -44,6 +44,8 @@ std::optional<PoseSample> mock_pose(const std::string& trajectory, Role role, do
       if (orbit) {
         const double a = 2 * M_PI * t_s / 10.0;  // one turn every 10 s, radius 700 mm
         eye = {700.0 * std::sin(a), -700.0 * std::cos(a), 1300.0};
+      } else if (bedside) {
+        eye = centre + Eigen::Vector3d(-90.0, -300.0, 160.0);  // at the foot of the bed, a little to the right
       } else if (turn) {
         // A small sway, so that prediction has something to do.
         eye.x() = 40.0 * std::sin(2 * M_PI * t_s / 3.0);

@@ -22,8 +22,14 @@ inline constexpr std::array<double, 3> kMockPatientCentreMm = {0.0, 0.0, 1000.0}
 inline constexpr double kMockTurnStartS = 1.0;
 inline constexpr double kMockTurnS = 4.0;
 
-/// The pose of `role` at `t_s` seconds into `trajectory` (static | upright_to_supine | head_orbit); nullopt
-/// for an unknown trajectory name.
+/// The mock's trajectories, as messages list them: static (the head in front of an upright patient),
+/// upright_to_supine (the patient turns), head_orbit (the head walks round), bedside (the head at the foot of the
+/// bed, a little to the patient's right, looking at the diaphragm: front at the top when supine, the view the
+/// README's ventilation map is drawn from).
+inline constexpr const char* kMockTrajectoriesExpected = "static | upright_to_supine | head_orbit | bedside";
+
+/// The pose of `role` at `t_s` seconds into `trajectory` (kMockTrajectoriesExpected); nullopt for an unknown
+/// trajectory name.
 std::optional<PoseSample> mock_pose(const std::string& trajectory, Role role, double t_s);
 
 /// The patient's turn angle about world x at `t_s` for upright_to_supine, radians (0 upright, -pi/2 supine).

@@ -170,7 +170,8 @@ int synth(const std::string& out, const std::string& config_path, const std::str
   t.mock_noise_mm = noise_mm;
   t.mock_dropout = dropout;
   if (!mock_pose(t.mock_trajectory, Role::Head, 0)) {
-    return die("--trajectory: expected static | upright_to_supine | head_orbit, got \"" + t.mock_trajectory + "\"");
+    return die(std::string("--trajectory: expected ") + kMockTrajectoriesExpected + ", got \"" + t.mock_trajectory +
+               "\"");
   }
   auto layout = make_layout(t);
   if (!layout) return die(layout.error());
@@ -237,7 +238,7 @@ int main(int argc, char** argv) {
   auto* synth_cmd = app.add_subcommand("synth", "write a log of a mock trajectory through a report layout");
   synth_cmd->add_option("out", out, "new .trk log")->required();
   synth_cmd->add_option("--config", config_path, "config TOML whose [trackers] layout to use (default: built-in)");
-  synth_cmd->add_option("--trajectory", trajectory, "static | upright_to_supine | head_orbit");
+  synth_cmd->add_option("--trajectory", trajectory, kMockTrajectoriesExpected);
   synth_cmd->add_option("--seconds", seconds, "duration, s")->check(CLI::Range(0.01, 3600.0));
   synth_cmd->add_option("--rate-hz", rate_hz, "reports per sensor per second (default: the config's)")
       ->check(CLI::Range(1.0, 2000.0));
@@ -251,7 +252,7 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--port", serve_opts.port, "TCP port (0: any free one, printed)")->check(CLI::Range(0, 65535));
   serve_cmd->add_option("--rate-hz", serve_opts.rate_hz, "messages per device per second")
       ->check(CLI::Range(1.0, 1000.0));
-  serve_cmd->add_option("--trajectory", serve_opts.trajectory, "static | upright_to_supine | head_orbit");
+  serve_cmd->add_option("--trajectory", serve_opts.trajectory, kMockTrajectoriesExpected);
   serve_cmd->add_option("--seconds", serve_opts.seconds, "stop after this long (0: until Ctrl-C)")
       ->check(CLI::Range(0.0, 1e6));
   serve_cmd->add_option("--head", serve_opts.head, "device name of the head pose (\"\": not sent)");

@@ -309,7 +309,7 @@ void visit(Io& s, SensorConfig& d, bool pointer) {
 template <class Io>
 void visit(Io& s, TrackerConfig& t) {
   s.choice("source", t.source, kTrackerSourceNames);
-  s.choice("mock_trajectory", t.mock_trajectory, {"static", "upright_to_supine", "head_orbit"});
+  s.choice("mock_trajectory", t.mock_trajectory, {"static", "upright_to_supine", "head_orbit", "bedside"});
   s.number("mock_rate_hz", t.mock_rate_hz, 1.0, 2000.0, "Hz");
   s.number("mock_noise_mm", t.mock_noise_mm, 0.0, 100.0, "mm");
   s.number("mock_dropout", t.mock_dropout, 0.0, 1.0, "(probability)");

@@ -34,7 +34,7 @@ struct RenderSettings {
   /// The ventilation map (render/renderer.h, FrameInputs::ventilation_full_scale_mm) instead of the lungs' colours;
   /// `--view ventilation` and the V key turn it on.
   bool ventilation_map = false;
-  double ventilation_full_scale_mm = 12.0;  ///< the sweep per breath at the ramp's top
+  double ventilation_full_scale_mm = 20.0;  ///< the sweep per breath at the ramp's top
   std::array<double, 3> color_left = {0.90, 0.45, 0.45};
   std::array<double, 3> color_right = {0.45, 0.60, 0.95};
   std::array<double, 3> background = {0.0, 0.0, 0.0};

@@ -36,7 +36,7 @@ struct RuntimeConfig {
   bool hud = true;  ///< the status line
   /// The ventilation map from the first frame (the V key toggles it), with this sweep at the ramp's top.
   bool ventilation_map = false;
-  float ventilation_full_scale_mm = 12.0f;
+  float ventilation_full_scale_mm = 20.0f;
   glm::vec3 color_left{0.90f, 0.45f, 0.45f};
   glm::vec3 color_right{0.45f, 0.60f, 0.95f};
   glm::vec3 background{0.0f, 0.0f, 0.0f};

@@ -29,7 +29,7 @@ TEST(MockTrajectory, PatientTurnsFromUprightToSupine) {
 }
 
 TEST(MockTrajectory, HeadLooksAtThePatient) {
-  for (const char* name : {"static", "upright_to_supine", "head_orbit"}) {
+  for (const char* name : {"static", "upright_to_supine", "head_orbit", "bedside"}) {
     for (double t : {0.0, 1.3, 4.0, 7.7}) {
       const auto head = *mock_pose(name, Role::Head, t);
       const Eigen::Vector3d forward = head.orientation() * Eigen::Vector3d::UnitY();  // the head looks along its +y

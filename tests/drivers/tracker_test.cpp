@@ -151,7 +151,7 @@ TEST(Tracker, BadSettingsAreOneLineErrors) {
   t = {};
   t.mock_trajectory = "somersault";
   EXPECT_EQ(make_tracker(t, quiet()).error(),
-            "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit, got \"somersault\"");
+            "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit | bedside, got \"somersault\"");
   t = {};
   t.report.length = 8;
   EXPECT_EQ(make_tracker(t, quiet()).error(),

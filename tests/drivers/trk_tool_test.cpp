@@ -78,7 +78,7 @@ TEST(TrkTool, BadInputIsOneLineAndExitOne) {
   EXPECT_EQ(r.out, "lungar-trk: " + bad + ": expected the magic \"LUNGATRK\": not a .trk log, at byte 0\n");
   r = run("synth " + (dir() / "x.trk").string() + " --trajectory cartwheel");
   EXPECT_EQ(r.rc, 1);
-  EXPECT_EQ(r.out, "lungar-trk: --trajectory: expected static | upright_to_supine | head_orbit, got \"cartwheel\"\n");
+  EXPECT_EQ(r.out, "lungar-trk: --trajectory: expected static | upright_to_supine | head_orbit | bedside, got \"cartwheel\"\n");
   EXPECT_FALSE(fs::exists(dir() / "x.trk"));
   r = run("--version");
   EXPECT_EQ(r.rc, 0);
@@ -131,7 +131,7 @@ TEST(TrkTool, ServeIgtlStopsAfterItsSecondsAndBadOptionsAreOneLine) {
   EXPECT_NE(r.out.find("serving OpenIGTLink on 127.0.0.1:"), std::string::npos) << r.out;
   r = run("serve-igtl --port 0 --trajectory cartwheel");
   EXPECT_EQ(r.rc, 1);
-  EXPECT_EQ(r.out, "lungar-trk: --trajectory: expected static | upright_to_supine | head_orbit, got \"cartwheel\"\n");
+  EXPECT_EQ(r.out, "lungar-trk: --trajectory: expected static | upright_to_supine | head_orbit | bedside, got \"cartwheel\"\n");
   r = run("serve-igtl --address 300.1.2.3 --port 0");
   EXPECT_EQ(r.rc, 1);
   EXPECT_EQ(r.out, "lungar-trk: 300.1.2.3:0: expected an IPv4 address and a port in [0, 65535]\n");

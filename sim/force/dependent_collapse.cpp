@@ -105,25 +105,24 @@ double DependentCollapse::collapsed_share(const Eigen::Vector3d& g) const {
 
 double DependentCollapse::threshold_mm(const Eigen::Vector3d& g) const {
   const Eigen::Vector3d u = unit_or_upright(g);
-  double lo = 1e300, hi = -1e300;
+  // Every sample's depth along g and its area-weighted facing, once: the bisection only sums them.
+  std::size_t count = 0;
+  for (const Samples& s : lungs_) count += static_cast<std::size_t>(s.positions.rows());
+  Eigen::VectorXd depth(static_cast<Eigen::Index>(count)), facing(static_cast<Eigen::Index>(count));
+  Eigen::Index at = 0;
   for (const Samples& s : lungs_) {
-    const Eigen::VectorXd depth = s.positions * u;
-    lo = std::min(lo, depth.minCoeff());
-    hi = std::max(hi, depth.maxCoeff());
+    const Eigen::Index n = s.positions.rows();
+    depth.segment(at, n) = s.positions * u;
+    facing.segment(at, n) = s.weights.cwiseProduct(s.normals * u);
+    at += n;
   }
+  double lo = depth.minCoeff(), hi = depth.maxCoeff();
   // The pair's volume beyond the plane g . x = t, from the surface alone (see the header).
-  auto beyond = [&](double t) {
-    double v = 0;
-    for (const Samples& s : lungs_) {
-      const Eigen::VectorXd depth = s.positions * u, facing = s.normals * u;
-      for (Eigen::Index k = 0; k < depth.size(); ++k)
-        if (depth[k] > t) v += s.weights[k] * (depth[k] - t) * facing[k];
-    }
-    return v;
-  };
+  auto beyond = [&](double t) { return ((depth.array() - t).max(0.0) * facing.array()).sum(); };
   const double target = collapsed_share(u) * beyond(lo);
   if (!(target > 0)) return hi + kCollapseRampMm;  // nothing collapsed: every point well before the plane
-  for (int iteration = 0; iteration < 40; ++iteration) {
+  // 30 halvings of the lungs' depth (some 300 mm): the plane to under a micrometre.
+  for (int iteration = 0; iteration < 30; ++iteration) {
     const double mid = 0.5 * (lo + hi);
     (beyond(mid) > target ? lo : hi) = mid;
   }

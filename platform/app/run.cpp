@@ -251,6 +251,10 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     course->start_at(t0);
     parts.course = course;
   }
+  if (s.sync.role != sync::SyncRole::Off && (!s.sim.pathologies.empty() || course)) {
+    log_line("classroom: this station's pathologies are its own; a classroom shares the patient and the breath, "
+             "not yet the lungs' disease: start every station with the same --pathology or scenario");
+  }
   std::shared_ptr<sync::ClassroomStation> classroom;
   if (Status sources = add_sources(s, o, limit_s, t0, parts, classroom); !sources) {
     log_line("error: " + sources.error());

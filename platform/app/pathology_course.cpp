@@ -24,9 +24,8 @@ Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(
     const config::Scenario& scenario, const std::function<void(const std::string&)>& log) {
   auto course = std::make_shared<PathologyCourse>();
   std::vector<std::string> present = start;
-  Result<std::vector<sim::LungShape>> first = sim::lung_shapes(drawn, drawn);
-  if (!first) return first.with_context("");
-  course->start_ = first.take();
+  for (const sim::BakedLung& lung : drawn.lungs)
+    course->start_.push_back({Eigen::Affine3d::Identity(), sim::LungFigures::of(lung)});
   for (const config::ScenarioEvent& e : scenario.events) {
     if (e.kind != config::ScenarioEventKind::Pathology) continue;
     const std::string where = scenario.where(e, e.pathology_add.empty() ? "remove" : "add") + ": ";

@@ -39,21 +39,26 @@ constexpr double kDemoSeconds = 10.0;
 const char* const kDefaultSnapshot = "out/snapshot.png";
 const char* const kDefaultStats = "out/stats.json";
 
-/// A scenario's pathology events: the lungs' course from the healthy asset and the drawn one (none without events).
-Result<std::shared_ptr<PathologyCourse>> pathology_course(const Settings& s, const sim::BakedAsset& healthy,
-                                                          const sim::BakedAsset& drawn) {
-  if (s.breathing.scenario.empty()) return std::shared_ptr<PathologyCourse>{};
+/// The settings' scenario, read once for the lungs (its pathologies and their events); none without one, or when
+/// it does not load: the breathing reads it again and reports what is wrong (add_sources).
+std::optional<config::Scenario> the_scenario(const Settings& s) {
+  if (s.breathing.scenario.empty()) return std::nullopt;
   Result<config::Scenario> scenario = config::load_scenario(s.breathing.scenario, s.breathing);
-  if (!scenario) return scenario.with_context("");
-  const auto has_event = [](const config::ScenarioEvent& e) { return e.kind == config::ScenarioEventKind::Pathology; };
-  if (std::none_of(scenario->events.begin(), scenario->events.end(), has_event))
-    return std::shared_ptr<PathologyCourse>{};
-  return PathologyCourse::create(healthy, drawn, s.sim.pathologies, *scenario, log_line);
+  if (!scenario) return std::nullopt;
+  return scenario.take();
+}
+
+bool has_pathology_events(const std::optional<config::Scenario>& scenario) {
+  return scenario && std::any_of(scenario->events.begin(), scenario->events.end(), [](const config::ScenarioEvent& e) {
+           return e.kind == config::ScenarioEventKind::Pathology;
+         });
 }
 
 /// The configured asset, or the demo's lungs baked once and cached (the CT pair, centred on the patient; the
-/// procedural one on --procedural); with the name the stats JSON reports, and a scenario's pathology course.
-Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, std::shared_ptr<PathologyCourse>& course) {
+/// procedural one on --procedural); with the name the stats JSON reports, and the course of the scenario's
+/// pathology events (none without them).
+Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, const std::optional<config::Scenario>& scenario,
+                                              std::shared_ptr<PathologyCourse>& course) {
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == Deform::Cpu1;
   demo.procedural = procedural;
@@ -62,10 +67,11 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, std:
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
   // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
   std::optional<sim::BakedAsset> healthy;
-  if (!s.breathing.scenario.empty()) healthy = drawn->asset;  // for a scenario's pathology events
+  if (has_pathology_events(scenario)) healthy = drawn->asset;  // each event's state is built from it
   if (Status p = sim::apply_pathologies(drawn->asset, s.sim.pathologies); !p) return p.with_context("sim.pathology: ");
   if (healthy) {
-    Result<std::shared_ptr<PathologyCourse>> made = pathology_course(s, *healthy, drawn->asset);
+    Result<std::shared_ptr<PathologyCourse>> made =
+        PathologyCourse::create(*healthy, drawn->asset, s.sim.pathologies, *scenario, log_line);
     if (!made) return made.with_context("");
     course = made.take();
   }
@@ -142,13 +148,13 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
 }
 
 /// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
-Status open_output_and_scene(Settings& s, bool procedural, RuntimeParts& parts,
-                             std::shared_ptr<PathologyCourse>& course) {
+Status open_output_and_scene(Settings& s, bool procedural, const std::optional<config::Scenario>& scenario,
+                             RuntimeParts& parts, std::shared_ptr<PathologyCourse>& course) {
   auto output = open_output(s, log_line);
   if (!output) return output.with_context("");
   parts.output = output.take();
   log_line("output: " + parts.output->describe());
-  auto scene = load_scene(s, procedural, course);
+  auto scene = load_scene(s, procedural, scenario, course);
   if (!scene) return scene.with_context("");
   parts.scene = scene.take();
   const sim::BakedAsset& a = parts.scene->asset();
@@ -212,11 +218,8 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
   return exit_code;
 }
 
-/// A scenario's patient brings its pathologies (after the settings' own); a scenario that does not load is
-/// reported where the breathing reads it.
-void take_the_scenarios_pathologies(Settings& s) {
-  if (s.breathing.scenario.empty()) return;
-  Result<config::Scenario> scenario = config::load_scenario(s.breathing.scenario, s.breathing);
+/// A scenario's patient brings its pathologies (after the settings' own).
+void take_the_scenarios_pathologies(const std::optional<config::Scenario>& scenario, Settings& s) {
   if (!scenario) return;
   for (const std::string& spec : scenario->pathologies) {
     if (std::find(s.sim.pathologies.begin(), s.sim.pathologies.end(), spec) != s.sim.pathologies.end()) continue;
@@ -236,13 +239,14 @@ void breathe_as_the_pathologies_do(Settings& s) {
 
 int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   Settings s = configured;  // the demo's CT lungs may set the registration
-  take_the_scenarios_pathologies(s);
+  const std::optional<config::Scenario> scenario = the_scenario(s);
+  take_the_scenarios_pathologies(scenario, s);
   breathe_as_the_pathologies_do(s);
   log_line(summarize(s));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
   std::shared_ptr<PathologyCourse> course;
-  if (Status opened = open_output_and_scene(s, o.procedural, parts, course); !opened) {
+  if (Status opened = open_output_and_scene(s, o.procedural, scenario, parts, course); !opened) {
     log_line("error: " + opened.error());
     return 1;
   }

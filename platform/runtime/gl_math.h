@@ -17,14 +17,16 @@ namespace lungar::platform {
 /// A tracked pose as the rigid transform sensor -> world (mm).
 inline Eigen::Isometry3d pose_isometry(const drivers::PoseSample& s) { return s.transform(); }
 
-inline glm::mat4 to_glm(const Eigen::Isometry3d& m) {
-  const Eigen::Matrix4f f = m.matrix().cast<float>();
+inline glm::mat4 to_glm(const Eigen::Matrix4d& m) {
+  const Eigen::Matrix4f f = m.cast<float>();
   glm::mat4 out;
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 4; ++r) out[c][r] = f(r, c);  // both column-major: column c, row r
   }
   return out;
 }
+
+inline glm::mat4 to_glm(const Eigen::Isometry3d& m) { return to_glm(m.matrix()); }
 
 inline glm::vec3 to_glm(const std::array<double, 3>& v) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};

@@ -132,11 +132,8 @@ void Runtime::follow_course(std::int64_t now_ns) {
   if (!parts_.course) return;
   const std::vector<sim::LungShape>& shapes = parts_.course->at(now_ns);
   sim::take_figures(shapes, parts_.scene->mutable_asset());
-  for (std::size_t l = 0; l < lung_frames_.size() && l < shapes.size(); ++l) {
-    const Eigen::Matrix4d m = shapes[l].from_loaded.matrix();
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) lung_frames_[l].rest_transform[c][r] = static_cast<float>(m(r, c));
-  }
+  for (std::size_t l = 0; l < lung_frames_.size() && l < shapes.size(); ++l)
+    lung_frames_[l].rest_transform = to_glm(shapes[l].from_loaded.matrix());
 }
 
 void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {

@@ -64,12 +64,7 @@ Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const Baked
     LungShape s;
     s.from_loaded.linear() = x.topRows(3).transpose();
     s.from_loaded.translation() = x.row(3).transpose();
-    s.centre = after.centre;
-    s.rest_volume_ml = after.rest_volume_ml;
-    s.volume_const = after.volume_const;
-    s.volume_grad = after.volume_grad;
-    s.breath_weight = after.breath_weight;
-    s.healthy_volumes = after.healthy_volumes;
+    s.figures = LungFigures::of(after);
     out.push_back(s);
   }
   return out;
@@ -80,28 +75,35 @@ std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vect
   const auto mix = [w](double a, double b) { return a + w * (b - a); };
   std::vector<LungShape> out = w < 0.5 ? from : to;  // what does not blend (the healthy volumes) switches halfway
   for (std::size_t l = 0; l < out.size() && l < from.size() && l < to.size(); ++l) {
-    LungShape& s = out[l];
-    s.from_loaded.matrix() = from[l].from_loaded.matrix() + w * (to[l].from_loaded.matrix() - from[l].from_loaded.matrix());
-    for (int k = 0; k < 3; ++k) s.centre[k] = static_cast<float>(mix(from[l].centre[k], to[l].centre[k]));
-    s.rest_volume_ml = mix(from[l].rest_volume_ml, to[l].rest_volume_ml);
-    s.volume_const = mix(from[l].volume_const, to[l].volume_const);
-    for (int k = 0; k < 3; ++k) s.volume_grad[k] = mix(from[l].volume_grad[k], to[l].volume_grad[k]);
-    s.breath_weight = mix(from[l].breath_weight, to[l].breath_weight);
+    out[l].from_loaded.matrix() =
+        from[l].from_loaded.matrix() + w * (to[l].from_loaded.matrix() - from[l].from_loaded.matrix());
+    LungFigures& f = out[l].figures;
+    const LungFigures &a = from[l].figures, &b = to[l].figures;
+    for (int k = 0; k < 3; ++k) f.centre[k] = static_cast<float>(mix(a.centre[k], b.centre[k]));
+    f.rest_volume_ml = mix(a.rest_volume_ml, b.rest_volume_ml);
+    f.volume_const = mix(a.volume_const, b.volume_const);
+    for (int k = 0; k < 3; ++k) f.volume_grad[k] = mix(a.volume_grad[k], b.volume_grad[k]);
+    f.breath_weight = mix(a.breath_weight, b.breath_weight);
   }
   return out;
 }
 
+LungFigures LungFigures::of(const BakedLung& lung) {
+  return {lung.centre, lung.rest_volume_ml, lung.volume_const, lung.volume_grad, lung.breath_weight,
+          lung.healthy_volumes};
+}
+
+void LungFigures::put_into(BakedLung& lung) const {
+  lung.centre = centre;
+  lung.rest_volume_ml = rest_volume_ml;
+  lung.volume_const = volume_const;
+  lung.volume_grad = volume_grad;
+  lung.breath_weight = breath_weight;
+  lung.healthy_volumes = healthy_volumes;
+}
+
 void take_figures(const std::vector<LungShape>& shapes, BakedAsset& asset) {
-  for (std::size_t l = 0; l < shapes.size() && l < asset.lungs.size(); ++l) {
-    BakedLung& lung = asset.lungs[l];
-    const LungShape& s = shapes[l];
-    lung.centre = s.centre;
-    lung.rest_volume_ml = s.rest_volume_ml;
-    lung.volume_const = s.volume_const;
-    lung.volume_grad = s.volume_grad;
-    lung.breath_weight = s.breath_weight;
-    lung.healthy_volumes = s.healthy_volumes;
-  }
+  for (std::size_t l = 0; l < shapes.size() && l < asset.lungs.size(); ++l) shapes[l].figures.put_into(asset.lungs[l]);
 }
 
 }  // namespace lungar::sim

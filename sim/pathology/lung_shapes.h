@@ -17,15 +17,23 @@
 
 namespace lungar::sim {
 
-/// One lung in one state of the pathologies.
-struct LungShape {
-  Eigen::Affine3d from_loaded = Eigen::Affine3d::Identity();  ///< loaded rest position -> this state's, lung frame
+/// The per-lung figures of BakedLung that a pathology changes and the force and the split read.
+struct LungFigures {
   std::array<float, 3> centre{};
   double rest_volume_ml = 0;
   double volume_const = 0;
   std::array<double, 3> volume_grad{};
   double breath_weight = 1;
   std::optional<std::array<double, 4>> healthy_volumes;
+
+  static LungFigures of(const BakedLung& lung);
+  void put_into(BakedLung& lung) const;
+};
+
+/// One lung in one state of the pathologies.
+struct LungShape {
+  Eigen::Affine3d from_loaded = Eigen::Affine3d::Identity();  ///< loaded rest position -> this state's, lung frame
+  LungFigures figures;
 };
 
 /// Each lung of `changed` as a map of the same lung in `loaded` (the same bake, other pathologies). An error names

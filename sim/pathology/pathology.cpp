@@ -51,26 +51,51 @@ double swept(const BakedAsset& a, const BakedLung& lung, const std::vector<float
   return sum;
 }
 
-/// The lung's height extent (z, lung frame: +z superior).
-std::pair<double, double> height_range(const BakedAsset& a, const BakedLung& lung) {
+/// The lung's extent along lung-frame axis `axis` (0 x, 1 y, 2 z).
+std::pair<double, double> extent(const BakedAsset& a, const BakedLung& lung, int axis) {
   double lo = 1e300, hi = -1e300;
   for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
-    lo = std::min(lo, double{a.positions[3 * i + 2]});
-    hi = std::max(hi, double{a.positions[3 * i + 2]});
+    lo = std::min(lo, double{a.positions[3 * i + axis]});
+    hi = std::max(hi, double{a.positions[3 * i + axis]});
   }
   return {lo, hi};
+}
+
+/// The lung's height extent (z, lung frame: +z superior).
+std::pair<double, double> height_range(const BakedAsset& a, const BakedLung& lung) { return extent(a, lung, 2); }
+
+/// The pair's volume-weighted mean x: the body's midline as the lungs give it.
+double midline_x(const BakedAsset& a) {
+  double x = 0, shares = 0;
+  for (const BakedLung& lung : a.lungs) {
+    x += lung.volume_share * lung.centre[0];
+    shares += lung.volume_share;
+  }
+  return shares > 0 ? x / shares : 0.0;
+}
+
+/// Before a change of the lung's response: its swept volumes as they were, for its weight in the split
+/// (breath_share.h), unless an earlier pathology kept them already.
+void keep_healthy_volumes(BakedLung& lung) {
+  if (!lung.healthy_volumes)
+    lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
+}
+
+/// After the lung's response or surface changed: its swept volumes summed again from the arrays, the bake's
+/// per-lung factor to the enclosed volume (about 1.03) kept; `before` is the first-order sum from before the
+/// change (nothing is done when it is not positive).
+void resum_swept_volumes(const BakedAsset& a, BakedLung& lung, double before) {
+  if (!(before > 0)) return;
+  const double factor = lung.volume_const / before;
+  lung.volume_const = factor * swept(a, lung, lung.force_const);
+  for (int k = 0; k < 3; ++k) lung.volume_grad[k] = factor * swept(a, lung, lung.force_grad[k]);
 }
 
 /// The hilum: the area-weighted centre of the lung's medial face (normals within 60 degrees of the midline) in
 /// the middle third of its height, where the bronchus and vessels enter; the lung's centre when it has none.
 Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l) {
   const BakedLung& lung = a.lungs[l];
-  double midline_x = 0, shares = 0;
-  for (const BakedLung& other : a.lungs) {
-    midline_x += other.volume_share * other.centre[0];
-    shares += other.volume_share;
-  }
-  const Eigen::Vector3d medial = medial_direction(lung.name, lung.centre[0], shares > 0 ? midline_x / shares : 0);
+  const Eigen::Vector3d medial = medial_direction(lung.name, lung.centre[0], midline_x(a));
   const auto [lo, hi] = height_range(a, lung);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double area = 0;
@@ -108,16 +133,6 @@ void collapse(BakedAsset& a, std::size_t l, double percent) {
   a.lungs[l].breath_weight *= kCollapsedLungBreathWeight;
 }
 
-/// The pair's volume-weighted mean x: the body's midline as the lungs give it.
-double midline_x(const BakedAsset& a) {
-  double x = 0, shares = 0;
-  for (const BakedLung& lung : a.lungs) {
-    x += lung.volume_share * lung.centre[0];
-    shares += lung.volume_share;
-  }
-  return shares > 0 ? x / shares : 0.0;
-}
-
 /// Tension: the collapsed lung l and the mediastinum move kTensionShiftMm towards the other side, and every other
 /// lung is pressed that far from its medial side: scaled along x about its lateral extreme, so that its medial face
 /// moves by the shift and its lateral face (on the ribs) stays. Its areas, normals, rest volume and swept volumes
@@ -133,11 +148,7 @@ void push_mediastinum(BakedAsset& a, std::size_t l) {
   for (std::size_t o = 0; o < a.lungs.size(); ++o) {
     if (o == l) continue;
     BakedLung& lung = a.lungs[o];
-    double lo = 1e300, hi = -1e300;
-    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
-      lo = std::min(lo, double{a.positions[3 * i]});
-      hi = std::max(hi, double{a.positions[3 * i]});
-    }
+    const auto [lo, hi] = extent(a, lung, 0);
     if (!(hi - lo > 2 * kTensionShiftMm)) continue;
     // Its lateral extreme is the one away from the pushed lung.
     const double lateral = towards_other.x() > 0 ? hi : lo;
@@ -154,11 +165,7 @@ void push_mediastinum(BakedAsset& a, std::size_t l) {
     }
     lung.centre[0] = static_cast<float>(lateral + k * (lung.centre[0] - lateral));
     lung.rest_volume_ml *= k;
-    if (before > 0) {  // the bake's per-lung factor to the enclosed volume kept, as for a consolidation
-      const double factor = lung.volume_const / before;
-      lung.volume_const = factor * swept(a, lung, lung.force_const);
-      for (int c = 0; c < 3; ++c) lung.volume_grad[c] = factor * swept(a, lung, lung.force_grad[c]);
-    }
+    resum_swept_volumes(a, lung, before);
   }
 }
 
@@ -207,12 +214,8 @@ Status consolidate(BakedAsset& a, std::size_t l, LungThird third, std::string_vi
     if (a.has_off_axis())
       for (int k = 0; k < 12; ++k) a.off_axis[12 * i + k] *= m;
   }
-  if (!lung.healthy_volumes)
-    lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
-  // The bake's per-lung factor from the first-order sum to the enclosed volume (about 1.03) is kept.
-  const double factor = lung.volume_const / before;
-  lung.volume_const = factor * swept(a, lung, lung.force_const);
-  for (int k = 0; k < 3; ++k) lung.volume_grad[k] = factor * swept(a, lung, lung.force_grad[k]);
+  keep_healthy_volumes(lung);
+  resum_swept_volumes(a, lung, before);
   return {};
 }
 
@@ -225,8 +228,7 @@ Status collapse_dependent(BakedAsset& a, double severity, std::string_view spec)
   if (!pattern) return bad(spec, pattern.error());
   for (std::size_t l = 0; l < a.lungs.size(); ++l) {
     BakedLung& lung = a.lungs[l];
-    if (!lung.healthy_volumes)
-      lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
+    keep_healthy_volumes(lung);
     lung.collapse = *pattern;
     lung.collapse_index = l;
   }

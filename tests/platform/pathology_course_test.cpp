@@ -44,8 +44,8 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
   const std::size_t right = right_of(healthy());
   sim::BakedAsset sick = healthy();
   ASSERT_TRUE(sim::apply_pathologies(sick, {"pneumothorax:right:40:tension"}));
-  auto weight = [&](double t) { return (*course)->at_seconds(t)[right].breath_weight; };
-  auto centre_x = [&](double t) { return double{(*course)->at_seconds(t)[right].centre[0]}; };
+  auto weight = [&](double t) { return (*course)->at_seconds(t)[right].figures.breath_weight; };
+  auto centre_x = [&](double t) { return double{(*course)->at_seconds(t)[right].figures.centre[0]}; };
   EXPECT_EQ(weight(5.0), 1.0) << "healthy before";
   EXPECT_TRUE((*course)->at_seconds(5.0)[right].from_loaded.isApprox(Eigen::Affine3d::Identity(), 1e-9));
   EXPECT_GT(weight(15.0), sim::kCollapsedLungBreathWeight);

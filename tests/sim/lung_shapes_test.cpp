@@ -68,13 +68,13 @@ TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
       worst = std::max(worst, ((*shapes)[l].from_loaded * p - q).norm());
     }
     EXPECT_LT(worst, 0.01) << lung.name << ": every vertex, not only the fitted ones";
-    EXPECT_EQ((*shapes)[l].breath_weight, sick.lungs[l].breath_weight);
+    EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.lungs[l].breath_weight);
   }
   const std::vector<LungShape> same = lung_shapes(healthy, healthy).take();
   const std::vector<LungShape> half = blend(same, *shapes, 0.5);
   const std::size_t right = index_of(healthy, "right");
-  EXPECT_NEAR(half[right].centre[0], 0.5 * (healthy.lungs[right].centre[0] + sick.lungs[right].centre[0]), 1e-3);
-  EXPECT_NEAR(half[right].breath_weight, 0.5 * (1.0 + kCollapsedLungBreathWeight), 1e-9);
+  EXPECT_NEAR(half[right].figures.centre[0], 0.5 * (healthy.lungs[right].centre[0] + sick.lungs[right].centre[0]), 1e-3);
+  EXPECT_NEAR(half[right].figures.breath_weight, 0.5 * (1.0 + kCollapsedLungBreathWeight), 1e-9);
   EXPECT_TRUE(blend(same, *shapes, 1.0)[right].from_loaded.isApprox((*shapes)[right].from_loaded));
   EXPECT_TRUE(blend(same, *shapes, 0.0)[right].from_loaded.isApprox(Eigen::Affine3d::Identity(), 1e-9));
   BakedAsset figures = healthy;

@@ -10,20 +10,23 @@
 namespace lungar::platform::sync {
 
 Result<std::shared_ptr<ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
-                                                         const sim::BreathingScript& script, std::int64_t t0_ns,
-                                                         RuntimeParts& parts,
+                                                         const sim::BreathingScript& script, const LoadedLungs& lungs,
+                                                         std::int64_t t0_ns, RuntimeParts& parts,
                                                          std::function<void(const std::string&)> log) {
-  auto opened = ClassroomStation::open(s.sync, std::move(log), clock_skew_ns);
+  auto opened = ClassroomStation::open(s.sync, log, clock_skew_ns);
   if (!opened) return Error{opened.error()};
   auto station = std::make_shared<ClassroomStation>(opened.take());
   if (Instructor* instructor = station->instructor()) {
-    if (Status shared = instructor->share_breathing(script.start, script.events, t0_ns); !shared)
+    if (Status shared = instructor->share_breathing(script.start, script.events, lungs.own, t0_ns); !shared)
       return shared.with_context("");
     parts.listeners.push_back(std::make_shared<InstructorPublisher>(station));
+    if (!lungs.own.empty() && log) log("classroom: sharing the lungs' pathologies: " + sim::describe(lungs.own));
   } else if (station->trainee() != nullptr) {
     parts.poses = std::make_unique<TraineePoses>(
         std::move(parts.poses), station,
         registration_isometry(s.registration.translation_mm, s.registration.rotation_wxyz));
+    if (!lungs.healthy || !lungs.drawn) return fail("classroom: a trainee needs the loaded lungs to draw the instructor's");
+    parts.course = std::make_shared<ClassroomCourse>(parts.course, station, lungs, log);
   }
   parts.breathing = std::make_unique<ClassroomBreathing>(std::move(parts.breathing), station);
   return station;

@@ -3,7 +3,8 @@
 #include "platform/app/pathology_course.h"
 
 #include <algorithm>
-#include <cstdio>
+
+#include <nlohmann/json.hpp>
 
 #include "sim/pathology/pathology.h"
 
@@ -17,47 +18,55 @@ double ease(double x) {
   return x * x * (3.0 - 2.0 * x);
 }
 
+/// Each lung of `drawn` as a map to `healthy` with `present` applied; `where` names what asked for it.
+Result<std::vector<sim::LungShape>> state_of(const sim::BakedAsset& healthy, const sim::BakedAsset& drawn,
+                                             const std::vector<std::string>& present, const std::string& where) {
+  sim::BakedAsset state = healthy;
+  if (Status s = sim::apply_pathologies(state, present); !s) return s.with_context(where);
+  Result<std::vector<sim::LungShape>> shapes = sim::lung_shapes(drawn, state);
+  if (!shapes) {
+    return fail(where + shapes.error() +
+                ": only a pneumothorax (tension too) or an emphysema can come or go while the lungs are drawn, and an "
+                "ARDS only from the start; a consolidation must be the drawn lungs' own (give it in the pathology "
+                "list, or --pathology, of every station)");
+  }
+  return shapes;
+}
+
 }  // namespace
 
-Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(
-    const sim::BakedAsset& healthy, const sim::BakedAsset& drawn, const std::vector<std::string>& start,
-    const config::Scenario& scenario, const std::function<void(const std::string&)>& log) {
-  auto course = std::make_shared<PathologyCourse>();
-  std::vector<std::string> present = start;
-  for (const sim::BakedLung& lung : drawn.lungs)
-    course->start_.push_back({Eigen::Affine3d::Identity(), sim::LungFigures::of(lung)});
-  for (const config::ScenarioEvent& e : scenario.events) {
+sim::PathologyTimeline timeline_of(const std::vector<std::string>& start, const config::Scenario* scenario) {
+  sim::PathologyTimeline timeline{start, {}};
+  if (scenario == nullptr) return timeline;
+  for (const config::ScenarioEvent& e : scenario->events) {
     if (e.kind != config::ScenarioEventKind::Pathology) continue;
-    const std::string where = scenario.where(e, e.pathology_add.empty() ? "remove" : "add") + ": ";
-    if (!e.pathology_add.empty()) {
-      Result<sim::Pathology> p = sim::parse_pathology(e.pathology_add);
-      if (!p) return p.with_context(where);
-      present.push_back(e.pathology_add);
-    } else {
-      const auto it = std::find(present.begin(), present.end(), e.pathology_remove);
-      if (it == present.end())
-        return fail(where + "'" + e.pathology_remove + "' is not present then (the scenario's pathology list and the "
-                    "events before add what can be removed)");
-      present.erase(it);
-    }
-    sim::BakedAsset state = healthy;
-    if (Status s = sim::apply_pathologies(state, present); !s) return s.with_context(where);
-    Result<std::vector<sim::LungShape>> shapes = sim::lung_shapes(drawn, state);
-    if (!shapes) {
-      return fail(where + shapes.error() +
-                  ": only a pneumothorax (tension too) or an emphysema can come or go during a scenario; give a "
-                  "consolidation or ARDS in its pathology list");
-    }
-    course->steps_.push_back({e.at_s, e.over_s, shapes.take()});
-    if (log) {
-      char when[96];
-      std::snprintf(when, sizeof when, ": at %.1f s %s over %.1f s", e.at_s,
-                    e.pathology_add.empty() ? "goes" : "comes", e.over_s);
-      log("scenario " + (scenario.name.empty() ? scenario.source : scenario.name) + ": " +
-          (e.pathology_add.empty() ? e.pathology_remove : e.pathology_add) + when);
-    }
+    timeline.events.push_back({e.at_s, e.over_s, e.pathology_add, e.pathology_remove});
   }
-  if (course->steps_.empty()) return std::shared_ptr<PathologyCourse>{};
+  return timeline;
+}
+
+Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(const sim::BakedAsset& healthy,
+                                                                 const sim::BakedAsset& drawn,
+                                                                 const sim::PathologyTimeline& timeline) {
+  if (Status s = sim::check_timeline(timeline); !s) return Error{s.error()};
+  auto course = std::make_shared<PathologyCourse>();
+  course->timeline_ = timeline;
+  auto start = state_of(healthy, drawn, timeline.start, "pathology at the start: ");
+  if (!start) return start.with_context("");
+  course->start_ = start.take();
+  for (std::size_t k = 0; k < timeline.events.size(); ++k) {
+    const sim::PathologyEvent& e = timeline.events[k];
+    const std::string where = "pathology event " + std::to_string(k + 1) + " (" +
+                              (e.add.empty() ? "remove " + e.remove : "add " + e.add) + "): ";
+    if (Result<sim::Pathology> p = sim::parse_pathology(e.add.empty() ? e.remove : e.add);
+        p && p->kind == sim::PathologyKind::ards) {
+      return fail(where + "an ARDS cannot come or go during a run: its collapse would switch at once; give it in the "
+                  "pathology list for the whole run");
+    }
+    auto to = state_of(healthy, drawn, sim::present_after(timeline, k + 1), where);
+    if (!to) return to.with_context("");
+    course->steps_.push_back({e.at_s, e.over_s, to.take()});
+  }
   course->now_ = course->start_;
   return course;
 }
@@ -68,9 +77,11 @@ const std::vector<sim::LungShape>& PathologyCourse::at(std::int64_t now_ns) {
 
 const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
   const std::vector<sim::LungShape>* done = &start_;
+  done_ = 0;
   for (const Step& step : steps_) {
     if (t_s >= step.at_s + step.over_s) {
       done = &step.to;
+      ++done_;
       continue;
     }
     if (t_s > step.at_s) {  // under way: from where the steps before left the lungs
@@ -81,6 +92,10 @@ const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
   }
   now_ = *done;
   return now_;
+}
+
+void PathologyCourse::add_stats(nlohmann::json& stats) const {
+  stats["pathologies"] = sim::present_after(timeline_, done_);
 }
 
 }  // namespace lungar::platform

@@ -12,34 +12,44 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "config/base/result.h"
 #include "config/scenario.h"
 #include "platform/runtime/lung_course.h"
 #include "sim/asset/baked_asset.h"
+#include "sim/pathology/pathology_timeline.h"
 
 namespace lungar::platform {
 
+/// The pathologies from the start (`start`: the settings' and the scenario's own) and the scenario's pathology
+/// events (none without a scenario).
+sim::PathologyTimeline timeline_of(const std::vector<std::string>& start, const config::Scenario* scenario);
+
 class PathologyCourse : public LungCourse {
  public:
-  /// `healthy`: the asset before any pathology; `drawn`: it with `start` (the pathologies at t = 0) applied, as on
-  /// the GPU. None when the scenario has no pathology event. An error names the event and what is wrong: a spec
-  /// that does not parse, a removal of what is not there, a change that is not one of shape (a consolidation or
-  /// ARDS: given for the whole scenario instead).
+  /// `healthy`: the asset before any pathology; `drawn`: some state of it, as on the GPU. The course starts with
+  /// the timeline's start (mapped from `drawn`, which is the identity when `drawn` has those) and follows its
+  /// events. An error names the event and what is wrong: a spec that does not parse, a removal of what is not
+  /// there, a change that is not one of shape (a consolidation, or an ARDS coming or going: given for the whole
+  /// scenario instead; a consolidation the drawn lungs do not have).
   static Result<std::shared_ptr<PathologyCourse>> create(const sim::BakedAsset& healthy, const sim::BakedAsset& drawn,
-                                                         const std::vector<std::string>& start,
-                                                         const config::Scenario& scenario,
-                                                         const std::function<void(const std::string&)>& log);
+                                                         const sim::PathologyTimeline& timeline);
   /// The scenario's time zero (monotonic ns), when the breathing starts.
   void start_at(std::int64_t t0_ns) { t0_ns_ = t0_ns; }
   const std::vector<sim::LungShape>& at(std::int64_t now_ns) override;
-  /// The same at scenario time t_s (for tests and plots).
+  void add_stats(nlohmann::json& stats) const override;
+  /// The same at scenario time t_s (for tests, plots and a classroom's shared time).
   const std::vector<sim::LungShape>& at_seconds(double t_s);
+  const sim::PathologyTimeline& timeline() const { return timeline_; }
 
  private:
   struct Step {
     double at_s = 0, over_s = 0;
     std::vector<sim::LungShape> to;
   };
+  sim::PathologyTimeline timeline_;
+  std::size_t done_ = 0;  ///< events done at the last at(): what the stats JSON's `pathologies` lists
   std::vector<sim::LungShape> start_;
   std::vector<Step> steps_;
   std::vector<sim::LungShape> now_;

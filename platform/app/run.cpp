@@ -48,17 +48,11 @@ std::optional<config::Scenario> the_scenario(const Settings& s) {
   return scenario.take();
 }
 
-bool has_pathology_events(const std::optional<config::Scenario>& scenario) {
-  return scenario && std::any_of(scenario->events.begin(), scenario->events.end(), [](const config::ScenarioEvent& e) {
-           return e.kind == config::ScenarioEventKind::Pathology;
-         });
-}
-
 /// The configured asset, or the demo's lungs baked once and cached (the CT pair, centred on the patient; the
 /// procedural one on --procedural); with the name the stats JSON reports, and the course of the scenario's
-/// pathology events (none without them).
+/// pathology events (none without them). `lungs` keeps what a trainee needs to draw its instructor's lungs.
 Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, const std::optional<config::Scenario>& scenario,
-                                              std::shared_ptr<PathologyCourse>& course) {
+                                              std::shared_ptr<PathologyCourse>& course, LoadedLungs& lungs) {
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == Deform::Cpu1;
   demo.procedural = procedural;
@@ -66,14 +60,19 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   if (!drawn) return drawn.with_context("");
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
   // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
-  std::optional<sim::BakedAsset> healthy;
-  if (has_pathology_events(scenario)) healthy = drawn->asset;  // each event's state is built from it
+  lungs.own = timeline_of(s.sim.pathologies, scenario ? &*scenario : nullptr);
+  const bool trainee = s.sync.role == sync::SyncRole::Trainee;
+  if (!lungs.own.events.empty() || trainee)  // each state of a course is built from it
+    lungs.healthy = std::make_shared<const sim::BakedAsset>(drawn->asset);
   if (Status p = sim::apply_pathologies(drawn->asset, s.sim.pathologies); !p) return p.with_context("sim.pathology: ");
-  if (healthy) {
-    Result<std::shared_ptr<PathologyCourse>> made =
-        PathologyCourse::create(*healthy, drawn->asset, s.sim.pathologies, *scenario, log_line);
-    if (!made) return made.with_context("");
+  if (trainee) {
+    lungs.drawn = s.sim.pathologies.empty() ? lungs.healthy : std::make_shared<const sim::BakedAsset>(drawn->asset);
+  }
+  if (!lungs.own.events.empty()) {
+    Result<std::shared_ptr<PathologyCourse>> made = PathologyCourse::create(*lungs.healthy, drawn->asset, lungs.own);
+    if (!made) return made.with_context("scenario " + s.breathing.scenario + ": ");
     course = made.take();
+    log_line("pathologies: " + sim::describe(lungs.own));
   }
   for (const std::string& spec : s.sim.pathologies) {
     log_line("pathology: " + spec);
@@ -97,8 +96,8 @@ Result<std::shared_ptr<MarkerFeed>> marker_of(const std::string& breath, std::in
 
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
-Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, RuntimeParts& parts,
-                   std::shared_ptr<sync::ClassroomStation>& classroom) {
+Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, const LoadedLungs& lungs,
+                   RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
@@ -140,8 +139,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
     }
     parts.breathing = std::make_unique<FollowedBreathing>(feed, shared_script, t0);
   }
-  auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, t0,
-                                     parts, [](const std::string& line) { log_line(line); });
+  auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs,
+                                     t0, parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");
   classroom = joined.take();
   return ok();
@@ -149,12 +148,12 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
 
 /// The slow parts first (a display error shows before a long first bake): the output and the lungs on it.
 Status open_output_and_scene(Settings& s, bool procedural, const std::optional<config::Scenario>& scenario,
-                             RuntimeParts& parts, std::shared_ptr<PathologyCourse>& course) {
+                             RuntimeParts& parts, std::shared_ptr<PathologyCourse>& course, LoadedLungs& lungs) {
   auto output = open_output(s, log_line);
   if (!output) return output.with_context("");
   parts.output = output.take();
   log_line("output: " + parts.output->describe());
-  auto scene = load_scene(s, procedural, scenario, course);
+  auto scene = load_scene(s, procedural, scenario, course, lungs);
   if (!scene) return scene.with_context("");
   parts.scene = scene.take();
   const sim::BakedAsset& a = parts.scene->asset();
@@ -246,7 +245,8 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
   std::shared_ptr<PathologyCourse> course;
-  if (Status opened = open_output_and_scene(s, o.procedural, scenario, parts, course); !opened) {
+  LoadedLungs lungs;
+  if (Status opened = open_output_and_scene(s, o.procedural, scenario, parts, course, lungs); !opened) {
     log_line("error: " + opened.error());
     return 1;
   }
@@ -255,12 +255,8 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     course->start_at(t0);
     parts.course = course;
   }
-  if (s.sync.role != sync::SyncRole::Off && (!s.sim.pathologies.empty() || course)) {
-    log_line("classroom: this station's pathologies are its own; a classroom shares the patient and the breath, "
-             "not yet the lungs' disease: start every station with the same --pathology or scenario");
-  }
   std::shared_ptr<sync::ClassroomStation> classroom;
-  if (Status sources = add_sources(s, o, limit_s, t0, parts, classroom); !sources) {
+  if (Status sources = add_sources(s, o, limit_s, t0, lungs, parts, classroom); !sources) {
     log_line("error: " + sources.error());
     return 1;
   }

@@ -23,10 +23,11 @@ void FrameStats::name_lungs(const std::vector<std::string>& names) {
   for (std::size_t l = 0; l < lung_count_; ++l) lungs_[l] = {names[l], 0, 0, false};
 }
 
-void FrameStats::record_lungs(std::span<const double> lung_volume_ml) {
-  for (std::size_t l = 0; l < std::min(lung_volume_ml.size(), lung_count_); ++l) {
+void FrameStats::record_lungs(std::span<const double> lung_volume_ml, std::span<const double> rest_volume_ml) {
+  for (std::size_t l = 0; l < std::min({lung_volume_ml.size(), rest_volume_ml.size(), lung_count_}); ++l) {
     LungRange& r = lungs_[l];
     const double v = lung_volume_ml[l];
+    r.rest_ml = rest_volume_ml[l];
     r.min_ml = r.any ? std::min(r.min_ml, v) : v;
     r.max_ml = r.any ? std::max(r.max_ml, v) : v;
     r.any = true;
@@ -51,8 +52,11 @@ nlohmann::ordered_json FrameStats::to_json() const {
     nlohmann::ordered_json lungs = nlohmann::ordered_json::array();
     for (std::size_t l = 0; l < lung_count_; ++l) {
       const LungRange& r = lungs_[l];
-      lungs.push_back({{"name", r.name}, {"tidal_ml", r.max_ml - r.min_ml}, {"volume_ml_min", r.min_ml},
-                       {"volume_ml_max", r.max_ml}});
+      lungs.push_back({{"name", r.name},
+                       {"tidal_ml", r.max_ml - r.min_ml},
+                       {"volume_ml_min", r.min_ml},
+                       {"volume_ml_max", r.max_ml},
+                       {"rest_volume_ml", r.rest_ml}});
     }
     j["per_lung"] = lungs;
   }

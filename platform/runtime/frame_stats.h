@@ -30,8 +30,9 @@ class FrameStats {
 
   /// The lungs' names, in the asset's order, for the per-lung keys (at most kMaxStatsLungs are followed).
   void name_lungs(const std::vector<std::string>& names);
-  /// Each lung's own volume change this frame, mL (its share of the breath in the posture), in name_lungs' order.
-  void record_lungs(std::span<const double> lung_volume_ml);
+  /// Each lung's own volume change this frame, mL (its share of the breath in the posture), and its rest volume
+  /// (a pneumothorax shrinks it while the lungs are drawn), in name_lungs' order.
+  void record_lungs(std::span<const double> lung_volume_ml, std::span<const double> rest_volume_ml);
   /// The anterior half's share of a breath in this frame's posture (sim/motion/ventral_share.h).
   void record_ventral_share(double share) { ventral_share_ = share; }
 
@@ -42,7 +43,8 @@ class FrameStats {
   /// The frame keys of the stats JSON (docs/design.md, Contracts: snake_case, unit suffix): frames, fps_median, frame_ms_p50,
   /// frame_ms_p99, frame_ms_mean, pose_age_ms_p50, pose_age_ms_p99, volume_ml_min, volume_ml_max, and gravity_lung_first,
   /// gravity_lung_last (unit vectors: how the patient lay at the first and the last frame), and per_lung: one
-  /// {name, tidal_ml, volume_ml_min, volume_ml_max} a lung, tidal_ml its swing over the run (max - min), and
+  /// {name, tidal_ml, volume_ml_min, volume_ml_max, rest_volume_ml} a lung, tidal_ml its swing over the run
+  /// (max - min), rest_volume_ml its rest volume at the last frame; and
   /// ventral_share: the part of a breath the anterior half of the lungs sweeps, in the last frame's posture.
   nlohmann::ordered_json to_json() const;
   /// "N frames, F fps median (p50 .. ms, p99 .. ms); pose age p50 .. ms; dV a..b mL".
@@ -55,7 +57,7 @@ class FrameStats {
   std::array<double, 3> gravity_first_{}, gravity_last_{};
   struct LungRange {
     std::string name;
-    double min_ml = 0, max_ml = 0;
+    double min_ml = 0, max_ml = 0, rest_ml = 0;
     bool any = false;
   };
   std::array<LungRange, kMaxStatsLungs> lungs_{};

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "sim/pathology/lung_shapes.h"
 
 namespace lungar::platform {
@@ -17,6 +19,8 @@ class LungCourse {
   virtual ~LungCourse() = default;
   /// Every lung's shape at `now_ns` (monotonic), in the asset's order.
   virtual const std::vector<sim::LungShape>& at(std::int64_t now_ns) = 0;
+  /// Its keys in the stats JSON (`pathologies`: those present at the last frame).
+  virtual void add_stats(nlohmann::json& stats) const { (void)stats; }
 };
 
 }  // namespace lungar::platform

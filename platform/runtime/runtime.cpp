@@ -270,10 +270,13 @@ Status Runtime::present_and_record(const FrameState& state) {
   const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, submitted) : -1.0;
   const Eigen::Vector3d& g = state.gravity_lung;
   stats_.record(frame_ms, age_ms, state.breath.dv_ml, {g.x(), g.y(), g.z()});
-  std::array<double, kMaxStatsLungs> lung_ml{};
+  std::array<double, kMaxStatsLungs> lung_ml{}, rest_ml{};
   const std::size_t lungs = std::min(lung_frames_.size(), kMaxStatsLungs);
-  for (std::size_t l = 0; l < lungs; ++l) lung_ml[l] = lung_frames_[l].volume_change_ml;
-  stats_.record_lungs(std::span<const double>(lung_ml.data(), lungs));
+  for (std::size_t l = 0; l < lungs; ++l) {
+    lung_ml[l] = lung_frames_[l].volume_change_ml;
+    rest_ml[l] = asset_.lungs[l].rest_volume_ml;
+  }
+  stats_.record_lungs(std::span<const double>(lung_ml.data(), lungs), std::span<const double>(rest_ml.data(), lungs));
   stats_.record_ventral_share(ventral_->share(asset_, force_, state.gravity_lung));
   ++frames_;
   return ok();
@@ -290,6 +293,7 @@ nlohmann::ordered_json Runtime::stats_json(double wall_s) const {
   parts_.poses->add_stats(parts, wall_s);
   parts_.breathing->add_stats(parts);
   parts_.output->add_stats(parts);
+  if (parts_.course) parts_.course->add_stats(parts);
   for (const auto& [key, value] : parts.items()) j[key] = value;
   j["wall_s"] = wall_s;
   return j;

@@ -68,7 +68,7 @@ Status Instructor::open_writers() {
 }
 
 Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
-                                   std::int64_t t0_mono_ns) {
+                                   const sim::PathologyTimeline& lungs, std::int64_t t0_mono_ns) {
   const std::int64_t time_base = link_->clock().from_monotonic(t0_mono_ns);
   state_.session = link_->session();
   std::strncpy(state_.station, link_->name().c_str(), sizeof state_.station - 1);
@@ -78,6 +78,7 @@ Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<
   events_.session = link_->session();
   events_.revision = 1;
   if (Status s = to_wire(events, event_storage_, events_); !s) return s;
+  if (Status s = to_wire(lungs, pathology_storage_, events_); !s) return s;
   const std::int64_t now = link_->clock().now_ns();
   const auto& events_writer = writers_.get<lungar_sync_ScenarioEvents>();
   const auto& state_writer = writers_.get<lungar_sync_BreathingState>();

@@ -24,6 +24,7 @@
 #include "platform/sync/sync_types.h"
 #include "sim/breathing/event.h"
 #include "sim/breathing/pattern.h"
+#include "sim/pathology/pathology_timeline.h"
 
 namespace lungar::platform::sync {
 
@@ -38,10 +39,10 @@ class Instructor {
   Instructor(const Instructor&) = delete;
   Instructor& operator=(const Instructor&) = delete;
 
-  /// The breathing the classroom follows: start parameters, every event, and the monotonic instant of
-  /// breathing time 0. Call once before the frames (it allocates).
+  /// The breathing the classroom follows: start parameters, every event, the lungs' pathologies on the same
+  /// breathing time, and the monotonic instant of breathing time 0. Call once before the frames (it allocates).
   Status share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
-                         std::int64_t t0_mono_ns);
+                         const sim::PathologyTimeline& lungs, std::int64_t t0_mono_ns);
   /// From the frame: the lung pose in the world it drew and when the tracker read it (monotonic ns). A pose
   /// with the same reading time as the last is not sent again. Allocates nothing.
   void publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
@@ -83,6 +84,7 @@ class Instructor {
   lungar_sync_BreathingState state_{};                 ///< the shared state, as last written
   lungar_sync_ScenarioEvents events_{};                ///< points into event_storage_
   std::vector<lungar_sync_ScenarioEvent> event_storage_;
+  std::vector<lungar_sync_PathologyEvent> pathology_storage_;
   int state_readers_ = 0, event_readers_ = 0;          ///< sync thread: matched readers at the last look
 
   drivers::LatestMailbox<PoseMsg> pose_box_;

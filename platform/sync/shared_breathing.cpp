@@ -42,9 +42,16 @@ void SharedBreathing::update_offset(std::int64_t estimate_ns) {
 
 bool SharedBreathing::sample_at(std::int64_t station_ns, sim::BreathingSample& out) const {
   std::lock_guard lock(mutex_);
-  if (!driver_) return false;
+  double t_s = 0;
+  if (!driver_ || !time_at(station_ns, t_s)) return false;
+  out = driver_->at(t_s);
+  return true;
+}
+
+bool SharedBreathing::time_at(std::int64_t station_ns, double& t_s) const {
+  if (!ready()) return false;
   const std::int64_t instructor_ns = station_ns + applied_ns_.load(std::memory_order_relaxed);
-  out = driver_->at(static_cast<double>(instructor_ns - time_base_ns_.load(std::memory_order_relaxed)) * 1e-9);
+  t_s = static_cast<double>(instructor_ns - time_base_ns_.load(std::memory_order_relaxed)) * 1e-9;
   return true;
 }
 

@@ -37,6 +37,9 @@ class SharedBreathing {
 
   /// The breathing state at `station_ns`; false before install(). Allocates nothing (frame loop).
   bool sample_at(std::int64_t station_ns, sim::BreathingSample& out) const;
+  /// The instructor's breathing time at `station_ns` (what its scenario's events are timed on); false before
+  /// install().
+  bool time_at(std::int64_t station_ns, double& t_s) const;
 
  private:
   mutable std::mutex mutex_;  ///< guards driver_ against install() while the frame evaluates it

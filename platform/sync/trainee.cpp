@@ -53,6 +53,18 @@ bool Trainee::breathing(std::int64_t now_ns, sim::BreathingSample& out) const {
   return breathing_.sample_at(link_->clock().from_monotonic(now_ns), out);
 }
 
+bool Trainee::breath_time(std::int64_t now_ns, double& t_s) const {
+  return breathing_.time_at(link_->clock().from_monotonic(now_ns), t_s);
+}
+
+bool Trainee::lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const {
+  if (lungs_version_.load(std::memory_order_acquire) == version) return false;
+  std::lock_guard lock(lungs_mutex_);
+  out = lungs_;
+  version = lungs_version_.load(std::memory_order_acquire);
+  return true;
+}
+
 void Trainee::run() {
   while (!thread_.stopping()) {
     std::int64_t now = lungar::monotonic_ns();
@@ -97,7 +109,12 @@ void Trainee::take_events() {
       link_->malformed(events.error());
       return;
     }
-    pending_events_ = PendingEvents{s.session, s.revision, events.take()};
+    auto lungs = pathologies_from_wire(s);
+    if (!lungs) {
+      link_->malformed(lungs.error());
+      return;
+    }
+    pending_events_ = PendingEvents{s.session, s.revision, events.take(), lungs.take()};
   });
 }
 
@@ -118,11 +135,17 @@ void Trainee::install_if_complete() {
     std::lock_guard lock(report_mutex_);
     instructor_ = st.station;
   }
+  {
+    std::lock_guard lock(lungs_mutex_);
+    lungs_ = pending_events_->lungs;
+    lungs_version_.fetch_add(1, std::memory_order_release);
+  }
   char line[200];
   std::snprintf(line, sizeof line, "sync: breathing of instructor '%s': %s, %.1f/min, %.0f mL, %zu events",
                 st.station.c_str(), std::string(sim::to_string(st.params.preset)).c_str(), st.params.rate_bpm,
                 st.params.tidal_volume_ml, pending_events_->events.size());
   link_->log(line);
+  link_->log("sync: lungs of instructor '" + st.station + "': " + sim::describe(pending_events_->lungs));
 }
 
 void Trainee::take_heartbeats(std::int64_t now_mono) {

@@ -41,6 +41,11 @@ class Trainee {
   drivers::PoseSample patient_pose() const;
   /// The shared breathing at monotonic `now_ns`; false until the instructor's breathing has arrived.
   bool breathing(std::int64_t now_ns, sim::BreathingSample& out) const;
+  /// The instructor's breathing time at monotonic `now_ns`, on which its pathology events are timed; false until
+  /// its breathing has arrived.
+  bool breath_time(std::int64_t now_ns, double& t_s) const;
+  /// The instructor's pathologies, when they changed since `version` (0 at first): true, `out` and `version` set.
+  bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const;
   /// From the frame: the breathing time it drew at monotonic `now_ns`, whichever clock gave it. The sync thread
   /// compares it with the instructor's at the same instant (sync_breath_offset_ms_*). Allocates nothing.
   void frame_breath(std::int64_t now_ns, double t_s) { frame_box_.publish(FrameBreath{now_ns, t_s}); }
@@ -61,6 +66,7 @@ class Trainee {
     std::uint64_t session = 0;
     std::uint32_t revision = 0;
     std::vector<sim::Event> events;
+    sim::PathologyTimeline lungs;
   };
   struct FrameBreath {
     std::int64_t now_mono_ns;
@@ -95,6 +101,9 @@ class Trainee {
   drivers::LatestMailbox<FrameBreath> frame_box_;
   SharedBreathing breathing_;
   ClockOffsetEstimator estimator_;
+  mutable std::mutex lungs_mutex_;  ///< guards lungs_ (the sync thread writes, the lungs' course reads)
+  sim::PathologyTimeline lungs_;
+  std::atomic<std::uint64_t> lungs_version_{0};
 
   // Sync thread only.
   std::optional<PendingState> pending_state_;

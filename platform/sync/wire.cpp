@@ -2,8 +2,10 @@
 /// @brief Checked conversions between the classroom's IDL types and lungar's.
 #include "platform/sync/wire.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 namespace lungar::platform::sync {
@@ -179,6 +181,67 @@ Status to_wire(std::span<const sim::Event> events, std::vector<lungar_sync_Scena
   out.events._length = static_cast<std::uint32_t>(storage.size());
   out.events._maximum = static_cast<std::uint32_t>(storage.size());
   out.events._release = false;
+  return ok();
+}
+
+namespace {
+
+/// A bounded string of the sample as text; its bound is the array's size less the terminator, which Cyclone
+/// checks on receipt (a string without one is not delivered).
+template <std::size_t N>
+std::string text_of(const char (&chars)[N]) {
+  return std::string(chars, ::strnlen(chars, N));
+}
+
+template <std::size_t N>
+Status copy_text(const std::string& text, const char* field, char (&out)[N]) {
+  if (text.size() >= N) {
+    return fail("sync: " + std::string(field) + " '" + text + "' is longer than a classroom carries (" +
+                std::to_string(N - 1) + " characters)");
+  }
+  std::memcpy(out, text.c_str(), text.size() + 1);
+  return ok();
+}
+
+}  // namespace
+
+Result<sim::PathologyTimeline> pathologies_from_wire(const lungar_sync_ScenarioEvents& s) {
+  sim::PathologyTimeline timeline;
+  const std::string list = text_of(s.pathologies);
+  for (std::size_t from = 0; from < list.size();) {
+    const std::size_t comma = std::min(list.find(',', from), list.size());
+    timeline.start.push_back(list.substr(from, comma - from));
+    from = comma + 1;
+  }
+  for (std::uint32_t i = 0; i < s.pathology_events._length; ++i) {
+    const lungar_sync_PathologyEvent& w = s.pathology_events._buffer[i];
+    timeline.events.push_back({w.t_s, w.over_s, text_of(w.add), text_of(w.remove)});
+  }
+  if (Status c = sim::check_timeline(timeline); !c) return c.with_context("lungar_scenario_events: ");
+  return timeline;
+}
+
+Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_PathologyEvent>& storage,
+               lungar_sync_ScenarioEvents& out) {
+  if (timeline.events.size() > kMaxPathologyEvents) {
+    return fail("sync: the scenario has " + std::to_string(timeline.events.size()) +
+                " pathology events; a classroom carries at most " + std::to_string(kMaxPathologyEvents));
+  }
+  std::string list;
+  for (const std::string& spec : timeline.start) list += (list.empty() ? "" : ",") + spec;
+  if (Status c = copy_text(list, "the pathology list", out.pathologies); !c) return c;
+  storage.assign(timeline.events.size(), lungar_sync_PathologyEvent{});
+  for (std::size_t i = 0; i < timeline.events.size(); ++i) {
+    const sim::PathologyEvent& e = timeline.events[i];
+    storage[i].t_s = e.at_s;
+    storage[i].over_s = e.over_s;
+    if (Status c = copy_text(e.add, "the pathology", storage[i].add); !c) return c;
+    if (Status c = copy_text(e.remove, "the pathology", storage[i].remove); !c) return c;
+  }
+  out.pathology_events._buffer = storage.data();
+  out.pathology_events._length = static_cast<std::uint32_t>(storage.size());
+  out.pathology_events._maximum = static_cast<std::uint32_t>(storage.size());
+  out.pathology_events._release = false;
   return ok();
 }
 

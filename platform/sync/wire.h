@@ -14,6 +14,7 @@
 #include "lungar/sync/classroom.h"
 #include "sim/breathing/event.h"
 #include "sim/breathing/pattern.h"
+#include "sim/pathology/pathology_timeline.h"
 
 namespace lungar::platform::sync {
 
@@ -30,6 +31,8 @@ inline constexpr double kMaxPositionMm = 1e5;
 inline constexpr double kQuaternionNormTolerance = 1e-3;
 /// Scenario events a classroom sample carries at most (the IDL sequence's bound).
 inline constexpr std::size_t kMaxScenarioEvents = 256;
+/// Pathology events a classroom sample carries at most (the IDL sequence's bound).
+inline constexpr std::size_t kMaxPathologyEvents = 64;
 
 Result<SharedPose> from_wire(const lungar_sync_PatientPose& s);
 void to_wire(const SharedPose& pose, std::uint64_t session, std::uint32_t seq, lungar_sync_PatientPose& out);
@@ -42,6 +45,14 @@ void to_wire(const sim::BreathingParams& p, lungar_sync_BreathingState& out);
 Result<std::vector<sim::Event>> from_wire(const lungar_sync_ScenarioEvents& s);
 /// Fills `storage` from `events` and points out.events at it (`storage` must outlive the write).
 Status to_wire(std::span<const sim::Event> events, std::vector<lungar_sync_ScenarioEvent>& storage,
+               lungar_sync_ScenarioEvents& out);
+
+/// The lungs' pathologies a ScenarioEvents carries: each spec one lungar knows, the events in time order, each
+/// removal of what is there (sim::check_timeline).
+Result<sim::PathologyTimeline> pathologies_from_wire(const lungar_sync_ScenarioEvents& s);
+/// Fills `storage` from `timeline` and points out's pathology members at it (`storage` must outlive the write);
+/// an error when the timeline does not fit the sample's bounds.
+Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_PathologyEvent>& storage,
                lungar_sync_ScenarioEvents& out);
 
 /// A heartbeat's frame time and breathing time must be real numbers.

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 
-#include "sim/force/dependent_collapse.h"
 
 namespace lungar::sim {
 
@@ -27,15 +26,13 @@ bool same_layout(const BakedAsset& a, const BakedAsset& b) {
   return true;
 }
 
-/// Whether lung l's per-vertex response and force pattern are the same in both (a change of shape only).
+/// Whether lung l's per-vertex response is the same in both (a change of shape or of the force only).
 bool same_response(const BakedAsset& a, const BakedAsset& b, std::size_t l) {
   const BakedLung& lung = a.lungs[l];
   const std::size_t c = a.coefficients();
   const auto first = static_cast<std::ptrdiff_t>(std::size_t{lung.first_vertex} * c);
   const auto count = static_cast<std::ptrdiff_t>(std::size_t{lung.vertex_count} * c);
-  const auto severity = [](const BakedLung& x) { return x.collapse ? x.collapse->severity() : -1.0; };
-  return std::equal(a.sh_coeffs.begin() + first, a.sh_coeffs.begin() + first + count, b.sh_coeffs.begin() + first) &&
-         severity(a.lungs[l]) == severity(b.lungs[l]);
+  return std::equal(a.sh_coeffs.begin() + first, a.sh_coeffs.begin() + first + count, b.sh_coeffs.begin() + first);
 }
 
 }  // namespace
@@ -73,7 +70,7 @@ Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const Baked
 std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vector<LungShape>& to, double w) {
   w = std::clamp(w, 0.0, 1.0);
   const auto mix = [w](double a, double b) { return a + w * (b - a); };
-  std::vector<LungShape> out = w < 0.5 ? from : to;  // what does not blend (the healthy volumes) switches halfway
+  std::vector<LungShape> out = w < 0.5 ? from : to;  // what does not blend switches halfway
   for (std::size_t l = 0; l < out.size() && l < from.size() && l < to.size(); ++l) {
     out[l].from_loaded.matrix() =
         from[l].from_loaded.matrix() + w * (to[l].from_loaded.matrix() - from[l].from_loaded.matrix());
@@ -89,8 +86,8 @@ std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vect
 }
 
 LungFigures LungFigures::of(const BakedLung& lung) {
-  return {lung.centre, lung.rest_volume_ml, lung.volume_const, lung.volume_grad, lung.breath_weight,
-          lung.healthy_volumes};
+  return {lung.centre,         lung.rest_volume_ml,  lung.volume_const, lung.volume_grad,
+          lung.breath_weight,  lung.healthy_volumes, lung.collapse,      lung.collapse_index};
 }
 
 void LungFigures::put_into(BakedLung& lung) const {
@@ -100,6 +97,8 @@ void LungFigures::put_into(BakedLung& lung) const {
   lung.volume_grad = volume_grad;
   lung.breath_weight = breath_weight;
   lung.healthy_volumes = healthy_volumes;
+  lung.collapse = collapse;
+  lung.collapse_index = collapse_index;
 }
 
 void take_figures(const std::vector<LungShape>& shapes, BakedAsset& asset) {

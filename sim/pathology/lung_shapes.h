@@ -2,11 +2,12 @@
 /// @brief A change of pathologies while the lungs are drawn: the asset on the GPU stays the one loaded, and each
 ///        lung's new shape is an affine map of its loaded one (exact for the changes that move or scale a lung:
 ///        pneumothorax, its tension, emphysema) with its new figures (its weight in the split of the breath, its
-///        swept and rest volumes, its centre). A scenario's pathology events (a tension pneumothorax dropping, a
+///        swept and rest volumes, its centre, an ARDS's collapse of its force). A scenario's pathology events (a tension pneumothorax dropping, a
 ///        needle decompression re-expanding it) blend two such states over the event's time.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct LungFigures {
   std::array<double, 3> volume_grad{};
   double breath_weight = 1;
   std::optional<std::array<double, 4>> healthy_volumes;
+  std::shared_ptr<const DependentCollapse> collapse;  ///< an ARDS: a change of the force, not of the response
+  std::size_t collapse_index = 0;
 
   static LungFigures of(const BakedLung& lung);
   void put_into(BakedLung& lung) const;
@@ -37,11 +40,11 @@ struct LungShape {
 };
 
 /// Each lung of `changed` as a map of the same lung in `loaded` (the same bake, other pathologies). An error names
-/// the lung whose change is not affine (a consolidation or ARDS changes the response, not the shape: those are
-/// given for the whole run).
+/// the lung whose change is not affine or whose response changed (a consolidation: given for the whole run).
 Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const BakedAsset& changed);
 
-/// `from` and `to` blended: w = 0 is `from`, 1 is `to` (the maps' matrices and the figures linearly).
+/// `from` and `to` blended: w = 0 is `from`, 1 is `to` (the maps' matrices and the figures linearly; the healthy
+/// volumes and the collapse, which do not blend, switch halfway).
 std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vector<LungShape>& to, double w);
 
 /// Sets each lung's figures of `asset` to those of `shapes` (the positions stay: the map is the drawing's).

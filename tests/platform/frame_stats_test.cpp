@@ -92,8 +92,9 @@ TEST(FrameStats, PerLungKeysFollowEachLungsOwnSwing) {
   for (int k = 0; k <= 10; ++k) {
     const double dv = 50.0 * k;  // 0 .. 500 mL
     const std::array<double, 2> lungs{0.58 * dv, 0.42 * dv};
+    const std::array<double, 2> rest{1800.0, 2100.0 - 20.0 * k};  // the right lung collapsing
     stats.record(16.0, 2.0, dv, {1.0, 0.0, 0.0});
-    stats.record_lungs(lungs);
+    stats.record_lungs(lungs, rest);
   }
   const auto j = stats.to_json();
   ASSERT_TRUE(j.contains("per_lung"));
@@ -103,6 +104,8 @@ TEST(FrameStats, PerLungKeysFollowEachLungsOwnSwing) {
   EXPECT_DOUBLE_EQ(j["per_lung"][0]["volume_ml_min"].get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(j["per_lung"][1]["volume_ml_max"].get<double>(), 210.0);
   EXPECT_DOUBLE_EQ(j["per_lung"][1]["tidal_ml"].get<double>(), 210.0);
+  EXPECT_DOUBLE_EQ(j["per_lung"][0]["rest_volume_ml"].get<double>(), 1800.0);
+  EXPECT_DOUBLE_EQ(j["per_lung"][1]["rest_volume_ml"].get<double>(), 1900.0) << "the last frame's";
 }
 
 TEST(FrameStats, VentralShareIsTheLastFramesPosture) {

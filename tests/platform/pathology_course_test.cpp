@@ -2,9 +2,12 @@
 // cannot be (a removal of what is not there, a change of response).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "config/scenario_load.h"
 #include "platform/app/pathology_course.h"
 #include "sim/bake/bake.h"
+#include "sim/force/dependent_collapse.h"
 #include "sim/pathology/pathology.h"
 
 using namespace lungar;
@@ -34,13 +37,23 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
   const config::Scenario s = scenario(
       "[[event]]\nat_s = 10.0\nkind = \"pathology\"\nadd = \"pneumothorax:right:40:tension\"\nover_s = 10.0\n"
       "[[event]]\nat_s = 30.0\nkind = \"pathology\"\nremove = \"pneumothorax:right:40:tension\"\nover_s = 20.0\n");
-  std::vector<std::string> lines;
-  auto course = platform::PathologyCourse::create(healthy(), healthy(), {}, s, [&](const std::string& l) {
-    lines.push_back(l);
-  });
+  const sim::PathologyTimeline timeline = platform::timeline_of({}, &s);
+  EXPECT_EQ(sim::describe(timeline),
+            "healthy, then pneumothorax:right:40:tension comes at 10.0 s over 10.0 s, then "
+            "pneumothorax:right:40:tension goes at 30.0 s over 20.0 s");
+  auto course = platform::PathologyCourse::create(healthy(), healthy(), timeline);
   ASSERT_TRUE(course) << course.error();
   ASSERT_TRUE(*course);
-  EXPECT_EQ(lines.size(), 2u);
+  const auto present = [&](double t) {
+    (*course)->at_seconds(t);
+    nlohmann::json j;
+    (*course)->add_stats(j);
+    return j["pathologies"].get<std::vector<std::string>>();
+  };
+  EXPECT_TRUE(present(15.0).empty()) << "coming, not yet there";
+  EXPECT_EQ(present(25.0), std::vector<std::string>{"pneumothorax:right:40:tension"});
+  EXPECT_EQ(present(45.0), std::vector<std::string>{"pneumothorax:right:40:tension"}) << "going";
+  EXPECT_TRUE(present(55.0).empty()) << "gone";
   const std::size_t right = right_of(healthy());
   sim::BakedAsset sick = healthy();
   ASSERT_TRUE(sim::apply_pathologies(sick, {"pneumothorax:right:40:tension"}));
@@ -61,19 +74,45 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
 
 TEST(PathologyCourse, WhatCannotComeOrGoIsRefusedNamingTheEvent) {
   auto refused = [](const std::string& events, const std::vector<std::string>& start, const char* why) {
-    auto course = platform::PathologyCourse::create(healthy(), healthy(), start, scenario(events), nullptr);
+    const config::Scenario s = scenario(events);
+    auto course = platform::PathologyCourse::create(healthy(), healthy(), platform::timeline_of(start, &s));
     ASSERT_FALSE(course) << events;
     EXPECT_NE(course.error().find(why), std::string::npos) << course.error();
-    EXPECT_NE(course.error().find("event[0]"), std::string::npos) << course.error();
+    EXPECT_NE(course.error().find("pathology event 1"), std::string::npos) << course.error();
   };
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nremove = \"pneumothorax:left:20\"\nover_s = 5.0\n", {},
           "is not present");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"consolidation:left:lower\"\nover_s = 5.0\n", {},
-          "give a consolidation or ARDS in its pathology list");
+          "a consolidation must be the drawn lungs' own");
+  refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"ards:0.5\"\nover_s = 5.0\n", {},
+          "an ARDS cannot come or go during a run");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"pneumothorax:centre:20\"\nover_s = 5.0\n", {}, "SIDE");
-  auto none = platform::PathologyCourse::create(healthy(), healthy(), {}, scenario(""), nullptr);
-  ASSERT_TRUE(none);
-  EXPECT_FALSE(*none) << "no event, no course";
+}
+
+TEST(PathologyCourse, StartsFromLungsDrawnOtherwiseAndTakesAnArdsFromTheStart) {
+  // A classroom's trainee draws its own lungs (healthy here) and takes the instructor's: a right pneumothorax and
+  // an ARDS from the start. The pneumothorax is a map of the drawn lungs, the ARDS their force's collapse.
+  const sim::PathologyTimeline instructor{{"pneumothorax:right:30", "ards:0.6"}, {}};
+  sim::BakedAsset drawn = healthy();
+  ASSERT_TRUE(sim::apply_pathologies(drawn, {"emphysema:0.5"}));  // the trainee's own, overruled
+  auto course = platform::PathologyCourse::create(healthy(), drawn, instructor);
+  ASSERT_TRUE(course) << course.error();
+  sim::BakedAsset sick = healthy();
+  ASSERT_TRUE(sim::apply_pathologies(sick, instructor.start));
+  const std::size_t right = right_of(healthy());
+  const auto& now = (*course)->at_seconds(1.0);
+  EXPECT_NEAR(now[right].figures.rest_volume_ml, sick.lungs[right].rest_volume_ml, 1e-6);
+  ASSERT_TRUE(now[right].figures.collapse) << "the ARDS's collapse goes with the figures";
+  EXPECT_DOUBLE_EQ(now[right].figures.collapse->severity(), 0.6);
+  const std::size_t i = drawn.lungs[right].first_vertex + 10;
+  const Eigen::Vector3d from(drawn.positions[3 * i], drawn.positions[3 * i + 1], drawn.positions[3 * i + 2]);
+  const Eigen::Vector3d to(sick.positions[3 * i], sick.positions[3 * i + 1], sick.positions[3 * i + 2]);
+  EXPECT_LT((now[right].from_loaded * from - to).norm(), 0.05) << "mapped from the emphysema to the pneumothorax";
+  sim::BakedAsset consolidated = healthy();
+  ASSERT_TRUE(sim::apply_pathologies(consolidated, {"consolidation:left:lower"}));
+  auto refused = platform::PathologyCourse::create(healthy(), consolidated, instructor);
+  ASSERT_FALSE(refused) << "the drawn lungs' consolidation is baked into their response";
+  EXPECT_NE(refused.error().find("pathology at the start"), std::string::npos) << refused.error();
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ int run_instructor(const SyncOptions& o, double seconds) {
   }
   Instructor& node = **made;
   const std::int64_t t0 = monotonic_ns();
-  if (Status s = node.share_breathing(sim::BreathingParams{}, {}, t0); !s) {
+  if (Status s = node.share_breathing(sim::BreathingParams{}, {}, {}, t0); !s) {
     log_line("lungar-sync-probe", s.error());
     return 1;
   }

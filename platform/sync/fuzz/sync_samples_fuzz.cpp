@@ -79,10 +79,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 3:
       receive<lungar_sync_ScenarioEvents>(data, size, xcdr, bswap, [](const lungar_sync_ScenarioEvents& s) {
         auto events = ls::from_wire(s);
-        if (!events) return;
-        if (events->size() > ls::kMaxScenarioEvents) std::abort();
-        for (std::size_t k = 1; k < events->size(); ++k)
-          if ((*events)[k].t_s < (*events)[k - 1].t_s) std::abort();  // promised: in time order
+        if (events) {
+          if (events->size() > ls::kMaxScenarioEvents) std::abort();
+          for (std::size_t k = 1; k < events->size(); ++k)
+            if ((*events)[k].t_s < (*events)[k - 1].t_s) std::abort();  // promised: in time order
+        }
+        auto lungs = ls::pathologies_from_wire(s);
+        if (!lungs) return;
+        if (lungs->events.size() > ls::kMaxPathologyEvents) std::abort();
+        for (const auto& e : lungs->events) {  // promised: real times, in order, one spec an event
+          finite_or_abort(e.at_s);
+          finite_or_abort(e.over_s);
+          if (e.add.empty() == e.remove.empty()) std::abort();
+        }
       });
       break;
     case 4:

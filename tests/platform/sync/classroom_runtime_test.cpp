@@ -3,10 +3,12 @@
 // tolerances, read from each station's stats JSON and log: every trainee's patient follows the instructor's
 // turn within one tracker period (16 ms) and its breath offset p99 is at most 5 ms; a trainee started 3 s late
 // is in step within 100 ms of joining; killing the instructor makes trainees lost within 500 ms and a
-// restarted one brings them back; a second instructor is refused; two classrooms on one domain stay apart.
+// restarted one brings them back; a second instructor is refused; two classrooms on one domain stay apart; a
+// trainee draws the instructor's pathologies (an ARDS from the start, a tension pneumothorax dropping) in step.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <thread>
 
@@ -47,7 +49,7 @@ class ClassroomRuntime : public lungar::testing::StationsTest {
   ClassroomRuntime() : StationsTest("ward") {}
   std::unique_ptr<StationProcess> start(const std::string& name, const std::string& role, double seconds,
                                         std::vector<std::string> extra = {}, const std::string& classroom = "") {
-    std::vector<std::string> a = {"--config", config, "--asset", kAsset, "--sync", role, "--station", name,
+    std::vector<std::string> a = {"--config", config, "--asset", asset, "--sync", role, "--station", name,
                                   "--classroom", classroom.empty() ? room : classroom, "--sync-domain", domain,
                                   "--seconds", std::to_string(seconds), "--tracker", "mock",
                                   "--stats-json", (dir / (name + ".json")).string(),
@@ -57,6 +59,7 @@ class ClassroomRuntime : public lungar::testing::StationsTest {
   }
 
   std::string config = kConfig;  ///< the profile of the stations started next
+  std::string asset = kAsset;    ///< the lungs of the stations started next
 };
 
 }  // namespace
@@ -152,4 +155,51 @@ TEST_F(ClassroomRuntime, ASecondInstructorIsRefusedAndTwoClassroomsOnOneDomainAr
   // 'first' may have seen the refused 'second' (it announces itself while it listens), never the other
   // classroom's two stations, which ran together.
   EXPECT_LE(json_of("first")["sync_peers_max"].get<int>(), 1) << json_of("first").dump();
+}
+
+TEST_F(ClassroomRuntime, ATraineeDrawsTheInstructorsArdsAndTensionPneumothoraxInStep) {
+  // The instructor's scenario: a supine patient with ARDS whose right tension pneumothorax drops 1.5 s into the
+  // breathing, over 1 s. The trainee loads healthy lungs, its clock 250 ms off, and joins about then: it must
+  // draw what the instructor draws, on the instructor's time. ARDS needs an asset with sphere points (format 3).
+  asset = (dir / "v3.lungbake").string();
+  const std::string bake = std::string(LUNGAR_BINARY_DIR) + "/sim/lungar-bake --procedural --nodes 2032 --out " +
+                           asset + " > " + (dir / "bake.log").string() + " 2>&1";
+  ASSERT_EQ(std::system(bake.c_str()), 0) << bake;
+  const std::string scenario = (dir / "ards-tension.toml").string();
+  std::ofstream(scenario) << "duration_s = 30.0\npathology = [\"ards:0.6\"]\n[start]\nrate_bpm = 30.0\n"
+                             "pose = \"supine\"\n[[event]]\nat_s = 1.5\nkind = \"pathology\"\n"
+                             "add = \"pneumothorax:right:30:tension\"\nover_s = 1.0\n";
+  auto instructor = start("instructor", "instructor", 9.0, {"--scenario", scenario});
+  ASSERT_TRUE(instructor->wait_for("running", 30)) << instructor->err();
+  auto trainee = start("trainee", "trainee", 5.0, {"--sync-clock-skew-ms", "250"});
+  auto alone = start("alone", "trainee", 3.0, {}, lungar::testing::test_classroom("empty"));  // no instructor
+  ASSERT_EQ(trainee->wait(60), 0) << trainee->err();
+  ASSERT_EQ(alone->wait(60), 0) << alone->err();
+  ASSERT_EQ(instructor->wait(60), 0) << instructor->err();
+
+  const auto in = json_of("instructor"), t = json_of("trainee"), own = json_of("alone");
+  const std::vector<std::string> sick = {"ards:0.6", "pneumothorax:right:30:tension"};
+  EXPECT_EQ(in["pathologies"], sick) << in.dump();
+  EXPECT_EQ(t["pathologies"], sick) << t.dump();
+  EXPECT_EQ(t["sync_lungs"], "instructor");
+  EXPECT_EQ(own["sync_lungs"], "own");
+  EXPECT_TRUE(own["pathologies"].empty()) << own.dump();
+  ASSERT_EQ(t["per_lung"].size(), 2u);
+  for (std::size_t l = 0; l < 2; ++l) {
+    SCOPED_TRACE(t["per_lung"][l]["name"].get<std::string>());
+    EXPECT_NEAR(t["per_lung"][l]["rest_volume_ml"].get<double>(), in["per_lung"][l]["rest_volume_ml"].get<double>(),
+                1e-6);
+  }
+  const auto rest = [](const nlohmann::json& j, const char* name) {
+    for (const auto& lung : j["per_lung"])
+      if (lung["name"] == name) return lung["rest_volume_ml"].get<double>();
+    return 0.0;
+  };
+  EXPECT_LT(rest(t, "right"), 0.8 * rest(own, "right")) << "collapsed, where its own lungs are healthy";
+  // The ARDS follows the posture the classroom shares: supine the breath goes to the front, on both alike.
+  EXPECT_NEAR(t["ventral_share"].get<double>(), in["ventral_share"].get<double>(), 1e-3);
+  EXPECT_NE(trainee->err().find("classroom: drawing the instructor's lungs: ards:0.6, then "
+                                "pneumothorax:right:30:tension comes at 1.5 s over 1.0 s"),
+            std::string::npos)
+      << trainee->err();
 }

@@ -65,7 +65,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
   auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
   ASSERT_TRUE(script);
-  ASSERT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, t0));
+  ASSERT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, {}, t0));
   auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee), quiet);
   ASSERT_TRUE(trainee) << trainee.error();
   auto learner = std::make_shared<ClassroomStation>(trainee.take());

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "platform/sync/wire.h"
@@ -116,6 +117,58 @@ TEST(SyncWire, ScenarioEventsRoundTrip) {
   EXPECT_EQ((*back)[1].kind, sim::EventKind::Sigh);
   EXPECT_DOUBLE_EQ((*back)[1].sigh_volume_ml, 900.0);
   EXPECT_EQ((*back)[2].kind, sim::EventKind::HoldStart);
+}
+
+TEST(SyncWire, TheLungsPathologiesRoundTripWithTheScenarioEvents) {
+  const sim::PathologyTimeline lungs{{"ards:0.6", "emphysema:0.3:left"},
+                                     {{10.0, 15.0, "pneumothorax:right:40:tension", ""},
+                                      {40.0, 20.0, "", "pneumothorax:right:40:tension"}}};
+  std::vector<lungar_sync_PathologyEvent> storage;
+  lungar_sync_ScenarioEvents w{};
+  ASSERT_TRUE(to_wire(lungs, storage, w));
+  EXPECT_STREQ(w.pathologies, "ards:0.6,emphysema:0.3:left");
+  ASSERT_EQ(w.pathology_events._length, 2u);
+  auto back = pathologies_from_wire(w);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(*back, lungs);
+  lungar_sync_ScenarioEvents healthy{};
+  auto none = pathologies_from_wire(healthy);
+  ASSERT_TRUE(none) << none.error();
+  EXPECT_TRUE(none->empty()) << "an empty list is healthy lungs";
+}
+
+TEST(SyncWire, MalformedPathologiesAreRefusedNamingWhatIsWrong) {
+  const sim::PathologyTimeline lungs{{"ards:0.6"}, {{10.0, 15.0, "pneumothorax:right:40", ""}}};
+  std::vector<lungar_sync_PathologyEvent> storage;
+  lungar_sync_ScenarioEvents w{};
+  ASSERT_TRUE(to_wire(lungs, storage, w));
+  const auto refused = [&](const char* why) {
+    auto r = pathologies_from_wire(w);
+    ASSERT_FALSE(r) << why;
+    EXPECT_NE(r.error().find("lungar_scenario_events: "), std::string::npos) << r.error();
+    EXPECT_NE(r.error().find(why), std::string::npos) << r.error();
+  };
+  std::strcpy(w.pathologies, "ards:0.6,,asthma");
+  refused("pathology at the start");
+  std::strcpy(w.pathologies, "ards:0.6");
+  storage[0].over_s = kNaN;
+  refused("pathology event 1: over_s");
+  storage[0].over_s = 15.0;
+  storage[0].t_s = -1.0;
+  refused("pathology event 1: at_s");
+  storage[0].t_s = 10.0;
+  std::strcpy(storage[0].remove, "ards:0.6");
+  refused("expected one of add and remove");
+  storage[0].add[0] = '\0';
+  std::strcpy(storage[0].remove, "pneumothorax:left:20");
+  refused("is not present then");
+  EXPECT_TRUE(pathologies_from_wire(w).error().find("pneumothorax:left:20") != std::string::npos);
+
+  sim::PathologyTimeline too_many{{}, std::vector<sim::PathologyEvent>(kMaxPathologyEvents + 1,
+                                                                       {1.0, 1.0, "emphysema:0.1", ""})};
+  EXPECT_FALSE(to_wire(too_many, storage, w)) << "more than a sample carries";
+  sim::PathologyTimeline too_long{{std::string(600, 'a')}, {}};
+  EXPECT_FALSE(to_wire(too_long, storage, w)) << "a list longer than a sample carries";
 }
 
 TEST(SyncWire, MalformedScenarioEventsAreRefused) {

@@ -194,7 +194,9 @@ Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std
 }
 
 /// The snapshot (a last frame, not counted) and the stats JSON; every output is written whole or not at all.
-int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool frames_ok) {
+/// `pathologies`: the lungs' for the whole run, which the stats JSON reports when no course of them does.
+int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool frames_ok,
+                  const std::vector<std::string>& pathologies) {
   int exit_code = frames_ok ? 0 : 1;
   const std::string snapshot = !o.snapshot_path.empty() ? o.snapshot_path : std::string(kDefaultSnapshot);
   const std::string stats_path = !o.stats_json_path.empty() ? o.stats_json_path : std::string(kDefaultStats);
@@ -207,7 +209,9 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
     }
   }
   runtime.poses().stop();
-  if (Status written = write_file_atomically(stats_path, runtime.stats_json(wall_s).dump(2) + "\n"); !written) {
+  nlohmann::ordered_json stats = runtime.stats_json(wall_s);
+  if (!stats.contains("pathologies")) stats["pathologies"] = pathologies;
+  if (Status written = write_file_atomically(stats_path, stats.dump(2) + "\n"); !written) {
     log_line("error: stats: " + written.error());
     exit_code = 1;
   } else {
@@ -269,7 +273,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   log_limit(o, limit_s);
   const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
   if (!frames) log_line("error: " + frames.error());
-  int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok());
+  int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok(), s.sim.pathologies);
   if (tracker_record_path(o.record_path) != o.record_path) {
     runtime->reset();  // the tracker closes its log first
     auto plus = finish_plus_recording(o.record_path, s.trackers);

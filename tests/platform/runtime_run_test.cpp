@@ -180,6 +180,9 @@ TEST_F(RuntimeRun, AScenariosArdsPatientTurnedProneBreathesIntoItsBackAgain) {
     const auto j = stats();
     if (pathology != nullptr) {
       EXPECT_NE(j["asset"].get<std::string>().find(pathology), std::string::npos) << j["asset"];
+      EXPECT_EQ(j["pathologies"], std::vector<std::string>{pathology});
+    } else {
+      EXPECT_TRUE(j["pathologies"].empty()) << j.dump();
     }
     return j["ventral_share"].get<double>();
   };

@@ -3,6 +3,7 @@
 ///        out with (sim/pathology/lung_shapes.h).
 #include <gtest/gtest.h>
 
+#include "sim/force/dependent_collapse.h"
 #include "sim/pathology/lung_shapes.h"
 #include "sim/pathology/pathology.h"
 #include "sim_test_support.h"
@@ -83,14 +84,19 @@ TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
   EXPECT_EQ(figures.positions, healthy.positions) << "the positions are the drawing's map";
 }
 
-TEST(LungShapes, AChangeOfResponseIsNoShapeAndIsRefusedByLung) {
+TEST(LungShapes, AChangeOfResponseIsRefusedByLungAndArdsRidesWithTheFigures) {
   const BakedAsset healthy = test::sliding_bake().asset;
   Result<std::vector<LungShape>> c = lung_shapes(healthy, with({"consolidation:left:lower"}));
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().find("lung 'left'"), std::string::npos) << c.error();
-  EXPECT_FALSE(lung_shapes(healthy, with({"ards:0.5"})));
-  EXPECT_TRUE(lung_shapes(with({"ards:0.5"}), with({"ards:0.5", "pneumothorax:right:20"})))
-      << "ARDS at the same severity in both: only the shape changed";
+  // ARDS changes the force, not the response: its collapse goes with the figures (a trainee takes it so).
+  Result<std::vector<LungShape>> ards = lung_shapes(healthy, with({"ards:0.5", "pneumothorax:right:20"}));
+  ASSERT_TRUE(ards) << ards.error();
+  for (const LungShape& lung : *ards) {
+    ASSERT_TRUE(lung.figures.collapse);
+    EXPECT_DOUBLE_EQ(lung.figures.collapse->severity(), 0.5);
+  }
+  EXPECT_FALSE((*ards)[0].figures.collapse_index == (*ards)[1].figures.collapse_index) << "each lung its own index";
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ Status serve_igtl(const ServeIgtlOptions& o, const std::atomic<bool>& stop,
                   const std::function<void(const std::string&)>& log,
                   const std::function<void(int port)>& on_listening) {
   if (!mock_pose(o.trajectory, Role::Patient, 0.0)) {
-    return fail(std::string("--trajectory: expected ") + kMockTrajectoriesExpected + ", got \"" + o.trajectory + "\"");
+    return fail(unknown_trajectory("--trajectory", o.trajectory));
   }
   if (!(o.rate_hz > 0)) return fail("--rate-hz: expected a positive rate, got " + std::to_string(o.rate_hz));
   std::vector<std::pair<Role, std::string>> devices;

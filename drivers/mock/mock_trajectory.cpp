@@ -8,6 +8,12 @@
 
 namespace lungar::drivers {
 
+std::string unknown_trajectory(const std::string& field, const std::string& name) {
+  std::string line = field;
+  line.append(": expected ").append(kMockTrajectoriesExpected).append(", got \"").append(name).append("\"");
+  return line;
+}
+
 namespace {
 
 /// The orientation of a sensor at `eye` that looks at `target` (its +y forward, +z as close to world up as can be).

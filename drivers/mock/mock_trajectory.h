@@ -28,6 +28,9 @@ inline constexpr double kMockTurnS = 4.0;
 /// README's ventilation map is drawn from).
 inline constexpr const char* kMockTrajectoriesExpected = "static | upright_to_supine | head_orbit | bedside";
 
+/// "FIELD: expected static | ... | bedside, got "NAME"": the line for a trajectory name that is none of them.
+std::string unknown_trajectory(const std::string& field, const std::string& name);
+
 /// The pose of `role` at `t_s` seconds into `trajectory` (kMockTrajectoriesExpected); nullopt for an unknown
 /// trajectory name.
 std::optional<PoseSample> mock_pose(const std::string& trajectory, Role role, double t_s);

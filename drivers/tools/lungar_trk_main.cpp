@@ -170,8 +170,7 @@ int synth(const std::string& out, const std::string& config_path, const std::str
   t.mock_noise_mm = noise_mm;
   t.mock_dropout = dropout;
   if (!mock_pose(t.mock_trajectory, Role::Head, 0)) {
-    return die(std::string("--trajectory: expected ") + kMockTrajectoriesExpected + ", got \"" + t.mock_trajectory +
-               "\"");
+    return die(unknown_trajectory("--trajectory", t.mock_trajectory));
   }
   auto layout = make_layout(t);
   if (!layout) return die(layout.error());

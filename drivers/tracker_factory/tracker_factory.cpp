@@ -55,8 +55,7 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
   switch (settings.source) {
     case TrackerSource::Mock:
       if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
-        return fail(std::string("trackers.mock_trajectory: expected ") + kMockTrajectoriesExpected + ", got \"" +
-                    settings.mock_trajectory + "\"");
+        return fail(unknown_trajectory("trackers.mock_trajectory", settings.mock_trajectory));
       }
       return mock_create(settings, layout);
     case TrackerSource::Replay: {

@@ -13,7 +13,6 @@ namespace lungar::sim {
 Status check_timeline(const PathologyTimeline& timeline) {
   for (const std::string& spec : timeline.start)
     if (Result<Pathology> p = parse_pathology(spec); !p) return p.with_context("pathology at the start: ");
-  std::vector<std::string> present = timeline.start;
   double previous_s = 0;
   for (std::size_t k = 0; k < timeline.events.size(); ++k) {
     const PathologyEvent& e = timeline.events[k];
@@ -25,14 +24,12 @@ Status check_timeline(const PathologyTimeline& timeline) {
     previous_s = e.at_s;
     if (!e.add.empty()) {
       if (Result<Pathology> p = parse_pathology(e.add); !p) return p.with_context(where + "add: ");
-      present.push_back(e.add);
       continue;
     }
-    const auto it = std::find(present.begin(), present.end(), e.remove);
-    if (it == present.end())
+    const std::vector<std::string> present = present_after(timeline, k);  // at most 64 events: quadratic is fine
+    if (std::find(present.begin(), present.end(), e.remove) == present.end())
       return fail(where + "remove: '" + e.remove + "' is not present then (the start and the events before it add "
                   "what can be removed)");
-    present.erase(it);
   }
   return {};
 }

@@ -233,6 +233,10 @@ bool EglContext::process_events() {
       const KeySym key = XLookupKeysym(&event.xkey, 0);
       if (key == XK_Escape || key == XK_q) open_ = false;
       if (key >= XK_a && key <= XK_z && keys_.size() < 64) keys_ += static_cast<char>('a' + (key - XK_a));
+      // Confirm and undo for screens that ask the user (lungar calibrate-display's crosshairs).
+      if (key == XK_space && keys_.size() < 64) keys_ += ' ';
+      if ((key == XK_Return || key == XK_KP_Enter) && keys_.size() < 64) keys_ += '\n';
+      if (key == XK_BackSpace && keys_.size() < 64) keys_ += '\b';
     }
   }
   return open_;

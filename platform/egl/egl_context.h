@@ -47,7 +47,8 @@ class EglContext {
   Status swap_buffers();
   /// Handles pending window events; false once the window was closed or Escape/q pressed.
   bool process_events();
-  /// The letter keys pressed since the last call (lower-case), collected by process_events().
+  /// The letter keys pressed since the last call (lower-case), and Space, Enter and Backspace as ' ', '\n' and
+  /// '\b', collected by process_events().
   std::string take_keys() { return std::exchange(keys_, {}); }
   /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.
   std::string describe() const;

@@ -43,7 +43,8 @@ class FrameOutput {
   virtual std::string describe() const = 0;
   /// Handles pending events; false once the output is closed (window closed, Escape, session ending).
   virtual bool poll_events() = 0;
-  /// The keys pressed since the last call, lower-case letters (an output without a keyboard: none).
+  /// The keys pressed since the last call: lower-case letters, and Space, Enter, Backspace as ' ', '\n', '\b' (an
+  /// output without a keyboard: none).
   virtual std::string take_keys() { return {}; }
   /// Waits for the output's pacing (a no-op where the swap interval paces) and says when the frame is shown.
   virtual Result<FrameTiming> begin_frame(std::int64_t now_ns) = 0;

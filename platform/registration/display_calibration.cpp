@@ -165,6 +165,19 @@ Result<EyeCalibration> calibrate_eye(const std::vector<Alignment>& al) {
   return e;
 }
 
+Status write_alignments_csv(const std::string& path, const std::array<std::vector<Alignment>, 2>& eyes) {
+  std::string out = "eye,x_mm,y_mm,z_mm,u_px,v_px\n";
+  for (int e = 0; e < 2; ++e) {
+    for (const Alignment& a : eyes[e]) {
+      char row[160];
+      std::snprintf(row, sizeof row, "%s,%.3f,%.3f,%.3f,%.2f,%.2f\n", e == 0 ? "left" : "right", a.point_mm.x(),
+                    a.point_mm.y(), a.point_mm.z(), a.pixel.x(), a.pixel.y());
+      out += row;
+    }
+  }
+  return write_file_atomically(path, out);
+}
+
 Status write_display_calibration_toml(const std::string& path, const std::array<EyeCalibration, 2>& eyes) {
   std::string out = "# Written by `lungar calibrate-display` (SPAAM, normalised DLT): reprojection RMS left " +
                     std::to_string(eyes[0].rms_px) + " px, right " + std::to_string(eyes[1].rms_px) +

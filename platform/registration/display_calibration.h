@@ -42,6 +42,10 @@ struct EyeCalibration {
 /// names the file and the line.
 Result<std::array<std::vector<Alignment>, 2>> read_alignments_csv(const std::string& path);
 
+/// Writes what read_alignments_csv() reads (the left eye's, then the right's; 0.001 mm and 0.01 px), whole or not
+/// at all: an interactive session's alignments, kept so that a fit can be redone or the alignments inspected.
+Status write_alignments_csv(const std::string& path, const std::array<std::vector<Alignment>, 2>& eyes);
+
 /// The DLT fit of one eye; refused (one line) with fewer than kMinAlignmentsPerEye alignments, or points near a
 /// plane or a line.
 Result<EyeCalibration> calibrate_eye(const std::vector<Alignment>& alignments);

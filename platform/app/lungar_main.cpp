@@ -31,6 +31,7 @@ struct Commands {
   lungar::platform::PivotOptions pivot;
   CLI::App* pivot_app = nullptr;
   lungar::platform::CalibrateDisplayOptions display;
+  std::vector<double> display_tip, display_fiducial;  ///< calibrate-display's three numbers, when given
   CLI::App* display_app = nullptr;
   lungar::platform::ClassroomKeysOptions keys;
   CLI::App* keys_app = nullptr;
@@ -66,13 +67,33 @@ void add_calibrate(CLI::App& app, Commands& m) {
 void add_display_and_keys(CLI::App& app, Commands& m) {
   CLI::App* display = m.display_app = app.add_subcommand(
       "calibrate-display", "each eye's projection of an optical see-through HMD from SPAAM alignments (DLT)");
-  display
-      ->add_option("--alignments", m.display.alignments_csv,
-                   "CSV eye,x_mm,y_mm,z_mm,u_px,v_px: a tracked point in the head sensor's frame and the eye's pixel "
-                   "(origin top-left) lined up with it; at least 6 per eye, 20-25 advised, 0.3-0.9 m deep")
-      ->required();
+  display->add_option("--alignments", m.display.alignments_csv,
+                      "CSV eye,x_mm,y_mm,z_mm,u_px,v_px: a tracked point in the head sensor's frame and the eye's "
+                      "pixel (origin top-left) lined up with it; at least 6 per eye, 20-25 advised, 0.3-0.9 m deep. "
+                      "Without it: interactive, a crosshair on the HMD for each eye in turn");
   display->add_option("--out", m.display.out_path, "where to write [hmd.display_calibration] (TOML)")->required();
   display->add_option("--report-json", m.display.report_json, "each eye's reprojection error, centre, intrinsics");
+  display->add_option("--save-alignments", m.display.save_alignments,
+                      "interactive: where to write the alignments gathered (default: beside --out, "
+                      "NAME-alignments.csv)");
+  display->add_option("--config", m.display.config_path,
+                      "interactive: settings TOML with the tracker, the display and the HMD (default: as lungar's)");
+  display
+      ->add_option("--stylus-tip-mm", m.display_tip,
+                   "interactive: x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] "
+                   "tip_offset_mm)")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(-1000.0, 1000.0));
+  display
+      ->add_option("--fiducial-mm", m.display_fiducial,
+                   "interactive: x,y,z: line up with this point on the patient tracker (its sensor's frame, mm) "
+                   "instead of the stylus tip")
+      ->delimiter(',')
+      ->expected(3)
+      ->check(CLI::Range(-1000.0, 1000.0));
+  display->add_option("--grid", m.display.grid, "interactive: N x N crosshair positions an eye (3-10)")
+      ->capture_default_str();
 
   lungar::platform::ClassroomKeysOptions& k = m.keys;
   CLI::App* keys = m.keys_app =
@@ -96,7 +117,12 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
 /// The chosen subcommand's exit code; none when the command line runs the runtime.
 std::optional<int> run_command(Commands& m, const std::string& config_path) {
   if (*m.pivot_app) return lungar::platform::run_pivot(m.pivot);
-  if (*m.display_app) return lungar::platform::run_calibrate_display(m.display);
+  if (*m.display_app) {
+    if (m.display_tip.size() == 3) m.display.stylus_tip_mm = Eigen::Vector3d(m.display_tip.data());
+    if (m.display_fiducial.size() == 3) m.display.fiducial_mm = Eigen::Vector3d(m.display_fiducial.data());
+    if (m.display.config_path.empty()) m.display.config_path = config_path;
+    return lungar::platform::run_calibrate_display(m.display);
+  }
   if (*m.keys_app) {
     auto made = lungar::platform::make_classroom_keys(m.keys);
     if (!made) {

@@ -23,9 +23,12 @@ int visiting_step(int side) {
 
 const char* eye_name(int eye) { return eye == 0 ? "LEFT" : "RIGHT"; }
 
-/// Why a pose cannot be used, or empty.
-std::string unusable(const drivers::PoseSample& pose, const char* what) {
-  if (!pose.valid()) return std::string(what) + " pose: none from the tracker yet";
+/// Why a pose cannot be used, or empty. The tracker reports no pose of a sensor its settings leave out.
+std::string unusable(const drivers::PoseSample& pose, const char* what, drivers::Role role) {
+  if (!pose.valid()) {
+    return std::string(what) + " pose: none from the tracker yet (is [trackers." + drivers::to_string(role) +
+           "] enabled?)";
+  }
   if (pose.stale()) return std::string(what) + " pose: stale (out of the tracker's view?)";
   return {};
 }
@@ -60,8 +63,8 @@ SpaamTarget SpaamSession::target() const {
 Status SpaamSession::confirm(const drivers::PoseSample& head, const drivers::PoseSample& point_sensor) {
   if (done()) return fail("every position of both eyes is aligned already");
   const char* what = point_.role == drivers::Role::Stylus ? "stylus" : "patient tracker";
-  if (std::string why = unusable(head, "head"); !why.empty()) return fail(why + "; not recorded");
-  if (std::string why = unusable(point_sensor, what); !why.empty()) return fail(why + "; not recorded");
+  if (std::string why = unusable(head, "head", drivers::Role::Head); !why.empty()) return fail(why + "; not recorded");
+  if (std::string why = unusable(point_sensor, what, point_.role); !why.empty()) return fail(why + "; not recorded");
   const Eigen::Vector3d world = point_sensor.transform() * point_.offset_mm;
   const SpaamTarget t = target();
   alignments_[static_cast<std::size_t>(t.eye)].push_back({head.transform().inverse() * world, t.pixel});

@@ -170,7 +170,7 @@ TEST(SpaamSession, APoseTheTrackerDoesNotVouchForIsRefused) {
   drivers::PoseSample none;  // before the first report
   Status refused = session.confirm(none, p[1]);
   ASSERT_FALSE(refused);
-  EXPECT_EQ(refused.error(), "head pose: none from the tracker yet; not recorded");
+  EXPECT_EQ(refused.error(), "head pose: none from the tracker yet (is [trackers.head] enabled?); not recorded");
   p[1].flags |= drivers::kPoseStale;
   refused = session.confirm(p[0], p[1]);
   ASSERT_FALSE(refused);

@@ -7,13 +7,12 @@
 /// @ingroup platform
 #pragma once
 
-#include <array>
-#include <atomic>
 #include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "config/base/spsc_ring.h"
 #include "drivers/pose/pose_sample.h"
 #include "platform/app/followed_breathing.h"
 
@@ -33,7 +32,7 @@ class MarkerFeed final : public SurrogateFeed {
 
   /// The frame thread: until the axis is known the samples are kept (up to the window's worth); then each goes to
   /// the follower as its excursion along the axis.
-  void feed(double t_s, sim::BreathFollower& follower) override;
+  void feed(double t_s, Followers& followers) override;
   void add_stats(nlohmann::json& stats) const override;
   bool axis_found() const { return axis_found_; }
 
@@ -47,10 +46,7 @@ class MarkerFeed final : public SurrogateFeed {
   // Tracker thread.
   drivers::PoseSample patient_;
   bool patient_seen_ = false;
-  // Ring from the tracker thread to the frame thread.
-  std::array<Sample, 1024> ring_{};
-  std::atomic<std::uint64_t> written_{0}, read_{0};
-  std::atomic<std::uint64_t> dropped_{0};  ///< ring full (the frame thread stalled): samples lost, counted
+  SpscRing<Sample, 1024> ring_;  ///< tracker thread -> frame thread; full (the frame stalled): dropped, counted
   // Frame thread.
   std::vector<double> window_t_;
   std::vector<Eigen::Vector3d> window_p_;

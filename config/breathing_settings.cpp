@@ -11,7 +11,11 @@ void read_breathing_settings(TomlSection s, BreathingSettings& b) {
   s.number("tidal_volume_ml", b.tidal_volume_ml, 50.0, 3000.0, "mL");
   s.text("scenario", b.scenario);
   s.text("source", b.source);
-  if (b.source.empty()) s.fail("source", "expected \"model\", a trace file or \"marker:ROLE\", got \"\"");
+  if (b.source.empty()) {
+    s.fail("source",
+           "expected \"model\", a trace file, \"marker:ROLE\", \"amm[@DOMAIN]\" or \"openice[:METRIC][@DOMAIN]\", "
+           "got \"\"");
+  }
   s.finish();
 }
 

@@ -11,9 +11,9 @@
 
 namespace lungar::platform {
 
-void TraceFeed::feed(double t_s, sim::BreathFollower& follower) {
+void TraceFeed::feed(double t_s, Followers& followers) {
   for (; next_ < trace_.samples.size() && trace_.samples[next_].t_s <= t_s; ++next_)
-    follower.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
+    followers.breath.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
 }
 
 void TraceFeed::add_stats(nlohmann::json& stats) const {
@@ -30,16 +30,24 @@ FollowedBreathing::FollowedBreathing(std::shared_ptr<SurrogateFeed> feed,
   // Each frame's sample age is measured (the frame's time against the newest sample's); beyond it, the frame
   // reaches the eye about one refresh of a 60 Hz HMD later.
   p.predict_s = kFrameToPhotonsS;
-  follower_ = sim::BreathFollower(p);
+  p.in_ml = feed_->in_ml();
+  followers_.breath = sim::BreathFollower(p);
+  followers_.lungs = {sim::BreathFollower(p), sim::BreathFollower(p)};
 }
 
 sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
   const double t = seconds_between(t0_ns_, now_ns);
-  feed_->feed(t, follower_);
+  feed_->feed(t, followers_);
   sim::BreathingSample s = model_->driver.at(t);
-  const sim::FollowerOutput o = follower_.at(t, s.dv_ml);
+  const sim::FollowerOutput o = followers_.breath.at(t, s.dv_ml);
+  if (feed_->per_lung()) {
+    for (std::size_t l = 0; l < 2; ++l) {  // a lung followed on its own; else its posture's share of the breath
+      const sim::FollowerOutput lung = followers_.lungs[l].at(t, 0.5 * s.dv_ml);
+      if (lung.state == sim::BreathState::following) s.lung_dv_ml[l] = lung.dv_ml;
+    }
+  }
   if (o.state == sim::BreathState::following) {
-    lag_sum_s_ += t - follower_.last_sample_s();
+    lag_sum_s_ += t - followers_.breath.last_sample_s();
     ++lag_n_;
     following_s_ += std::max(0.0, t - last_t_);
   }
@@ -60,11 +68,11 @@ sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
 void FollowedBreathing::add_stats(nlohmann::json& stats) const {
   feed_->add_stats(stats);
   stats["breath_state"] = sim::kBreathStateNames.name(state_);
-  stats["breath_rate_per_min"] = follower_.rate_per_min();
+  stats["breath_rate_per_min"] = followers_.breath.rate_per_min();
   stats["breath_lag_ms"] = lag_n_ > 0 ? 1000.0 * lag_sum_s_ / static_cast<double>(lag_n_) : 0.0;
   stats["breath_following_s"] = following_s_;
-  stats["breath_apnoeas"] = follower_.apnoeas();
-  stats["breath_irregular"] = follower_.irregular_breaths();
+  stats["breath_apnoeas"] = followers_.breath.apnoeas();
+  stats["breath_irregular"] = followers_.breath.irregular_breaths();
 }
 
 }  // namespace lungar::platform

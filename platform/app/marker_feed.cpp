@@ -28,36 +28,28 @@ void MarkerFeed::push(const drivers::PoseSample& s) {
   if (s.role != role_ || !s.valid()) return;
   Eigen::Vector3d p = s.position();
   if (patient_seen_) p = patient_.transform().inverse() * p;  // in the patient's frame: turning is not breathing
-  const std::uint64_t w = written_.load(std::memory_order_relaxed);
-  if (w - read_.load(std::memory_order_acquire) == ring_.size()) {
-    dropped_.fetch_add(1, std::memory_order_relaxed);
-    return;
-  }
-  ring_[w % ring_.size()] = {seconds_between(t0_ns_, s.t_arrival_ns), p};
-  written_.store(w + 1, std::memory_order_release);
+  ring_.push({seconds_between(t0_ns_, s.t_arrival_ns), p});
 }
 
-void MarkerFeed::feed(double t_s, sim::BreathFollower& follower) {
+void MarkerFeed::feed(double t_s, Followers& followers) {
   (void)t_s;  // every sample in the ring was taken before now
-  const std::uint64_t w = written_.load(std::memory_order_acquire);
-  for (std::uint64_t r = read_.load(std::memory_order_relaxed); r < w; ++r) {
-    const Sample s = ring_[r % ring_.size()];
-    read_.store(r + 1, std::memory_order_release);
+  sim::BreathFollower& follower = followers.breath;
+  ring_.drain([&](const Sample& s) {
     ++samples_;
     if (axis_found_) {
       follower.add(s.t_s, axis_.dot(s.p_mm - origin_));
-      continue;
+      return;
     }
-    if (window_t_.size() == window_t_.capacity() || (!window_t_.empty() && !(s.t_s > window_t_.back()))) continue;
+    if (window_t_.size() == window_t_.capacity() || (!window_t_.empty() && !(s.t_s > window_t_.back()))) return;
     window_t_.push_back(s.t_s);
     window_p_.push_back(s.p_mm);
-    if (s.t_s - window_t_.front() < kMarkerAxisWindowS) continue;
+    if (s.t_s - window_t_.front() < kMarkerAxisWindowS) return;
     // The window is full: the axis from it, then its samples to the follower as if they had just come.
     axis_ = sim::breathing_axis(window_t_, window_p_, kMarkerAxisWindowS);
     origin_ = window_p_.front();
     axis_found_ = true;
     for (std::size_t i = 0; i < window_t_.size(); ++i) follower.add(window_t_[i], axis_.dot(window_p_[i] - origin_));
-  }
+  });
 }
 
 void MarkerFeed::add_stats(nlohmann::json& stats) const {
@@ -65,7 +57,7 @@ void MarkerFeed::add_stats(nlohmann::json& stats) const {
   stats["breath_marker_samples"] = samples_;
   stats["breath_marker_axis"] =
       axis_found_ ? std::vector<double>{axis_.x(), axis_.y(), axis_.z()} : std::vector<double>{};
-  stats["breath_invalid_samples"] = dropped_.load(std::memory_order_relaxed);
+  stats["breath_invalid_samples"] = ring_.dropped();
 }
 
 }  // namespace lungar::platform

@@ -18,6 +18,7 @@
 #include "platform/app/marker_feed.h"
 #include "platform/app/open_output.h"
 #include "platform/app/pathology_course.h"
+#include "platform/app/physiology_feed.h"
 #include "platform/app/plus_recording.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
@@ -26,6 +27,7 @@
 #include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/runtime.h"
+#include "platform/sync/classroom_station.h"
 #include "sim/asset/asset_io.h"
 #include "sim/pathology/pathology.h"
 
@@ -94,6 +96,31 @@ Result<std::shared_ptr<MarkerFeed>> marker_of(const std::string& breath, std::in
   return std::make_shared<MarkerFeed>(*role, t0);
 }
 
+/// The followed breath's feed: the live marker's (made before the tracker, which calls it), a mannequin's or a
+/// ventilator's over DDS, or a recorded trace's; each says in the log what it follows.
+Result<std::shared_ptr<SurrogateFeed>> open_feed(const std::string& breath, std::shared_ptr<MarkerFeed> marker,
+                                                 const sync::SyncSettings& network, std::int64_t t0) {
+  if (marker) {
+    log_line("breathing: following the " + breath.substr(7) + " marker live (its breathing axis from its first " +
+             std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then");
+    return std::shared_ptr<SurrogateFeed>(std::move(marker));
+  }
+  auto spec = parse_physiology_spec(breath);
+  if (!spec) return Error{spec.error()};
+  if (*spec) {
+    const std::string xml = network.cyclonedds_xml.empty() ? sync::default_cyclonedds_xml() : network.cyclonedds_xml;
+    auto dds = PhysiologyFeed::open(**spec, xml, t0);
+    if (!dds) return Error{dds.error()};
+    log_line("breathing: following " + (*dds)->describe() + ", the model until its first breaths");
+    return std::shared_ptr<SurrogateFeed>(dds.take());
+  }
+  auto trace = sim::read_breath_trace(breath);
+  if (!trace) return Error{trace.error()};
+  log_line("breathing: following " + breath + " (" + std::to_string(trace->samples.size()) + " samples" +
+           (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
+  return std::shared_ptr<SurrogateFeed>(std::make_shared<TraceFeed>(trace.take(), breath));
+}
+
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
 Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, const LoadedLungs& lungs,
@@ -125,19 +152,9 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
           where + "a classroom shares the model's breathing only, not yet a followed trace (a trainee breathes "
           "with its instructor); run the station without --breath (breathing.source = \"model\") or without --sync");
     }
-    std::shared_ptr<SurrogateFeed> feed = *marker;
-    if (*marker) {
-      log_line("breathing: following the " + breath.substr(7) +
-               " marker live (its breathing axis from its first " +
-               std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then");
-    } else {
-      auto trace = sim::read_breath_trace(breath);
-      if (!trace) return trace.with_context(where);
-      log_line("breathing: following " + breath + " (" + std::to_string(trace->samples.size()) + " samples" +
-               (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
-      feed = std::make_shared<TraceFeed>(trace.take(), breath);
-    }
-    parts.breathing = std::make_unique<FollowedBreathing>(feed, shared_script, t0);
+    auto feed = open_feed(breath, *marker, s.sync, t0);
+    if (!feed) return feed.with_context(where);
+    parts.breathing = std::make_unique<FollowedBreathing>(feed.take(), shared_script, t0);
   }
   auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs,
                                      t0, parts, [](const std::string& line) { log_line(line); });

@@ -105,7 +105,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--breath", o.breath_path,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "
                  "Varian RPM .vxp), the model taking over before calibration and when the trace ends; marker:ROLE: "
-                 "with a chest marker tracked live as that role (stylus or head)");
+                 "with a chest marker tracked live as that role (stylus or head); amm[@DOMAIN]: with a mannequin's "
+                 "lung volumes over DDS (AMM); openice[:volume|flow|pressure][@DOMAIN]: with a ventilator's "
+                 "waveform over DDS (OpenICE)");
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker,

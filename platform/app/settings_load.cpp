@@ -9,11 +9,20 @@
 
 #include "config/toml_section.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "platform/app/physiology_spec.h"
 #include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
 
 namespace {
+
+/// `[breathing] source` names a trace file, relative to the config, unless it is the model, a live marker or a
+/// DDS source (even a malformed one, which --breath's check then names).
+bool names_a_file(const std::string& source) {
+  if (source == "model" || source.rfind("marker:", 0) == 0) return false;
+  auto dds = parse_physiology_spec(source);
+  return dds && !*dds;
+}
 
 using config::TomlSection;
 
@@ -102,7 +111,7 @@ Result<Settings> load_settings(const std::string& path) {
       if (!p.empty() && std::filesystem::path(p).is_relative()) p = (dir / p).lexically_normal().string();
     };
     resolve(r->breathing.scenario);
-    if (r->breathing.source != "model" && r->breathing.source.rfind("marker:", 0) != 0) resolve(r->breathing.source);
+    if (names_a_file(r->breathing.source)) resolve(r->breathing.source);
     resolve(r->trackers.replay_file);
     resolve(r->sim.asset);
     resolve(r->sync.cyclonedds_xml);

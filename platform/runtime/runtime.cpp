@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -169,7 +170,9 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
   const double swing_ml = swing_.swing_ml();
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
     const double share = sim::breath_share(asset_, l, state.gravity_lung);
-    lung_frames_[l].volume_change_ml = static_cast<float>(state.breath.dv_ml * share);
+    // A source that measures each lung (a mannequin's physiology engine) gives each its own dV.
+    const double own = state.breath.lung_dv_ml[asset_.lungs[l].centre[0] >= 0 ? 0 : 1];
+    lung_frames_[l].volume_change_ml = static_cast<float>(std::isfinite(own) ? own : state.breath.dv_ml * share);
     lung_frames_[l].sweep_ml = static_cast<float>(swing_ml * share);
   }
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;

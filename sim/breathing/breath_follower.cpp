@@ -146,7 +146,7 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
     state_ = recently && state_ != BreathState::model ? BreathState::holding : BreathState::model;
   } else if (calibrated) {
     state_ = BreathState::following;
-    k = p_.tidal_volume_ml / amplitude();
+    k = p_.in_ml ? 1.0 : p_.tidal_volume_ml / amplitude();
     seen_value = p_.predict ? predicted(t_s + p_.predict_s) : last_value_;
     target = k * (seen_value - baseline(last_t_));
   } else {

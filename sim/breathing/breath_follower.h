@@ -8,7 +8,8 @@
 /// - The end-exhale level (the baseline) follows the troughs, with the drift between the last two carried
 ///   forward, so a marker that slowly sinks (a patient settling) does not read as breathing out.
 /// - Amplitude drives geometry: dV = k (s - baseline), with k = V_T / the median amplitude of the last breaths,
-///   so a deeper breath gives a bigger dV and one irregular breath does not rescale the rest.
+///   so a deeper breath gives a bigger dV and one irregular breath does not rescale the rest; a volume source
+///   (FollowerParams::in_ml) gives litres directly, k = 1.
 /// - States: `model` (not yet calibrated, or handed over), `following`, `holding` (the signal stopped: dV moves
 ///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once two breaths of the
 ///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
@@ -53,6 +54,9 @@ struct FollowerParams {
   double irregular_share = 0.5;    ///< a breath's depth or period this far off the median (as a share): irregular
   double predict_s = 0.0;          ///< beyond at()'s time: the display's delay (frame to photons), s
   bool predict = true;             ///< extrapolate the newest sample to the time it is seen (false: hold it)
+  /// The surrogate is itself a volume in mL (a mannequin's lung volume, a ventilator's): dV is its excursion over
+  /// the end-exhale level as it is, not scaled to tidal_volume_ml.
+  bool in_ml = false;
 };
 
 struct FollowerOutput {

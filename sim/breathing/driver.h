@@ -18,8 +18,10 @@
 /// at() allocates nothing and may be called for any t, in any order.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +44,10 @@ struct BreathingSample {
   double dv_ml = 0;            ///< v_ml - v_frc_ml: what scales the deformation
   BreathPhase phase = BreathPhase::Expiration;
   std::int64_t breath = 0;     ///< index of the breath (counts from 0 at t = 0)
+  /// Each lung's own dV (left, right) when the breath's source measures each lung (a mannequin's physiology
+  /// engine); NaN when it does not, and each lung then takes its posture's share of dv_ml.
+  std::array<double, 2> lung_dv_ml{std::numeric_limits<double>::quiet_NaN(),
+                                   std::numeric_limits<double>::quiet_NaN()};
 };
 
 class BreathingDriver {

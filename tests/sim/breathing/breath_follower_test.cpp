@@ -197,5 +197,34 @@ TEST(BreathTrace, AMarkerIsReadAlongItsBreathingAxisInhaleUp) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(BreathFollower, AVolumeSourceGivesItsOwnMillilitresNotTheTidalVolumesScale) {
+  // A mannequin's lung volume: FRC 2300 mL, breaths of 400 mL at 15 a minute, then two of 700 mL.
+  FollowerParams p;
+  p.tidal_volume_ml = 500.0;
+  p.predict = false;
+  p.in_ml = true;
+  BreathFollower f(p);
+  FollowerParams scaled_params = p;
+  scaled_params.in_ml = false;
+  BreathFollower scaled(scaled_params);
+  double peak = 0, scaled_peak = 0, deep_peak = 0;
+  for (double t = 0; t < 40.0; t += 0.02) {
+    const double depth = t < 32.0 ? 400.0 : 700.0;
+    const double v = 2300.0 + 0.5 * depth * (1.0 - std::cos(2.0 * M_PI * t / 4.0));
+    f.add(t, v);
+    scaled.add(t, v);
+    const FollowerOutput o = f.at(t, 0.0), so = scaled.at(t, 0.0);
+    if (t > 20.0 && t < 32.0) {
+      ASSERT_EQ(o.state, BreathState::following) << t;
+      peak = std::max(peak, o.dv_ml);
+      scaled_peak = std::max(scaled_peak, so.dv_ml);
+    }
+    if (t > 34.0) deep_peak = std::max(deep_peak, o.dv_ml);
+  }
+  EXPECT_NEAR(peak, 400.0, 4.0);         // the volume's own excursion over its end-exhale level
+  EXPECT_NEAR(scaled_peak, 500.0, 5.0);  // a surrogate's is scaled to V_T
+  EXPECT_NEAR(deep_peak, 700.0, 7.0);    // and a deeper breath is deeper at once, no rescaling
+}
+
 }  // namespace
 }  // namespace lungar::sim

@@ -1,0 +1,91 @@
+/// @file physiology_feed.cpp
+/// @brief A mannequin's or a ventilator's breath over DDS to the follower (physiology_feed.h).
+#include "platform/app/physiology_feed.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "config/base/clock.h"
+
+namespace lungar::platform {
+
+using physiology::Channel;
+using physiology::Quantity;
+
+PhysiologyFeed::PhysiologyFeed(const PhysiologySpec& spec, std::int64_t t0_ns)
+    : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::amm ? "amm" : "openice") {}
+
+Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpec& spec,
+                                                             const std::string& cyclonedds_xml, std::int64_t t0_ns) {
+  std::shared_ptr<PhysiologyFeed> f(new PhysiologyFeed(spec, t0_ns));
+  if (spec.source == PhysiologySpec::Source::amm) {
+    auto r = physiology::AmmReader::open(spec.domain, f->inbox_);
+    if (!r) return Error{r.error()};
+    f->amm_ = r.take();
+  } else {
+    auto r = physiology::OpenIceReader::open(spec.domain, cyclonedds_xml, spec.quantity, f->inbox_);
+    if (!r) return Error{r.error()};
+    f->openice_ = r.take();
+  }
+  return f;
+}
+
+std::string PhysiologyFeed::describe() const {
+  const std::string d = " on DDS domain " + std::to_string(spec_.domain);
+  if (spec_.source == PhysiologySpec::Source::amm)
+    return "the mannequin's lung volumes (AMM, topic '" + std::string(physiology::kAmmTopic) + "')" + d;
+  return std::string("the ventilator's ") + physiology::openice_metric(spec_.quantity) + " (OpenICE)" + d;
+}
+
+void PhysiologyFeed::feed(double t_s, Followers& followers) {
+  (void)t_s;  // every sample in the inbox came before now
+  inbox_.drain([&](const physiology::PhysiologyInbox::Item& item) {
+    const double arrival = seconds_between(t0_ns_, item.arrival_ns);
+    const double offset = arrival - item.sample.t_s;
+    if (!offset_s_ || offset < *offset_s_) offset_s_ = offset;
+    give(item.sample, item.sample.t_s + *offset_s_, followers);
+  });
+}
+
+void PhysiologyFeed::give(const physiology::Sample& s, double t_s, Followers& followers) {
+  const auto c = static_cast<std::size_t>(s.channel);
+  t_s = std::max(t_s, last_t_[c]);  // a smaller offset found later must not move a channel back in time
+  last_t_[c] = t_s;
+  ++fed_;
+  if (s.channel != Channel::breath) {
+    const std::size_t l = s.channel == Channel::left_lung ? 0 : 1;
+    followers.lungs[l].add(t_s, s.value);
+    lung_ml_[l] = s.value;
+    lung_source_t_[l] = s.t_s;
+    // No total published: the two lungs' volumes at one simulation time are the breath's.
+    if (!total_seen_ && lung_source_t_[0] == lung_source_t_[1]) followers.breath.add(t_s, lung_ml_[0] + lung_ml_[1]);
+    return;
+  }
+  total_seen_ = true;
+  if (s.quantity != Quantity::flow_ml_per_s) return followers.breath.add(t_s, s.value);
+  // Flow integrated to a volume; its drift is the follower's end-exhale level to remove.
+  if (!std::isnan(flow_t_)) flow_volume_ml_ += s.value * (t_s - flow_t_);
+  flow_t_ = t_s;
+  followers.breath.add(t_s, flow_volume_ml_);
+}
+
+void PhysiologyFeed::add_stats(nlohmann::json& stats) const {
+  stats["breath_source"] = spec_.source == PhysiologySpec::Source::amm
+                               ? std::string("amm")
+                               : std::string("openice:") + physiology::kQuantityNames.name(spec_.quantity);
+  stats["breath_dds_domain"] = spec_.domain;
+  stats["breath_dds_publishers"] = amm_ ? amm_->matched() : openice_->matched();
+  stats["breath_dds_samples"] = fed_;
+  nlohmann::json dropped = nlohmann::json::object();
+  std::uint64_t invalid = inbox_.overflowed();
+  for (const auto& [why, name] : physiology::kDropNames.entries) {
+    dropped[name] = inbox_.dropped(why);
+    invalid += inbox_.dropped(why);
+  }
+  stats["breath_dropped"] = dropped;
+  stats["breath_invalid_samples"] = invalid;
+}
+
+}  // namespace lungar::platform

@@ -1,0 +1,26 @@
+/// @file physiology_spec.h
+/// @brief What `--breath amm[@DOMAIN]` and `--breath openice[:volume|flow|pressure][@DOMAIN]` say
+///        (physiology_feed.h follows them).
+/// @ingroup platform
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "config/base/result.h"
+#include "platform/physiology/physiology_sample.h"
+
+namespace lungar::platform {
+
+struct PhysiologySpec {
+  enum class Source { amm, openice };
+  Source source = Source::amm;
+  physiology::Quantity quantity = physiology::Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
+  std::uint32_t domain = 0;                                          ///< the DDS domain id, [0, 232]
+};
+
+/// The spec `breath` names, nullopt when it names no DDS source (a file, a marker), or what is wrong with it.
+Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& breath);
+
+}  // namespace lungar::platform

@@ -1,0 +1,104 @@
+/// @file physiology_runtime_test.cpp
+/// @brief Whole `lungar` runs breathing with a mannequin or a ventilator over DDS: an eProsima Fast DDS publisher
+///        (lungar-test-fastdds-physiology, another process, AMM's own stack) sends AMM lung volumes, read by
+///        lungar's Fast DDS reader, or OpenICE sample arrays, read by lungar's Cyclone reader: real wire traffic
+///        between two DDS implementations on loopback. The publisher breathes 1200 mL at 20 a minute, the left lung
+///        taking a quarter, and sends bad samples among the good ones; the stats JSON says what reached each lung
+///        and what was dropped.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "../sync/station_process.h"
+#include "../sync/sync_test_support.h"
+
+namespace lungar::testing {
+namespace {
+
+const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
+const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
+const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
+constexpr double kTidalMl = 1200.0, kLeftShare = 0.25;
+
+struct PhysiologyRun {
+  nlohmann::json stats;
+  long bad = -1;  ///< what the publisher says it sent bad
+  std::string log;
+};
+
+/// lungar following `breath_source` for 18 s, the publisher of `kind` started once lungar listens and publishing
+/// for 14 s: lungar follows once it has seen two breaths, and hands back to its model when the publisher stops.
+PhysiologyRun run_with_publisher(const std::string& breath_source, const std::string& kind, const std::string& tag) {
+  setenv("FASTRTPS_DEFAULT_PROFILES_FILE", (std::string(LUNGAR_SOURCE_DIR) + "/config/fastdds/loopback-tests.xml").c_str(), 1);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / test_classroom("physiology-" + tag);
+  std::filesystem::create_directories(dir);
+  const std::string domain = std::to_string(test_domain());
+  StationProcess lungar(kLungar,
+                        {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath",
+                         breath_source + "@" + domain, "--seconds", "18", "--stats-json", (dir / "stats.json").string()},
+                        dir / "lungar");
+  EXPECT_TRUE(lungar.wait_for("breathing: following", 60.0)) << lungar.err();
+  StationProcess publisher(LUNGAR_FASTDDS_PUBLISHER, {kind, domain, "14", "bad"}, dir / "publisher");
+  EXPECT_EQ(publisher.wait(60.0), 0) << publisher.err() << publisher.out();
+  EXPECT_EQ(lungar.wait(90.0), 0) << lungar.err();
+  PhysiologyRun r;
+  std::ifstream in(dir / "stats.json");
+  if (in) r.stats = nlohmann::json::parse(in);
+  std::smatch m;
+  const std::string out = publisher.out();
+  if (std::regex_search(out, m, std::regex(", (\\d+) bad"))) r.bad = std::stol(m[1]);
+  r.log = lungar.err();
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+/// Followed for seconds at the publisher's rate, then (the publisher gone) handed back to the model.
+void expect_followed(const PhysiologyRun& r) {
+  EXPECT_GE(r.stats["breath_following_s"].get<double>(), 4.0) << r.log;
+  EXPECT_NEAR(r.stats["breath_rate_per_min"].get<double>(), 20.0, 1.0);
+  EXPECT_EQ(r.stats["breath_state"], "model");
+}
+
+/// Every reason has its count, and together they are what the publisher sent bad.
+void expect_dropped(const PhysiologyRun& r, const std::vector<std::string>& reasons) {
+  long sum = 0;
+  for (const auto& [why, n] : r.stats["breath_dropped"].items()) sum += n.get<long>();
+  EXPECT_EQ(sum, r.bad) << r.stats["breath_dropped"].dump();
+  for (const std::string& why : reasons) EXPECT_GE(r.stats["breath_dropped"][why].get<long>(), 1) << why;
+  EXPECT_EQ(r.stats["breath_invalid_samples"].get<long>(), r.bad);
+}
+
+TEST(PhysiologyOverDds, AnAmmMannequinOnFastDdsMovesEachLungByItsOwnVolume) {
+  const PhysiologyRun r = run_with_publisher("amm", "amm", "amm");
+  ASSERT_FALSE(r.stats.is_null()) << r.log;
+  EXPECT_EQ(r.stats["breath_source"], "amm");
+  expect_followed(r);
+  EXPECT_GT(r.stats["breath_dds_samples"].get<long>(), 1000);
+  EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl,
+              0.1 * kTidalMl);
+  // Each lung by its own volume: a quarter and three quarters of the breath, where the posture's shares would
+  // give each about half.
+  double left = 0, right = 0;
+  for (const auto& lung : r.stats["per_lung"]) (lung["name"] == "left" ? left : right) = lung["tidal_ml"];
+  EXPECT_NEAR(left, kLeftShare * kTidalMl, 0.1 * kLeftShare * kTidalMl);
+  EXPECT_NEAR(right, (1 - kLeftShare) * kTidalMl, 0.1 * (1 - kLeftShare) * kTidalMl);
+  expect_dropped(r, {"not_finite", "negative_volume", "unit", "time"});
+  EXPECT_NE(r.log.find("breath: amm: dropped a sample (unit)"), std::string::npos) << r.log;
+}
+
+TEST(PhysiologyOverDds, AnOpenIceVentilatorOnFastDdsMovesTheLungsThroughCyclone) {
+  const PhysiologyRun r = run_with_publisher("openice", "openice", "openice");
+  ASSERT_FALSE(r.stats.is_null()) << r.log;
+  EXPECT_EQ(r.stats["breath_source"], "openice:volume");
+  expect_followed(r);
+  EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl,
+              0.1 * kTidalMl);
+  expect_dropped(r, {"not_finite", "negative_volume", "unit", "rate"});
+}
+
+}  // namespace
+}  // namespace lungar::testing

@@ -147,10 +147,10 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   if (breath.empty()) {
     parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
   } else {
-    if (s.sync.role != sync::SyncRole::Off) {
-      return fail(
-          where + "a classroom shares the model's breathing only, not yet a followed trace (a trainee breathes "
-          "with its instructor); run the station without --breath (breathing.source = \"model\") or without --sync");
+    if (s.sync.role == sync::SyncRole::Trainee) {
+      return fail(where +
+                  "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
+                  "--breath, and run the trainee without it (breathing.source = \"model\")");
     }
     auto feed = open_feed(breath, *marker, s.sync, t0);
     if (!feed) return feed.with_context(where);
@@ -160,6 +160,10 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
                                      t0, parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");
   classroom = joined.take();
+  if (sync::Instructor* instructor = classroom ? classroom->instructor() : nullptr; instructor && !breath.empty()) {
+    instructor->share_followed_breath();
+    log_line("classroom: sharing the followed breath: every frame's dV goes to the trainees");
+  }
   return ok();
 }
 

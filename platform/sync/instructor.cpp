@@ -112,8 +112,9 @@ void Instructor::publish_pose(const std::array<double, 3>& position_mm, const st
   link_->waitset().trigger();
 }
 
-void Instructor::frame_breath(std::int64_t frame_mono_ns, double breath_t_s) {
-  breath_box_.publish(BreathMsg{frame_mono_ns, breath_t_s});
+void Instructor::frame_breath(std::int64_t frame_mono_ns, const sim::BreathingSample& breath) {
+  breath_box_.publish(BreathMsg{frame_mono_ns, breath.t_s, breath.dv_ml, breath.lung_dv_ml});
+  if (followed_.load(std::memory_order_relaxed)) link_->waitset().trigger();
 }
 
 void Instructor::run() {
@@ -129,6 +130,7 @@ void Instructor::run() {
     answer_requests();
     push_to_new_readers();
     send_pose();
+    if (followed_.load(std::memory_order_relaxed) && breath_box_.published() != sent_breath_) send_heartbeat();
   }
 }
 
@@ -152,9 +154,14 @@ void Instructor::send_heartbeat() {
   hb.session = link_->session();
   hb.seq = ++heartbeat_seq_;
   if (breath_box_.published() > 0) {
+    sent_breath_ = breath_box_.published();
     const BreathMsg m = breath_box_.read();
     hb.frame_ns = link_->clock().from_monotonic(m.frame_mono_ns);
     hb.breath_t_s = m.breath_t_s;
+    hb.followed = followed_.load(std::memory_order_relaxed);
+    hb.dv_ml = m.dv_ml;
+    hb.left_dv_ml = m.lung_dv_ml[0];
+    hb.right_dv_ml = m.lung_dv_ml[1];
   } else {  // no frame yet: breathing time 0 is the time base itself
     hb.frame_ns = time_base_ns_.load();
     hb.breath_t_s = 0.0;

@@ -22,6 +22,7 @@
 #include "drivers/pose/mailbox.h"
 #include "platform/sync/classroom_link.h"
 #include "platform/sync/sync_types.h"
+#include "sim/breathing/driver.h"
 #include "sim/breathing/event.h"
 #include "sim/breathing/pattern.h"
 #include "sim/pathology/pathology_timeline.h"
@@ -47,8 +48,12 @@ class Instructor {
   /// with the same reading time as the last is not sent again. Allocates nothing.
   void publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
                     std::int64_t measured_mono_ns);
-  /// From the frame: its breathing time at frame_mono_ns, which the heartbeat carries. Allocates nothing.
-  void frame_breath(std::int64_t frame_mono_ns, double breath_t_s);
+  /// The breath is the patient's own, followed (a trace, a chest marker, a mannequin): no trainee can compute it
+  /// from the shared parameters, so each frame's dV goes out in a heartbeat of its own. Call before the frames.
+  void share_followed_breath() { followed_.store(true); }
+  /// From the frame: its breathing time at frame_mono_ns, which the heartbeat carries, and its dV when the breath
+  /// is followed. Allocates nothing.
+  void frame_breath(std::int64_t frame_mono_ns, const sim::BreathingSample& breath);
 
   SyncState state() const { return SyncState::InSync; }
   /// Set when an older instructor turned up while running: the runtime stops with this line.
@@ -65,6 +70,8 @@ class Instructor {
   struct BreathMsg {
     std::int64_t frame_mono_ns;
     double breath_t_s;
+    double dv_ml;
+    std::array<double, 2> lung_dv_ml;
   };
   explicit Instructor(std::unique_ptr<ClassroomLink> link);
   Status open_writers();
@@ -91,6 +98,8 @@ class Instructor {
   drivers::LatestMailbox<BreathMsg> breath_box_;
   std::int64_t last_measured_ = -1;  ///< frame thread only
   std::uint64_t sent_pose_ = 0;      ///< sync thread only: the mailbox count last sent
+  std::uint64_t sent_breath_ = 0;    ///< sync thread only: the breath mailbox count last sent
+  std::atomic<bool> followed_{false};
   std::atomic<std::int64_t> time_base_ns_{0};
   std::atomic<bool> shared_{false};
   std::atomic<std::uint64_t> poses_{0};

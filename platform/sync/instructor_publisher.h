@@ -1,6 +1,6 @@
 /// @file instructor_publisher.h
-/// @brief The instructor's FrameListener: each frame's lung pose (after the registration) and breathing time go
-/// to the classroom. It hands them to the sync thread through mailboxes: no allocation, no waiting.
+/// @brief The instructor's FrameListener: each frame's lung pose (after the registration) and breathing time (and
+/// dV, when the breath is followed) go to the classroom. It hands them to the sync thread through mailboxes: no allocation, no waiting.
 /// @ingroup platform
 #pragma once
 
@@ -20,7 +20,7 @@ class InstructorPublisher final : public FrameListener {
     const Eigen::Quaterniond& q = s.lung_in_world;
     i.publish_pose({s.lung_origin_mm.x(), s.lung_origin_mm.y(), s.lung_origin_mm.z()}, {q.w(), q.x(), q.y(), q.z()},
                    s.patient.t_arrival_ns);
-    i.frame_breath(s.now_ns, s.breath.t_s);
+    i.frame_breath(s.now_ns, s.breath);
   }
 
  private:

@@ -21,6 +21,7 @@ void add_sync_keys(const SyncReport& r, nlohmann::json& j) {
   j["sync_poses"] = r.poses;
   j["sync_patient_orientation_wxyz"] = r.patient_orientation_wxyz;
   j["sync_heartbeats"] = r.heartbeats;
+  j["sync_followed_breath_points"] = r.followed_breath_points;
   j["sync_malformed"] = r.malformed;
   j["sync_secure"] = r.secure;
   j["sync_rejected"] = r.rejected;

@@ -61,6 +61,7 @@ struct SyncReport {
   std::array<double, 4> patient_orientation_wxyz{1, 0, 0, 0};  ///< the last lung orientation sent or received
   std::uint64_t malformed = 0;          ///< samples dropped as malformed or out of range
   std::uint64_t heartbeats = 0;
+  std::uint64_t followed_breath_points = 0;  ///< a trainee: the instructor's followed dV points received
   bool secure = false;                  ///< joined with DDS Security (authenticated, access-controlled, encrypted)
   std::uint64_t rejected = 0;           ///< participants that did not authenticate as stations of the classroom
   std::vector<SyncTransition> transitions;

@@ -50,7 +50,9 @@ drivers::PoseSample Trainee::patient_pose() const {
 }
 
 bool Trainee::breathing(std::int64_t now_ns, sim::BreathingSample& out) const {
-  return breathing_.sample_at(link_->clock().from_monotonic(now_ns), out);
+  if (!breathing_.sample_at(link_->clock().from_monotonic(now_ns), out)) return false;
+  followed_.apply(out);
+  return true;
 }
 
 bool Trainee::breath_time(std::int64_t now_ns, double& t_s) const {
@@ -160,6 +162,10 @@ void Trainee::take_heartbeats(std::int64_t now_mono) {
     provisional_offset(info.source_timestamp, link_->clock().now_ns());
     heartbeats_.fetch_add(1, std::memory_order_relaxed);
     if (hb.session == installed_session_ && state() == SyncState::InSync) compare_breath(hb);
+    if (hb.session == installed_session_ && hb.followed) {
+      followed_.push({hb.breath_t_s, hb.dv_ml, {hb.left_dv_ml, hb.right_dv_ml}});
+      followed_points_.fetch_add(1, std::memory_order_relaxed);
+    }
   });
 }
 
@@ -302,6 +308,7 @@ SyncReport Trainee::report() const {
   r.peers_max = peers_max_.load();
   r.poses = poses_.load();
   r.heartbeats = heartbeats_.load();
+  r.followed_breath_points = followed_points_.load();
   std::lock_guard lock(report_mutex_);
   r.instructor = instructor_;
   r.patient_orientation_wxyz = last_orientation_;

@@ -18,6 +18,7 @@
 #include "platform/runtime/log_histogram.h"
 #include "platform/sync/classroom_link.h"
 #include "platform/sync/clock_offset.h"
+#include "platform/sync/followed_breath_share.h"
 #include "platform/sync/shared_breathing.h"
 #include "platform/sync/sync_types.h"
 #include "platform/sync/wire.h"
@@ -39,7 +40,8 @@ class Trainee {
   /// The lung pose in the world from the instructor (role Patient; arrival = its receipt here, monotonic),
   /// flagged stale while lost; an invalid sample before the first. Lock-free, allocates nothing.
   drivers::PoseSample patient_pose() const;
-  /// The shared breathing at monotonic `now_ns`; false until the instructor's breathing has arrived.
+  /// The shared breathing at monotonic `now_ns` (the instructor's followed dV where it follows the patient's own
+  /// breath); false until the instructor's breathing has arrived. The frame thread.
   bool breathing(std::int64_t now_ns, sim::BreathingSample& out) const;
   /// The instructor's breathing time at monotonic `now_ns`, on which its pathology events are timed; false until
   /// its breathing has arrived.
@@ -100,6 +102,8 @@ class Trainee {
   drivers::LatestMailbox<drivers::PoseSample> pose_box_;
   drivers::LatestMailbox<FrameBreath> frame_box_;
   SharedBreathing breathing_;
+  mutable FollowedBreathShare followed_;  ///< heartbeats in on the sync thread, dV out on the frame's
+  std::atomic<std::uint64_t> followed_points_{0};
   ClockOffsetEstimator estimator_;
   mutable std::mutex lungs_mutex_;  ///< guards lungs_ (the sync thread writes, the lungs' course reads)
   sim::PathologyTimeline lungs_;

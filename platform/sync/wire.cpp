@@ -248,7 +248,16 @@ Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_P
 Status check(const lungar_sync_Heartbeat& s) {
   if (Status f = finite("lungar_heartbeat", "breath_t_s", s.breath_t_s); !f) return f;
   if (s.frame_ns <= 0) return fail("lungar_heartbeat: frame_ns: expected a time after the epoch");
-  return ok();
+  if (!s.followed) return ok();
+  const auto plausible = [](const char* field, double v, bool nan_allowed) -> Status {
+    if ((nan_allowed && std::isnan(v)) || (std::isfinite(v) && std::abs(v) <= kMaxSharedDvMl)) return ok();
+    return fail(std::string("lungar_heartbeat: ") + field + ": expected a volume change within +-" +
+                std::to_string(static_cast<int>(kMaxSharedDvMl)) + " mL" + (nan_allowed ? " or NaN" : "") +
+                ", got " + std::to_string(v));
+  };
+  if (Status v = plausible("dv_ml", s.dv_ml, false); !v) return v;
+  if (Status v = plausible("left_dv_ml", s.left_dv_ml, true); !v) return v;
+  return plausible("right_dv_ml", s.right_dv_ml, true);
 }
 
 Status check(const lungar_sync_Station& s) {

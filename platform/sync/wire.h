@@ -33,6 +33,8 @@ inline constexpr double kQuaternionNormTolerance = 1e-3;
 inline constexpr std::size_t kMaxScenarioEvents = 256;
 /// Pathology events a classroom sample carries at most (the IDL sequence's bound).
 inline constexpr std::size_t kMaxPathologyEvents = 64;
+/// A followed breath's dV an instructor shares is at most this (mL) either way: beyond any lung's vital capacity.
+inline constexpr double kMaxSharedDvMl = 8000.0;
 
 Result<SharedPose> from_wire(const lungar_sync_PatientPose& s);
 void to_wire(const SharedPose& pose, std::uint64_t session, std::uint32_t seq, lungar_sync_PatientPose& out);

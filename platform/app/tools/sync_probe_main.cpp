@@ -52,7 +52,9 @@ int run_instructor(const SyncOptions& o, double seconds) {
     std::array<double, 4> q;
     turn_pose(t, q);
     node.publish_pose({0.0, 700.0, 0.0}, q, now);
-    node.frame_breath(now, t);
+    sim::BreathingSample breath;
+    breath.t_s = t;
+    node.frame_breath(now, breath);
     if (!node.fatal_error().empty()) return 1;
     next += period;
     std::this_thread::sleep_for(std::chrono::nanoseconds(std::max<std::int64_t>(0, next - monotonic_ns())));

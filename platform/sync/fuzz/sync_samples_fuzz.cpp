@@ -96,7 +96,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
     case 4:
       receive<lungar_sync_Heartbeat>(data, size, xcdr, bswap, [](const lungar_sync_Heartbeat& s) {
-        if (ls::check(s)) finite_or_abort(s.breath_t_s);
+        if (!ls::check(s)) return;
+        finite_or_abort(s.breath_t_s);
+        if (s.followed) finite_or_abort(s.dv_ml);
       });
       break;
     default:

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <thread>
@@ -200,6 +201,41 @@ TEST_F(ClassroomRuntime, ATraineeDrawsTheInstructorsArdsAndTensionPneumothoraxIn
   EXPECT_NEAR(t["ventral_share"].get<double>(), in["ventral_share"].get<double>(), 1e-3);
   EXPECT_NE(trainee->err().find("classroom: drawing the instructor's lungs: ards:0.6, then "
                                 "pneumothorax:right:30:tension comes at 1.5 s over 1.0 s"),
+            std::string::npos)
+      << trainee->err();
+}
+
+TEST_F(ClassroomRuntime, ATraineeDrawsTheInstructorsFollowedBreath) {
+  // The instructor follows a recorded trace (a chest marker's excursion, 20 breaths a minute) whose 5th and 6th
+  // breaths are twice as deep: the follower gives them about twice V_T, where no model breathes deeper than V_T.
+  // The trainee, its clock 250 ms off, has only the instructor's heartbeats to draw them from.
+  const std::string trace = (dir / "deep-breaths.csv").string();
+  {
+    std::ofstream csv(trace);
+    csv << "t_s,value\n";
+    for (double t = 0; t < 30.0; t += 0.02) {
+      const double depth = t >= 12.0 && t < 18.0 ? 20.0 : 10.0;
+      csv << t << "," << 0.5 * depth * (1.0 - std::cos(2.0 * M_PI * t / 3.0)) << "\n";
+    }
+  }
+  auto instructor = start("instructor", "instructor", 20.0, {"--breath", trace});
+  ASSERT_TRUE(instructor->wait_for("running", 30)) << instructor->err();
+  auto trainee = start("trainee", "trainee", 18.0, {"--sync-clock-skew-ms", "250"});
+  ASSERT_EQ(trainee->wait(90), 0) << trainee->err();
+  ASSERT_EQ(instructor->wait(90), 0) << instructor->err();
+  const auto in = json_of("instructor"), t = json_of("trainee");
+  EXPECT_NE(instructor->err().find("classroom: sharing the followed breath"), std::string::npos);
+  const double deepest = in["volume_ml_max"].get<double>();
+  EXPECT_GT(deepest, 1.6 * 500.0) << "the deep breaths, followed";
+  EXPECT_NEAR(t["volume_ml_max"].get<double>(), deepest, 0.05 * deepest) << t.dump();
+  EXPECT_GT(t["sync_followed_breath_points"].get<long>(), 300);
+  EXPECT_EQ(t["sync_malformed"].get<long>(), 0);
+}
+
+TEST_F(ClassroomRuntime, ATraineeGivenItsOwnBreathIsRefusedInOneLine) {
+  auto trainee = start("trainee", "trainee", 1.0, {"--breath", "marker:stylus"});
+  EXPECT_NE(trainee->wait(60), 0);
+  EXPECT_NE(trainee->err().find("a trainee breathes with its instructor, whatever the instructor follows"),
             std::string::npos)
       << trainee->err();
 }

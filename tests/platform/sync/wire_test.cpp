@@ -193,8 +193,30 @@ TEST(SyncWire, MalformedScenarioEventsAreRefused) {
   EXPECT_FALSE(to_wire(too_many, storage, w));
 }
 
+TEST(SyncWire, AFollowedBreathsDvIsCheckedOnlyWhenTheHeartbeatCarriesOne) {
+  lungar_sync_Heartbeat hb{};
+  hb.session = 1;
+  hb.frame_ns = 1'700'000'000'000'000'000;
+  hb.breath_t_s = 3.5;
+  hb.dv_ml = std::nan("");  // not followed: the model's breath, its dV not carried
+  EXPECT_TRUE(check(hb));
+  hb.followed = true;
+  EXPECT_NE(check(hb).error().find("dv_ml"), std::string::npos);
+  hb.dv_ml = 420.0;
+  hb.left_dv_ml = std::nan("");  // a lung without its own volume takes its share
+  hb.right_dv_ml = 230.0;
+  EXPECT_TRUE(check(hb));
+  hb.right_dv_ml = 2e4;
+  const Status s = check(hb);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().find("right_dv_ml: expected a volume change within +-8000 mL or NaN"), std::string::npos)
+      << s.error();
+  hb.right_dv_ml = INFINITY;
+  EXPECT_FALSE(check(hb));
+}
+
 TEST(SyncWire, HeartbeatsAndStationsAreChecked) {
-  lungar_sync_Heartbeat hb{1, 1, 1'700'000'000'000'000'000, 3.5};
+  lungar_sync_Heartbeat hb{1, 1, 1'700'000'000'000'000'000, 3.5, false, 0.0, 0.0, 0.0};
   EXPECT_TRUE(check(hb));
   hb.breath_t_s = kNaN;
   EXPECT_FALSE(check(hb));

@@ -34,6 +34,11 @@ struct PhysiologyRun {
 /// for 14 s: lungar follows once it has seen two breaths, and hands back to its model when the publisher stops.
 PhysiologyRun run_with_publisher(const std::string& breath_source, const std::string& kind, const std::string& tag) {
   setenv("FASTRTPS_DEFAULT_PROFILES_FILE", (std::string(LUNGAR_SOURCE_DIR) + "/config/fastdds/loopback-tests.xml").c_str(), 1);
+  // Under AddressSanitizer: Debian's libfastrtps 2.9 deletes its own statistics writer through a base of another
+  // size when a participant goes (new-delete-type-mismatch inside the library, at every process's exit): not
+  // lungar's, and nothing the test can mend, so the child processes are told to let that one check pass.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":new_delete_type_mismatch=0").c_str(), 1);
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / test_classroom("physiology-" + tag);
   std::filesystem::create_directories(dir);
   const std::string domain = std::to_string(test_domain());

@@ -3,17 +3,24 @@
 ///        the time series (t, P, V, dV, phase, orientation), or the three pressure-volume curves, or the presets;
 ///        or, as one JSON object, the exhale path of steady breathing against 4-D CT.
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include "platform/app/settings_load.h"
+#include "config/base/clock.h"
 #include "lungar/version.h"
+#include "platform/app/physiology_feed.h"
 #include "platform/app/scenario_adapter.h"
+#include "platform/app/settings_load.h"
+#include "platform/sync/classroom_station.h"
 #include "sim/breathing/breath_follower.h"
 #include "sim/breathing/breath_trace.h"
 #include "sim/breathing/exhale_path.h"
@@ -73,7 +80,15 @@ void print_series(const sim::BreathingScript& script, double seconds, double dt)
   }
 }
 
-/// --breath: the follower driven by a recorded surrogate, sampled every dt, with the model's dV for its handovers.
+/// The follower's CSV: its header, and one row at `t`.
+void print_follow_header() { std::printf("t_s,dv_ml,breath_state,surrogate,model_dv_ml,apnoea,irregular\n"); }
+void print_follow_row(double t, const sim::FollowerOutput& o, double model) {
+  std::printf("%.4f,%.3f,%s,%.6g,%.3f,%d,%d\n", t, o.dv_ml, sim::kBreathStateNames.name(o.state), o.surrogate, model,
+              o.apnoea ? 1 : 0, o.irregular ? 1 : 0);
+}
+
+/// --breath FILE: the follower driven by a recorded surrogate, sampled every dt, with the model's dV for its
+/// handovers.
 int print_followed(const sim::BreathingScript& script, const std::string& trace_path, double tidal_ml,
                    std::optional<double> seconds, double dt) {
   auto trace = sim::read_breath_trace(trace_path);
@@ -82,7 +97,7 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
   fp.tidal_volume_ml = tidal_ml;
   sim::BreathFollower follower(fp);
   const double end = seconds.value_or(trace->samples.back().t_s);
-  std::printf("t_s,dv_ml,breath_state,surrogate,model_dv_ml,apnoea,irregular\n");
+  print_follow_header();
   std::size_t next = 0;
   const auto n = static_cast<long>(std::floor(end / dt + 1e-9));
   for (long k = 0; k <= n; ++k) {
@@ -90,9 +105,7 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
     for (; next < trace->samples.size() && trace->samples[next].t_s <= t; ++next)
       follower.add(trace->samples[next].t_s, trace->samples[next].value);
     const double model = script.driver.at(t).dv_ml;
-    const sim::FollowerOutput o = follower.at(t, model);
-    std::printf("%.4f,%.3f,%s,%.6g,%.3f,%d,%d\n", t, o.dv_ml, sim::kBreathStateNames.name(o.state), o.surrogate, model,
-                o.apnoea ? 1 : 0, o.irregular ? 1 : 0);
+    print_follow_row(t, follower.at(t, model), model);
   }
   // The summary on stderr, so that stdout stays one CSV.
   std::fprintf(stderr,
@@ -100,6 +113,36 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
                "peaks), %.1f/min at the end, %d irregular, %d apnoeas\n",
                trace->format.c_str(), trace_path.c_str(), trace->samples.size(), trace->invalid, follower.breaths(),
                trace->peaks_marked, follower.rate_per_min(), follower.irregular_breaths(), follower.apnoeas());
+  return 0;
+}
+
+/// --breath amm|openice: the follower driven live by a mannequin or a ventilator over DDS for `seconds`, a row
+/// every dt as it happens (time zero: the start), then what came and what was dropped on stderr.
+int print_followed_live(const sim::BreathingScript& script, const platform::PhysiologySpec& spec,
+                        const std::string& cyclonedds_xml, double tidal_ml, double seconds, double dt) {
+  const std::int64_t t0 = monotonic_ns();
+  auto feed = platform::PhysiologyFeed::open(spec, cyclonedds_xml, t0);
+  if (!feed) return fail_with(feed.error());
+  sim::FollowerParams fp;
+  fp.tidal_volume_ml = tidal_ml;
+  fp.in_ml = (*feed)->in_ml();
+  platform::Followers followers{sim::BreathFollower(fp), {sim::BreathFollower(fp), sim::BreathFollower(fp)}};
+  std::fprintf(stderr, "lungar-breathe: following %s for %.1f s\n", (*feed)->describe().c_str(), seconds);
+  print_follow_header();
+  const auto n = static_cast<long>(std::floor(seconds / dt + 1e-9));
+  for (long k = 0; k <= n; ++k) {
+    const double t = static_cast<double>(k) * dt;
+    std::this_thread::sleep_until(std::chrono::steady_clock::time_point(
+        std::chrono::nanoseconds(t0 + static_cast<std::int64_t>(t * 1e9))));
+    (*feed)->feed(t, followers);
+    const double model = script.driver.at(t).dv_ml;
+    print_follow_row(t, followers.breath.at(t, model), model);
+    std::fflush(stdout);
+  }
+  nlohmann::json stats;
+  (*feed)->add_stats(stats);
+  std::fprintf(stderr, "lungar-breathe: %s; %d breaths found, %.1f/min at the end\n", stats.dump().c_str(),
+               followers.breath.breaths(), followers.breath.rate_per_min());
   return 0;
 }
 
@@ -168,7 +211,9 @@ int main(int argc, char** argv) {
   app.add_option("--breath", breath,
                  "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker; "
                  "a Varian RPM .vxp) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
-                 "model_dv_ml, apnoea, irregular (0 | 1)");
+                 "model_dv_ml, apnoea, irregular (0 | 1); or amm[@DOMAIN], openice[:volume|flow|pressure][@DOMAIN]: "
+                 "follow a mannequin or a ventilator over DDS live for --seconds (default 60; Cyclone's XML from "
+                 "--config's [sync] cyclonedds_xml)");
   app.add_flag("--curves", curves, "print the three pressure-volume curves, V(P) from -5 to 40 cmH2O");
   app.add_flag("--presets", presets, "print each preset's parameters, FRC, TLC, compliance and pressure swing");
   app.add_flag("--exhale-path", exhale_path,
@@ -208,7 +253,14 @@ int main(int argc, char** argv) {
   auto script = platform::load_breathing_script(b, seconds.value_or(60.0));
   if (!script) return fail_with(script.error());
   if (exhale_path) return print_exhale_path(script->start);
-  if (!breath.empty()) return print_followed(*script, breath, b.tidal_volume_ml, seconds, dt);
+  if (!breath.empty()) {
+    auto live = platform::parse_physiology_spec(breath);
+    if (!live) return fail_with("--breath: " + live.error());
+    if (!*live) return print_followed(*script, breath, b.tidal_volume_ml, seconds, dt);
+    const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
+                                                                  : settings.sync.cyclonedds_xml;
+    return print_followed_live(*script, **live, xml, b.tidal_volume_ml, seconds.value_or(60.0), dt);
+  }
   print_series(*script, seconds.value_or(script->duration_s), dt);
   return 0;
 }

@@ -39,6 +39,11 @@ struct Commands {
   CLI::App* revoke_app = nullptr;
 };
 
+/// An option of three comma-separated millimetres (a point or an offset), each within a metre.
+void add_point_mm(CLI::App& command, const std::string& name, std::vector<double>& into, const std::string& help) {
+  command.add_option(name, into, help)->delimiter(',')->expected(3)->check(CLI::Range(-1000.0, 1000.0));
+}
+
 /// `lungar calibrate` and `lungar calibrate pivot`.
 void add_calibrate(CLI::App& app, Commands& m) {
   lungar::platform::CalibrateOptions& c = m.calibrate;
@@ -50,12 +55,8 @@ void add_calibrate(CLI::App& app, Commands& m) {
                         "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
   calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
   calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML); required");
-  calibrate
-      ->add_option("--stylus-tip-mm", m.stylus_tip,
-                   "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)")
-      ->delimiter(',')
-      ->expected(3)
-      ->check(CLI::Range(-1000.0, 1000.0));
+  add_point_mm(*calibrate, "--stylus-tip-mm", m.stylus_tip,
+               "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)");
   CLI::App* pivot = m.pivot_app = calibrate->add_subcommand(
       "pivot", "find the stylus tip from a log of the stylus pivoting about it in a dimple (least squares)");
   pivot->add_option("--stylus-log", m.pivot.stylus_log, "tracker log (.trk) of the stylus pivoting")->required();
@@ -78,20 +79,12 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
                       "NAME-alignments.csv)");
   display->add_option("--config", m.display.config_path,
                       "interactive: settings TOML with the tracker, the display and the HMD (default: as lungar's)");
-  display
-      ->add_option("--stylus-tip-mm", m.display_tip,
-                   "interactive: x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] "
-                   "tip_offset_mm)")
-      ->delimiter(',')
-      ->expected(3)
-      ->check(CLI::Range(-1000.0, 1000.0));
-  display
-      ->add_option("--fiducial-mm", m.display_fiducial,
-                   "interactive: x,y,z: line up with this point on the patient tracker (its sensor's frame, mm) "
-                   "instead of the stylus tip")
-      ->delimiter(',')
-      ->expected(3)
-      ->check(CLI::Range(-1000.0, 1000.0));
+  add_point_mm(*display, "--stylus-tip-mm", m.display_tip,
+               "interactive: x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] "
+               "tip_offset_mm)");
+  add_point_mm(*display, "--fiducial-mm", m.display_fiducial,
+               "interactive: x,y,z: line up with this point on the patient tracker (its sensor's frame, mm) instead "
+               "of the stylus tip");
   display->add_option("--grid", m.display.grid, "interactive: N x N crosshair positions an eye (3-10)")
       ->capture_default_str();
 

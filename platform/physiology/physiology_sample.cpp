@@ -8,6 +8,11 @@ namespace lungar::platform::physiology {
 
 namespace {
 
+/// Each quantity's metric, as OpenICE names it (IEEE 11073 MDC).
+constexpr EnumNames<Quantity, 3> kOpenIceMetrics{{{{Quantity::volume_ml, "MDC_VOL_AWAY_TIDAL"},
+                                                  {Quantity::flow_ml_per_s, "MDC_FLOW_AWAY"},
+                                                  {Quantity::pressure_cmh2o, "MDC_PRESS_AWAY"}}}};
+
 /// The factor to lungar's unit of `q` for a unit as OpenICE names it (IEEE 11073 MDC), or nullopt.
 std::optional<double> openice_unit_factor(Quantity q, std::string_view unit) {
   switch (q) {
@@ -59,14 +64,7 @@ std::optional<Sample> AmmChecks::check(std::string_view name, std::string_view u
   return Sample{t, ml, *channel, Quantity::volume_ml};
 }
 
-const char* openice_metric(Quantity q) {
-  switch (q) {
-    case Quantity::volume_ml: return "MDC_VOL_AWAY_TIDAL";
-    case Quantity::flow_ml_per_s: return "MDC_FLOW_AWAY";
-    case Quantity::pressure_cmh2o: return "MDC_PRESS_AWAY";
-  }
-  return "?";
-}
+const char* openice_metric(Quantity q) { return kOpenIceMetrics.name(q); }
 
 void OpenIceChecks::check(const OpenIceArray& a, const std::function<void(const Sample&)>& keep,
                           const std::function<void(Drop)>& dropped) {

@@ -42,7 +42,7 @@ void use_loopback_fast_dds() {
     setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":new_delete_type_mismatch=0").c_str(), 1);
 }
 
-/// lungar following `breath_source` for 18 s, the publisher of `kind` started once lungar listens and publishing
+/// lungar following `breath_source` for 20 s, the publisher of `kind` started once lungar listens and publishing
 /// for 14 s: lungar follows once it has seen two breaths, and hands back to its model when the publisher stops.
 PhysiologyRun run_with_publisher(const std::string& breath_source, const std::string& kind, const std::string& tag) {
   use_loopback_fast_dds();
@@ -51,7 +51,7 @@ PhysiologyRun run_with_publisher(const std::string& breath_source, const std::st
   const std::string domain = std::to_string(test_domain());
   StationProcess lungar(kLungar,
                         {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath",
-                         breath_source + "@" + domain, "--seconds", "18", "--stats-json", (dir / "stats.json").string()},
+                         breath_source + "@" + domain, "--seconds", "20", "--stats-json", (dir / "stats.json").string()},
                         dir / "lungar");
   EXPECT_TRUE(lungar.wait_for("breathing: following", 60.0)) << lungar.err();
   StationProcess publisher(LUNGAR_FASTDDS_PUBLISHER, {kind, domain, "14", "bad"}, dir / "publisher");

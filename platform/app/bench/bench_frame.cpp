@@ -3,6 +3,7 @@
 #include "platform/app/bench/bench_frame.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "platform/app/bench/scripted_inputs.h"
@@ -17,39 +18,33 @@
 
 namespace lungar::platform::bench {
 
-const char* to_string(Method m) {
-  switch (m) {
-    case Method::Gpu7:
-      return "gpu_eq7";
-    case Method::Cpu7:
-      return "cpu_eq7";
-    case Method::Cpu1:
-      return "cpu_eq1";
-    case Method::Rest:
-      return "undeformed";
-  }
-  return "?";
+namespace {
+
+/// Each method's name in the bench's JSON, and the runtime's deformation that times it.
+struct MethodInfo {
+  Method method;
+  const char* name;
+  Deform deform;
+};
+constexpr std::array<MethodInfo, 4> kMethods{{{Method::Gpu7, "gpu_eq7", Deform::Gpu},
+                                              {Method::Cpu7, "cpu_eq7", Deform::Cpu7},
+                                              {Method::Cpu1, "cpu_eq1", Deform::Cpu1},
+                                              {Method::Rest, "undeformed", Deform::None}}};
+
+const MethodInfo& info(Method m) {
+  return *std::find_if(kMethods.begin(), kMethods.end(), [m](const MethodInfo& i) { return i.method == m; });
 }
+
+}  // namespace
+
+const char* to_string(Method m) { return info(m).name; }
 
 Settings bench_settings(const FrameConfig& c) {
   Settings s;
   s.display.output = Output::Headless;
   s.hmd.view = c.stereo ? View::Stereo : View::Mono;
   s.hmd.head_to_eye_mm = {0.0, 0.0, 0.0};
-  switch (c.method) {
-    case Method::Gpu7:
-      s.render.deform = Deform::Gpu;
-      break;
-    case Method::Cpu7:
-      s.render.deform = Deform::Cpu7;
-      break;
-    case Method::Cpu1:
-      s.render.deform = Deform::Cpu1;
-      break;
-    case Method::Rest:
-      s.render.deform = Deform::None;
-      break;
-  }
+  s.render.deform = info(c.method).deform;
   s.render.mode = c.mode;
   s.render.stereo_strategy = c.strategy;
   s.render.lod = c.lod;

@@ -146,6 +146,18 @@ int print_followed_live(const sim::BreathingScript& script, const platform::Phys
   return 0;
 }
 
+/// --breath: a recorded trace, or a live source over DDS (amm, openice).
+int follow(const sim::BreathingScript& script, const std::string& breath, const platform::Settings& settings,
+           std::optional<double> seconds, double dt) {
+  auto live = platform::parse_physiology_spec(breath);
+  if (!live) return fail_with("--breath: " + live.error());
+  const double tidal_ml = settings.breathing.tidal_volume_ml;
+  if (!*live) return print_followed(script, breath, tidal_ml, seconds, dt);
+  const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
+                                                                : settings.sync.cyclonedds_xml;
+  return print_followed_live(script, **live, xml, tidal_ml, seconds.value_or(60.0), dt);
+}
+
 /// One JSON object on stdout: the parameters, the exhale path measured on the driver and 4-D CT's, the measured
 /// tidal volume, and the equation of motion's R, C, tau and muscle-pressure peak.
 int print_exhale_path(const sim::BreathingParams& params) {
@@ -253,14 +265,7 @@ int main(int argc, char** argv) {
   auto script = platform::load_breathing_script(b, seconds.value_or(60.0));
   if (!script) return fail_with(script.error());
   if (exhale_path) return print_exhale_path(script->start);
-  if (!breath.empty()) {
-    auto live = platform::parse_physiology_spec(breath);
-    if (!live) return fail_with("--breath: " + live.error());
-    if (!*live) return print_followed(*script, breath, b.tidal_volume_ml, seconds, dt);
-    const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
-                                                                  : settings.sync.cyclonedds_xml;
-    return print_followed_live(*script, **live, xml, b.tidal_volume_ml, seconds.value_or(60.0), dt);
-  }
+  if (!breath.empty()) return follow(*script, breath, settings, seconds, dt);
   print_series(*script, seconds.value_or(script->duration_s), dt);
   return 0;
 }

@@ -28,9 +28,7 @@ class PhysiologyInbox {
   explicit PhysiologyInbox(std::string source) : source_(std::move(source)) {}
 
   /// The reader's thread.
-  void push(const Sample& s, std::int64_t arrival_ns) {
-    if (ring_.push({s, arrival_ns})) taken_.fetch_add(1, std::memory_order_relaxed);
-  }
+  void push(const Sample& s, std::int64_t arrival_ns) { ring_.push({s, arrival_ns}); }
   void drop(Drop why) {
     if (drops_[static_cast<std::size_t>(why)].fetch_add(1, std::memory_order_relaxed) == 0) {
       ::lungar::log_line("lungar", "breath: " + source_ + ": dropped a sample (" + kDropNames.name(why) +
@@ -43,7 +41,6 @@ class PhysiologyInbox {
     ring_.drain(on);
   }
   /// Any thread.
-  std::uint64_t taken() const { return taken_.load(std::memory_order_relaxed); }
   std::uint64_t dropped(Drop why) const { return drops_[static_cast<std::size_t>(why)].load(std::memory_order_relaxed); }
   /// Samples lost because the frame thread did not take them in time (a full ring), not because they were bad.
   std::uint64_t overflowed() const { return ring_.dropped(); }
@@ -52,7 +49,6 @@ class PhysiologyInbox {
   std::string source_;
   SpscRing<Item, 4096> ring_;
   std::array<std::atomic<std::uint64_t>, kDropReasons> drops_{};
-  std::atomic<std::uint64_t> taken_{0};
 };
 
 }  // namespace lungar::platform::physiology

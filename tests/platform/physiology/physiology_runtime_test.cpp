@@ -51,7 +51,8 @@ PhysiologyRun run_with_publisher(const std::string& breath_source, const std::st
   const std::string domain = std::to_string(test_domain());
   StationProcess lungar(kLungar,
                         {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath",
-                         breath_source + "@" + domain, "--seconds", "20", "--stats-json", (dir / "stats.json").string()},
+                         breath_source + "@" + domain, "--seconds", "20", "--stats-json", (dir / "stats.json").string(),
+                         "--snapshot", (dir / "snapshot.png").string()},
                         dir / "lungar");
   EXPECT_TRUE(lungar.wait_for("breathing: following", 60.0)) << lungar.err();
   StationProcess publisher(LUNGAR_FASTDDS_PUBLISHER, {kind, domain, "14", "bad"}, dir / "publisher");

@@ -1,10 +1,15 @@
 /// @file atomic_file.h
 /// @brief The one way lungar writes an output file (asset, report, stats, PNG, registration, .trk cut): whole or
-/// not at all. Everything goes to "<path>.partial" beside it, is flushed to disk, and is renamed into place on
-/// commit(); a failure or a destructor before commit() removes the partial file, so nothing half-written is ever
-/// left under the final name or beside it.
+/// not at all. Everything goes to a partial file beside it, "<path>.partial-XXXXXX", is flushed to disk, and is
+/// renamed into place on commit(); a failure or a destructor before commit() removes the partial file, so nothing
+/// half-written is ever left under the final name or beside it. Each writer's partial file has a name of its own:
+/// two processes writing the same path (two stations on one PC, each saving its stats) never write into one
+/// another's, and the last to commit wins whole.
 /// @ingroup base
 #pragma once
+
+#include <fcntl.h>
+#include <sys/stat.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -18,6 +23,21 @@
 
 namespace lungar {
 
+/// Creates a new, empty file beside `path` for writing, named "<path>.partial-XXXXXX" with X's no other file there
+/// has, readable by all (0644); its name goes to `partial`. The descriptor (close-on-exec), or -1 with errno set.
+inline int create_partial_file(const std::string& path, std::string& partial) {
+  partial = path + ".partial-XXXXXX";
+  const int fd = ::mkostemp(partial.data(), O_CLOEXEC);
+  if (fd >= 0 && ::fchmod(fd, 0644) != 0) {
+    const int saved_errno = errno;
+    ::close(fd);
+    ::unlink(partial.c_str());
+    errno = saved_errno;
+    return -1;
+  }
+  return fd;
+}
+
 class AtomicFile {
  public:
   AtomicFile() = default;
@@ -25,19 +45,25 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  /// Creates the parent folder if needed and opens "<path>.partial" for writing.
+  /// Creates the parent folder if needed and a partial file beside `path` to write into.
   Status open(const std::string& path) {
     abandon();
     path_ = path;
-    partial_ = path + ".partial";
     const std::filesystem::path p(path);
     std::error_code ec;
     if (p.has_parent_path() && !std::filesystem::exists(p.parent_path(), ec)) {
       std::filesystem::create_directories(p.parent_path(), ec);
       if (ec) return fail(path + ": cannot create its folder: " + ec.message());
     }
-    file_ = std::fopen(partial_.c_str(), "wb");
-    if (file_ == nullptr) return fail(path + ": cannot open for writing: " + std::strerror(errno));
+    const int fd = create_partial_file(path, partial_);
+    if (fd < 0) return fail(path + ": cannot open for writing: " + std::strerror(errno));
+    file_ = ::fdopen(fd, "wb");
+    if (file_ == nullptr) {
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      std::remove(partial_.c_str());
+      return fail(path + ": cannot open for writing: " + why);
+    }
     return ok();
   }
   /// The open stream, for writers that take a FILE* (libpng).

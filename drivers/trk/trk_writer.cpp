@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "config/base/atomic_file.h"
 #include "config/base/crc32.h"
 
 namespace lungar::drivers {
@@ -66,12 +67,11 @@ Status TrkWriter::fail(const std::string& what) const {
 Status TrkWriter::open(const std::string& path, const TrkHeader& header, Mode mode) {
   path_ = path;
   mode_ = mode;
-  temp_path_ = path + ".partial";
   errno = 0;
   if (header.description.size() > kTrkMaxText || header.layout_toml.size() > kTrkMaxText) {
     return fail("cannot write the tracker log: header texts longer than 1 MiB");
   }
-  const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int fd = create_partial_file(path, temp_path_);
   if (fd < 0) return fail("cannot create the tracker log");
   const std::string bytes = encode_trk_header(header);
   if (!write_all(fd, bytes.data(), bytes.size())) {

@@ -18,7 +18,8 @@ class TrkWriter {
     /// The header lands under the final name at once (written beside it, then renamed); every record is one
     /// write() appended to it, so whatever is on disk after a crash reads back, short the last record.
     AppendLog,
-    /// Everything goes to "<path>.partial" and becomes `path` only on commit(): no half file under the final name.
+    /// Everything goes to a partial file beside it (config/base/atomic_file.h) and becomes `path` only on
+    /// commit(): no half file under the final name.
     Atomic,
   };
 

@@ -11,6 +11,7 @@
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
+#include "tests/partial_files.h"
 
 using namespace lungar;
 using namespace lungar::drivers;
@@ -119,12 +120,13 @@ TEST(Trk, AtomicWriterLeavesNothingUnderTheFinalNameUntilCommit) {
     const std::uint8_t r[4] = {1, 2, 3, 4};
     ASSERT_TRUE(w.append(TrkSource::Synth, 5, r));
     EXPECT_FALSE(fs::exists(path));
+    EXPECT_EQ(lungar::testing::partial_files_beside(path).size(), 1u) << "the records go to a partial file";
   }  // destroyed without commit
   EXPECT_FALSE(fs::exists(path));
-  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+  EXPECT_EQ(lungar::testing::partial_files_beside(path), std::vector<std::string>{});
   write_three(path, TrkWriter::Mode::Atomic);
   EXPECT_TRUE(fs::exists(path));
-  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
+  EXPECT_EQ(lungar::testing::partial_files_beside(path), std::vector<std::string>{});
 }
 
 TEST(Trk, AppendLogHasAReadableHeaderFromTheStart) {

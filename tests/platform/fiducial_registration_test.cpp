@@ -10,6 +10,7 @@
 #include "platform/app/settings_load.h"
 #include "platform/registration/fiducial_registration.h"
 #include "platform/registration/landmark_matching.h"
+#include "tests/partial_files.h"
 
 using lungar::platform::Registration;
 
@@ -119,7 +120,7 @@ TEST(FiducialRegistration, WrittenSectionLoadsAsTheSameRegistration) {
   const auto path = (std::filesystem::temp_directory_path() / "lungar_registration_test.toml").string();
   const lungar::Status written = lungar::platform::write_registration_toml(path, r);
   ASSERT_TRUE(written) << written.error();
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_EQ(lungar::testing::partial_files_beside(path), std::vector<std::string>{});
   const auto loaded = lungar::platform::load_settings(path);
   ASSERT_TRUE(loaded) << loaded.error();
   const auto& q = loaded->registration.rotation_wxyz;

@@ -9,6 +9,7 @@
 #include "render/png_snapshot.h"
 #include "tests/render/gl_fixture.h"
 #include "tests/render/synthetic_lungs.h"
+#include "tests/partial_files.h"
 
 namespace lungar::render {
 namespace {
@@ -21,7 +22,7 @@ TEST(PngTest, WrongPixelCountIsRefusedAndNothingWritten) {
   EXPECT_FALSE(s);
   EXPECT_NE(s.error().find(path), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_EQ(lungar::testing::partial_files_beside(path), std::vector<std::string>{});
 }
 
 TEST(PngTest, UnwritableDirectoryIsAnError) {

@@ -12,6 +12,7 @@
 #include "sim/bake_tool/export_command.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim_test_support.h"
+#include "tests/partial_files.h"
 
 namespace lungar::sim {
 namespace {
@@ -171,7 +172,7 @@ TEST_F(Export, RefusalsNameTheFieldAndLeaveNoFile) {
   std::ofstream(dir_.file("no"), std::ios::binary) << "a file where a folder should be";
   EXPECT_FALSE(run_export_command(c));
   EXPECT_FALSE(std::filesystem::exists(dir_.file("x.ply")));
-  EXPECT_FALSE(std::filesystem::exists(dir_.file("x.ply.partial")));
+  EXPECT_EQ(lungar::testing::partial_files_beside(dir_.file("x.ply")), std::vector<std::string>{});
 }
 
 }  // namespace

@@ -30,20 +30,6 @@ int wait_for(int fd, short events, int timeout_ms) {
 
 }  // namespace
 
-TcpSocket& TcpSocket::operator=(TcpSocket&& o) noexcept {
-  if (this != &o) {
-    close();
-    fd_ = o.fd_;
-    o.fd_ = -1;
-  }
-  return *this;
-}
-
-void TcpSocket::close() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
-}
-
 Result<TcpSocket> TcpSocket::connect(const std::string& host, int port, int timeout_ms) {
   const std::string where = host + ":" + std::to_string(port);
   addrinfo hints{};
@@ -61,14 +47,14 @@ Result<TcpSocket> TcpSocket::connect(const std::string& host, int port, int time
       why = std::strerror(errno);
       continue;
     }
-    int rc = ::connect(s.fd_, a->ai_addr, a->ai_addrlen);
+    int rc = ::connect(s.fd_.get(), a->ai_addr, a->ai_addrlen);
     if (rc < 0 && errno == EINPROGRESS) {
-      const int ready = wait_for(s.fd_, POLLOUT, timeout_ms);
+      const int ready = wait_for(s.fd_.get(), POLLOUT, timeout_ms);
       int err = 0;
       socklen_t len = sizeof err;
       if (ready == 0) {
         err = ETIMEDOUT;
-      } else if (ready < 0 || ::getsockopt(s.fd_, SOL_SOCKET, SO_ERROR, &err, &len) < 0) {
+      } else if (ready < 0 || ::getsockopt(s.fd_.get(), SOL_SOCKET, SO_ERROR, &err, &len) < 0) {
         err = errno;
       }
       rc = err == 0 ? 0 : -1;
@@ -79,7 +65,7 @@ Result<TcpSocket> TcpSocket::connect(const std::string& host, int port, int time
       continue;
     }
     const int one = 1;  // poses are small and late ones are useless: no Nagle delay
-    ::setsockopt(s.fd_, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    ::setsockopt(s.fd_.get(), IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
     sock = std::move(s);
   }
   ::freeaddrinfo(found);
@@ -88,13 +74,13 @@ Result<TcpSocket> TcpSocket::connect(const std::string& host, int port, int time
 }
 
 long TcpSocket::read_some(std::uint8_t* out, std::size_t n, int timeout_ms) {
-  if (fd_ < 0) return -1;
-  const int ready = wait_for(fd_, POLLIN, timeout_ms);
+  if (!fd_) return -1;
+  const int ready = wait_for(fd_.get(), POLLIN, timeout_ms);
   if (ready == 0) return 0;
   if (ready < 0) return -1;
   ssize_t got;
   do {
-    got = ::recv(fd_, out, n, 0);
+    got = ::recv(fd_.get(), out, n, 0);
   } while (got < 0 && errno == EINTR);
   if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) return 0;
   return got > 0 ? static_cast<long>(got) : -1;  // 0: the peer closed the connection
@@ -102,32 +88,17 @@ long TcpSocket::read_some(std::uint8_t* out, std::size_t n, int timeout_ms) {
 
 bool TcpSocket::write_all(std::span<const std::uint8_t> bytes) {
   std::size_t done = 0;
-  while (fd_ >= 0 && done < bytes.size()) {
-    const ssize_t w = ::send(fd_, bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
+  while (fd_ && done < bytes.size()) {
+    const ssize_t w = ::send(fd_.get(), bytes.data() + done, bytes.size() - done, MSG_NOSIGNAL);
     if (w < 0 && errno == EINTR) continue;
     if (w < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      if (wait_for(fd_, POLLOUT, 1000) <= 0) return false;
+      if (wait_for(fd_.get(), POLLOUT, 1000) <= 0) return false;
       continue;
     }
     if (w <= 0) return false;
     done += static_cast<std::size_t>(w);
   }
-  return fd_ >= 0;
-}
-
-TcpListener& TcpListener::operator=(TcpListener&& o) noexcept {
-  if (this != &o) {
-    close();
-    fd_ = o.fd_;
-    port_ = o.port_;
-    o.fd_ = -1;
-  }
-  return *this;
-}
-
-void TcpListener::close() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
+  return static_cast<bool>(fd_);
 }
 
 Result<TcpListener> TcpListener::listen(const std::string& address, int port) {
@@ -139,22 +110,22 @@ Result<TcpListener> TcpListener::listen(const std::string& address, int port) {
     return fail(where + ": expected an IPv4 address and a port in [0, 65535]");
   }
   TcpListener l;
-  l.fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (l.fd_ < 0) return fail(where + ": cannot create a socket (" + std::strerror(errno) + ")");
+  l.fd_.reset(::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0));
+  if (!l.fd_) return fail(where + ": cannot create a socket (" + std::strerror(errno) + ")");
   const int one = 1;
-  ::setsockopt(l.fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
-  if (::bind(l.fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) < 0 || ::listen(l.fd_, 4) < 0) {
+  ::setsockopt(l.fd_.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  if (::bind(l.fd_.get(), reinterpret_cast<sockaddr*>(&a), sizeof a) < 0 || ::listen(l.fd_.get(), 4) < 0) {
     return fail(where + ": cannot listen (" + std::strerror(errno) + ")");
   }
   socklen_t len = sizeof a;
-  ::getsockname(l.fd_, reinterpret_cast<sockaddr*>(&a), &len);
+  ::getsockname(l.fd_.get(), reinterpret_cast<sockaddr*>(&a), &len);
   l.port_ = ntohs(a.sin_port);
   return l;
 }
 
 std::optional<TcpSocket> TcpListener::accept(int timeout_ms) {
-  if (fd_ < 0 || wait_for(fd_, POLLIN, timeout_ms) <= 0) return std::nullopt;
-  const int fd = ::accept4(fd_, nullptr, nullptr, SOCK_CLOEXEC);
+  if (!fd_ || wait_for(fd_.get(), POLLIN, timeout_ms) <= 0) return std::nullopt;
+  const int fd = ::accept4(fd_.get(), nullptr, nullptr, SOCK_CLOEXEC);
   if (fd < 0) return std::nullopt;
   const int one = 1;
   ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);

@@ -15,19 +15,20 @@
 #include <span>
 #include <string>
 
+#include <unistd.h>
+
 #include "config/base/result.h"
+#include "config/base/unique_handle.h"
 
 namespace lungar::drivers {
+
+/// An owned file descriptor, closed once.
+using UniqueFd = UniqueHandle<int, ::close, -1>;
 
 class TcpSocket {
  public:
   TcpSocket() = default;
   explicit TcpSocket(int fd) : fd_(fd) {}
-  ~TcpSocket() { close(); }
-  TcpSocket(TcpSocket&& o) noexcept : fd_(o.fd_) { o.fd_ = -1; }
-  TcpSocket& operator=(TcpSocket&& o) noexcept;
-  TcpSocket(const TcpSocket&) = delete;
-  TcpSocket& operator=(const TcpSocket&) = delete;
 
   /// Connects to host:port (a name or an address), giving up after `timeout_ms`. The error names host:port and
   /// the reason ("connection refused", "timed out", "unknown host").
@@ -39,32 +40,25 @@ class TcpSocket {
   /// Sends all of `bytes` (no SIGPIPE when the peer is gone). False when the connection failed.
   bool write_all(std::span<const std::uint8_t> bytes);
 
-  bool is_open() const { return fd_ >= 0; }
-  void close();
+  bool is_open() const { return static_cast<bool>(fd_); }
+  void close() { fd_.reset(); }
 
  private:
-  int fd_ = -1;
+  UniqueFd fd_;
 };
 
 class TcpListener {
  public:
-  TcpListener() = default;
-  ~TcpListener() { close(); }
-  TcpListener(TcpListener&& o) noexcept : fd_(o.fd_), port_(o.port_) { o.fd_ = -1; }
-  TcpListener& operator=(TcpListener&& o) noexcept;
-  TcpListener(const TcpListener&) = delete;
-  TcpListener& operator=(const TcpListener&) = delete;
-
   /// Listens on address:port (an IPv4 address; "0.0.0.0" for every interface; port 0: one the OS picks, see
   /// port()). The port may be reused at once after a previous listener closed (SO_REUSEADDR).
   static Result<TcpListener> listen(const std::string& address, int port);
   /// The next client, waiting at most `timeout_ms`; nullopt when none came.
   std::optional<TcpSocket> accept(int timeout_ms);
   int port() const { return port_; }
-  void close();
+  void close() { fd_.reset(); }
 
  private:
-  int fd_ = -1;
+  UniqueFd fd_;
   int port_ = 0;
 };
 

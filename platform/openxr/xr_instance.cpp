@@ -68,12 +68,12 @@ Result<Instance> Instance::create(const InstanceOptions& options) {
   info.enabledExtensionNames = wanted.data();
   info.enabledApiLayerCount = static_cast<std::uint32_t>(layers.size());
   info.enabledApiLayerNames = layers.data();
-  if (XrResult r = xrCreateInstance(&info, &out.instance_); XR_FAILED(r)) {
+  if (XrResult r = xrCreateInstance(&info, out.instance_.out()); XR_FAILED(r)) {
     return fail(xr_error(XR_NULL_HANDLE, "xrCreateInstance", r));
   }
   auto properties = xr_struct<XrInstanceProperties>(XR_TYPE_INSTANCE_PROPERTIES);
-  if (XrResult r = xrGetInstanceProperties(out.instance_, &properties); XR_FAILED(r)) {
-    return fail(xr_error(out.instance_, "xrGetInstanceProperties", r));
+  if (XrResult r = xrGetInstanceProperties(out.instance_.get(), &properties); XR_FAILED(r)) {
+    return fail(xr_error(out.instance_.get(), "xrGetInstanceProperties", r));
   }
   out.runtime_.name = properties.runtimeName;
   out.runtime_.version = version_text(properties.runtimeVersion);
@@ -92,21 +92,21 @@ Result<Instance> Instance::create(const InstanceOptions& options) {
 Status Instance::pick_system() {
   auto get = xr_struct<XrSystemGetInfo>(XR_TYPE_SYSTEM_GET_INFO);
   get.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-  if (XrResult r = xrGetSystem(instance_, &get, &system_); XR_FAILED(r)) {
-    return fail(xr_error(instance_, "xrGetSystem(head-mounted display)", r) +
+  if (XrResult r = xrGetSystem(instance_.get(), &get, &system_); XR_FAILED(r)) {
+    return fail(xr_error(instance_.get(), "xrGetSystem(head-mounted display)", r) +
                 (r == XR_ERROR_FORM_FACTOR_UNAVAILABLE ? "; is the headset connected and on?" : ""));
   }
   auto properties = xr_struct<XrSystemProperties>(XR_TYPE_SYSTEM_PROPERTIES);
-  if (XrResult r = xrGetSystemProperties(instance_, system_, &properties); XR_FAILED(r)) {
-    return fail(xr_error(instance_, "xrGetSystemProperties", r));
+  if (XrResult r = xrGetSystemProperties(instance_.get(), system_, &properties); XR_FAILED(r)) {
+    return fail(xr_error(instance_.get(), "xrGetSystemProperties", r));
   }
   runtime_.system_name = properties.systemName;
   std::uint32_t count = 0;
-  XrResult r = xrEnumerateViewConfigurationViews(instance_, system_, kViewConfiguration, 0, &count, nullptr);
-  if (XR_FAILED(r)) return fail(xr_error(instance_, "xrEnumerateViewConfigurationViews(primary stereo)", r));
+  XrResult r = xrEnumerateViewConfigurationViews(instance_.get(), system_, kViewConfiguration, 0, &count, nullptr);
+  if (XR_FAILED(r)) return fail(xr_error(instance_.get(), "xrEnumerateViewConfigurationViews(primary stereo)", r));
   views_.assign(count, xr_struct<XrViewConfigurationView>(XR_TYPE_VIEW_CONFIGURATION_VIEW));
-  r = xrEnumerateViewConfigurationViews(instance_, system_, kViewConfiguration, count, &count, views_.data());
-  if (XR_FAILED(r)) return fail(xr_error(instance_, "xrEnumerateViewConfigurationViews(primary stereo)", r));
+  r = xrEnumerateViewConfigurationViews(instance_.get(), system_, kViewConfiguration, count, &count, views_.data());
+  if (XR_FAILED(r)) return fail(xr_error(instance_.get(), "xrEnumerateViewConfigurationViews(primary stereo)", r));
   if (views_.size() != 2) {
     return fail("OpenXR: " + runtime_.system_name + ": primary stereo: expected 2 views, got " +
                 std::to_string(views_.size()));
@@ -114,30 +114,9 @@ Status Instance::pick_system() {
   return ok();
 }
 
-Instance::Instance(Instance&& other) noexcept { *this = std::move(other); }
-
-Instance& Instance::operator=(Instance&& other) noexcept {
-  if (this != &other) {
-    if (instance_ != XR_NULL_HANDLE) xrDestroyInstance(instance_);
-    instance_ = std::exchange(other.instance_, XR_NULL_HANDLE);
-    system_ = other.system_;
-    runtime_ = std::move(other.runtime_);
-    headless_ = other.headless_;
-    depth_layer_ = other.depth_layer_;
-    to_timespec_ = other.to_timespec_;
-    from_timespec_ = other.from_timespec_;
-    views_ = std::move(other.views_);
-  }
-  return *this;
-}
-
-Instance::~Instance() {
-  if (instance_ != XR_NULL_HANDLE) xrDestroyInstance(instance_);
-}
-
 std::int64_t Instance::to_monotonic_ns(XrTime time) const {
   timespec ts{};
-  if (to_timespec_ != nullptr && XR_SUCCEEDED(to_timespec_(instance_, time, &ts))) {
+  if (to_timespec_ != nullptr && XR_SUCCEEDED(to_timespec_(instance_.get(), time, &ts))) {
     return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
   }
   return time;
@@ -146,14 +125,14 @@ std::int64_t Instance::to_monotonic_ns(XrTime time) const {
 XrTime Instance::from_monotonic_ns(std::int64_t ns) const {
   const timespec ts{static_cast<time_t>(ns / 1'000'000'000), static_cast<long>(ns % 1'000'000'000)};
   XrTime time = 0;
-  if (from_timespec_ != nullptr && XR_SUCCEEDED(from_timespec_(instance_, &ts, &time))) return time;
+  if (from_timespec_ != nullptr && XR_SUCCEEDED(from_timespec_(instance_.get(), &ts, &time))) return time;
   return ns;
 }
 
 Result<PFN_xrVoidFunction> Instance::function(const char* name) const {
   PFN_xrVoidFunction f = nullptr;
-  if (XrResult r = xrGetInstanceProcAddr(instance_, name, &f); XR_FAILED(r) || f == nullptr) {
-    return fail(xr_error(instance_, (std::string("xrGetInstanceProcAddr(") + name + ")").c_str(), r));
+  if (XrResult r = xrGetInstanceProcAddr(instance_.get(), name, &f); XR_FAILED(r) || f == nullptr) {
+    return fail(xr_error(instance_.get(), (std::string("xrGetInstanceProcAddr(") + name + ")").c_str(), r));
   }
   return f;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/base/result.h"
+#include "config/base/unique_handle.h"
 #include "platform/openxr/xr_headers.h"
 
 namespace lungar::platform::openxr {
@@ -34,13 +35,7 @@ class Instance {
   /// Loads the runtime and picks its head-mounted system. No runtime: one line naming XR_RUNTIME_JSON.
   static Result<Instance> create(const InstanceOptions& options);
 
-  Instance(Instance&& other) noexcept;
-  Instance& operator=(Instance&& other) noexcept;
-  Instance(const Instance&) = delete;
-  Instance& operator=(const Instance&) = delete;
-  ~Instance();
-
-  XrInstance handle() const { return instance_; }
+  XrInstance handle() const { return instance_.get(); }
   XrSystemId system() const { return system_; }
   const RuntimeInfo& runtime() const { return runtime_; }
   bool headless() const { return headless_; }
@@ -61,7 +56,7 @@ class Instance {
  private:
   Instance() = default;
   Status pick_system();
-  XrInstance instance_ = XR_NULL_HANDLE;
+  UniqueHandle<XrInstance, xrDestroyInstance> instance_;
   XrSystemId system_ = XR_NULL_SYSTEM_ID;
   RuntimeInfo runtime_;
   bool headless_ = false;

@@ -17,7 +17,7 @@ Result<Session> Session::create(const Instance& instance, const XrGraphicsBindin
   auto info = xr_struct<XrSessionCreateInfo>(XR_TYPE_SESSION_CREATE_INFO);
   info.next = binding;
   info.systemId = instance.system();
-  if (XrResult r = xrCreateSession(instance.handle(), &info, &s.session_); XR_FAILED(r)) {
+  if (XrResult r = xrCreateSession(instance.handle(), &info, s.session_.out()); XR_FAILED(r)) {
     return fail(xr_error(instance.handle(), binding ? "xrCreateSession(XR_MNDX_egl_enable)" : "xrCreateSession", r));
   }
   if (auto spaces = s.create_spaces(space); !spaces) return fail(spaces.error());
@@ -26,10 +26,10 @@ Result<Session> Session::create(const Instance& instance, const XrGraphicsBindin
 
 Status Session::create_spaces(XrReferenceSpaceType wanted) {
   std::uint32_t count = 0;
-  XrResult r = xrEnumerateReferenceSpaces(session_, 0, &count, nullptr);
+  XrResult r = xrEnumerateReferenceSpaces(session_.get(), 0, &count, nullptr);
   if (XR_FAILED(r)) return fail(xr_error(instance_, "xrEnumerateReferenceSpaces", r));
   std::vector<XrReferenceSpaceType> offered(count);
-  r = xrEnumerateReferenceSpaces(session_, count, &count, offered.data());
+  r = xrEnumerateReferenceSpaces(session_.get(), count, &count, offered.data());
   if (XR_FAILED(r)) return fail(xr_error(instance_, "xrEnumerateReferenceSpaces", r));
   space_type_ = XR_REFERENCE_SPACE_TYPE_LOCAL;  // every runtime has LOCAL
   for (auto t : offered) {
@@ -39,41 +39,14 @@ Status Session::create_spaces(XrReferenceSpaceType wanted) {
   auto info = xr_struct<XrReferenceSpaceCreateInfo>(XR_TYPE_REFERENCE_SPACE_CREATE_INFO);
   info.poseInReferenceSpace.orientation.w = 1.f;
   info.referenceSpaceType = space_type_;
-  if (r = xrCreateReferenceSpace(session_, &info, &app_space_); XR_FAILED(r)) {
+  if (r = xrCreateReferenceSpace(session_.get(), &info, app_space_.out()); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrCreateReferenceSpace", r));
   }
   info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-  if (r = xrCreateReferenceSpace(session_, &info, &view_space_); XR_FAILED(r)) {
+  if (r = xrCreateReferenceSpace(session_.get(), &info, view_space_.out()); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrCreateReferenceSpace(VIEW)", r));
   }
   return ok();
-}
-
-Session::Session(Session&& other) noexcept { *this = std::move(other); }
-
-Session& Session::operator=(Session&& other) noexcept {
-  if (this != &other) {
-    destroy();
-    instance_ = other.instance_;
-    session_ = std::exchange(other.session_, XR_NULL_HANDLE);
-    app_space_ = std::exchange(other.app_space_, XR_NULL_HANDLE);
-    view_space_ = std::exchange(other.view_space_, XR_NULL_HANDLE);
-    space_type_ = other.space_type_;
-    lifecycle_ = other.lifecycle_;
-    log_ = std::move(other.log_);
-    error_ = std::move(other.error_);
-  }
-  return *this;
-}
-
-Session::~Session() { destroy(); }
-
-void Session::destroy() {
-  if (app_space_ != XR_NULL_HANDLE) xrDestroySpace(app_space_);
-  if (view_space_ != XR_NULL_HANDLE) xrDestroySpace(view_space_);
-  if (session_ != XR_NULL_HANDLE) xrDestroySession(session_);
-  app_space_ = view_space_ = XR_NULL_HANDLE;
-  session_ = XR_NULL_HANDLE;
 }
 
 // Begins or ends the session where the lifecycle says so; passes the rest to the owner.
@@ -81,7 +54,7 @@ LifecycleAction Session::apply(LifecycleAction action) {
   if (action == LifecycleAction::BeginSession) {
     auto begin = xr_struct<XrSessionBeginInfo>(XR_TYPE_SESSION_BEGIN_INFO);
     begin.primaryViewConfigurationType = Instance::kViewConfiguration;
-    if (XrResult r = xrBeginSession(session_, &begin); XR_FAILED(r)) {
+    if (XrResult r = xrBeginSession(session_.get(), &begin); XR_FAILED(r)) {
       error_ = xr_error(instance_, "xrBeginSession", r);
     } else {
       lifecycle_.on_begun();
@@ -90,7 +63,7 @@ LifecycleAction Session::apply(LifecycleAction action) {
   }
   if (action == LifecycleAction::EndSession || (action == LifecycleAction::ReconnectSession && lifecycle_.running())) {
     lifecycle_.on_ended();
-    if (XrResult r = xrEndSession(session_); XR_FAILED(r)) error_ = xr_error(instance_, "xrEndSession", r);
+    if (XrResult r = xrEndSession(session_.get()); XR_FAILED(r)) error_ = xr_error(instance_, "xrEndSession", r);
     return action == LifecycleAction::EndSession ? LifecycleAction::None : action;
   }
   return action;
@@ -105,7 +78,7 @@ Result<LifecycleAction> Session::poll_events() {
     bool lifecycle_event = false;
     if (event.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
       const auto& changed = reinterpret_cast<const XrEventDataSessionStateChanged&>(event);
-      lifecycle_event = changed.session == session_;
+      lifecycle_event = changed.session == session_.get();
       if (lifecycle_event) action = lifecycle_.on_session_state(changed.state);
     } else if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) {
       lifecycle_event = true;
@@ -127,7 +100,7 @@ Result<LifecycleAction> Session::poll_events() {
 Status Session::request_exit() {
   lifecycle_.on_exit_requested();
   if (!lifecycle_.running()) return ok();
-  if (XrResult r = xrRequestExitSession(session_); XR_FAILED(r)) {
+  if (XrResult r = xrRequestExitSession(session_.get()); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrRequestExitSession", r));
   }
   return ok();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "config/base/result.h"
+#include "config/base/unique_handle.h"
 #include "platform/openxr/xr_headers.h"
 #include "platform/openxr/xr_instance.h"
 #include "platform/openxr/xr_lifecycle.h"
@@ -21,12 +22,9 @@ class Session {
   /// `space`: LOCAL or STAGE, the space poses are located in (STAGE falls back to LOCAL where the runtime has none).
   static Result<Session> create(const Instance& instance, const XrGraphicsBindingEGLMNDX* binding,
                                 XrReferenceSpaceType space, LogFn log);
-  Session(Session&& other) noexcept;
-  Session& operator=(Session&& other) noexcept;
-  Session(const Session&) = delete;
-  Session& operator=(const Session&) = delete;
-  ~Session();
-
+  Session(Session&&) noexcept = default;
+  /// Not assignable: assigning over a live session would destroy it before its spaces.
+  Session& operator=(Session&&) = delete;
   /// Handles every pending event: begins the session on READY, ends it on STOPPING, logs one line per change.
   /// Returns what the owner must still do: DestroySession (EXITING), ReconnectSession (LOSS_PENDING),
   /// ReconnectInstance (instance loss pending), else None.
@@ -34,21 +32,21 @@ class Session {
   /// xrRequestExitSession once the session runs (else the session is simply over): STOPPING and EXITING follow.
   Status request_exit();
 
-  XrSession handle() const { return session_; }
-  XrSpace app_space() const { return app_space_; }    ///< LOCAL or STAGE
-  XrSpace view_space() const { return view_space_; }  ///< the head (VIEW)
+  XrSession handle() const { return session_.get(); }
+  XrSpace app_space() const { return app_space_.get(); }    ///< LOCAL or STAGE
+  XrSpace view_space() const { return view_space_.get(); }  ///< the head (VIEW)
   XrReferenceSpaceType space_type() const { return space_type_; }
   const Lifecycle& lifecycle() const { return lifecycle_; }
 
  private:
   Session() = default;
   Status create_spaces(XrReferenceSpaceType wanted);
-  void destroy();
   LifecycleAction apply(LifecycleAction action);
   XrInstance instance_ = XR_NULL_HANDLE;
-  XrSession session_ = XR_NULL_HANDLE;
-  XrSpace app_space_ = XR_NULL_HANDLE;
-  XrSpace view_space_ = XR_NULL_HANDLE;
+  // Declared before its spaces, so that they are destroyed first.
+  UniqueHandle<XrSession, xrDestroySession> session_;
+  UniqueHandle<XrSpace, xrDestroySpace> app_space_;
+  UniqueHandle<XrSpace, xrDestroySpace> view_space_;
   XrReferenceSpaceType space_type_ = XR_REFERENCE_SPACE_TYPE_LOCAL;
   Lifecycle lifecycle_;
   LogFn log_;

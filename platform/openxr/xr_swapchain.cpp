@@ -64,51 +64,30 @@ Result<Swapchain> Swapchain::create(XrInstance instance, XrSession session, std:
   info.arraySize = 1;
   info.mipCount = 1;
   const std::string call = std::string("xrCreateSwapchain(") + what + ", " + gl_format_name(format) + ")";
-  if (XrResult r = xrCreateSwapchain(session, &info, &s.swapchain_); XR_FAILED(r)) {
+  if (XrResult r = xrCreateSwapchain(session, &info, s.swapchain_.out()); XR_FAILED(r)) {
     return fail(xr_error(instance, call.c_str(), r));
   }
   std::uint32_t count = 0;
-  XrResult r = xrEnumerateSwapchainImages(s.swapchain_, 0, &count, nullptr);
+  XrResult r = xrEnumerateSwapchainImages(s.swapchain_.get(), 0, &count, nullptr);
   if (XR_FAILED(r)) return fail(xr_error(instance, "xrEnumerateSwapchainImages", r));
   std::vector<XrSwapchainImageOpenGLESKHR> images(count, xr_struct<XrSwapchainImageOpenGLESKHR>(XR_TYPE_SWAPCHAIN_IMAGE_OPENGL_ES_KHR));
-  r = xrEnumerateSwapchainImages(s.swapchain_, count, &count,
+  r = xrEnumerateSwapchainImages(s.swapchain_.get(), count, &count,
                                  reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data()));
   if (XR_FAILED(r)) return fail(xr_error(instance, "xrEnumerateSwapchainImages(OpenGL ES)", r));
   for (const auto& image : images) s.images_.push_back(image.image);
   return s;
 }
 
-Swapchain::Swapchain(Swapchain&& other) noexcept { *this = std::move(other); }
-
-Swapchain& Swapchain::operator=(Swapchain&& other) noexcept {
-  if (this != &other) {
-    if (swapchain_ != XR_NULL_HANDLE) xrDestroySwapchain(swapchain_);
-    instance_ = other.instance_;
-    swapchain_ = std::exchange(other.swapchain_, XR_NULL_HANDLE);
-    format_ = other.format_;
-    width_ = other.width_;
-    height_ = other.height_;
-    images_ = std::move(other.images_);
-    acquired_ = std::exchange(other.acquired_, false);
-    what_ = other.what_;
-  }
-  return *this;
-}
-
-Swapchain::~Swapchain() {
-  if (swapchain_ != XR_NULL_HANDLE) xrDestroySwapchain(swapchain_);
-}
-
 Result<GLuint> Swapchain::acquire() {
   std::uint32_t index = 0;
   auto acquire = xr_struct<XrSwapchainImageAcquireInfo>(XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO);
-  if (XrResult r = xrAcquireSwapchainImage(swapchain_, &acquire, &index); XR_FAILED(r)) {
+  if (XrResult r = xrAcquireSwapchainImage(swapchain_.get(), &acquire, &index); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrAcquireSwapchainImage", r));
   }
   acquired_ = true;
   auto wait = xr_struct<XrSwapchainImageWaitInfo>(XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO);
   wait.timeout = XR_INFINITE_DURATION;
-  if (XrResult r = xrWaitSwapchainImage(swapchain_, &wait); XR_FAILED(r)) {
+  if (XrResult r = xrWaitSwapchainImage(swapchain_.get(), &wait); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrWaitSwapchainImage", r));
   }
   if (index >= images_.size()) {
@@ -119,10 +98,10 @@ Result<GLuint> Swapchain::acquire() {
 }
 
 Status Swapchain::release() {
-  if (!acquired_) return ok();
+  if (!acquired_ || !swapchain_) return ok();
   acquired_ = false;
   auto release = xr_struct<XrSwapchainImageReleaseInfo>(XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO);
-  if (XrResult r = xrReleaseSwapchainImage(swapchain_, &release); XR_FAILED(r)) {
+  if (XrResult r = xrReleaseSwapchainImage(swapchain_.get(), &release); XR_FAILED(r)) {
     return fail(xr_error(instance_, "xrReleaseSwapchainImage", r));
   }
   return ok();

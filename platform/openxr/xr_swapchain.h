@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/base/result.h"
+#include "config/base/unique_handle.h"
 #include "platform/openxr/xr_headers.h"
 
 namespace lungar::platform::openxr {
@@ -25,18 +26,12 @@ class Swapchain {
  public:
   static Result<Swapchain> create(XrInstance instance, XrSession session, std::int64_t format, std::uint32_t width,
                                   std::uint32_t height, XrSwapchainUsageFlags usage, const char* what);
-  Swapchain(Swapchain&& other) noexcept;
-  Swapchain& operator=(Swapchain&& other) noexcept;
-  Swapchain(const Swapchain&) = delete;
-  Swapchain& operator=(const Swapchain&) = delete;
-  ~Swapchain();
-
   /// xrAcquireSwapchainImage + xrWaitSwapchainImage: the GL texture to draw into this frame.
   Result<GLuint> acquire();
   /// xrReleaseSwapchainImage of the acquired image (no-op when none is acquired).
   Status release();
 
-  XrSwapchain handle() const { return swapchain_; }
+  XrSwapchain handle() const { return swapchain_.get(); }
   std::int64_t format() const { return format_; }
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
@@ -45,7 +40,7 @@ class Swapchain {
  private:
   Swapchain() = default;
   XrInstance instance_ = XR_NULL_HANDLE;
-  XrSwapchain swapchain_ = XR_NULL_HANDLE;
+  UniqueHandle<XrSwapchain, xrDestroySwapchain> swapchain_;
   std::int64_t format_ = 0;
   std::uint32_t width_ = 0, height_ = 0;
   std::vector<GLuint> images_;

@@ -102,7 +102,10 @@ TomlWriter TomlWriter::section(std::string_view key) {
 
 std::string TomlWriter::str() const {
   std::string out;
-  if (!table_->path.empty()) out += "[" + table_->path + "]\n";
+  // A table with no keys of its own but with tables inside ([trackers] above [trackers.stylus]) needs no header:
+  // TOML makes it from its children's.
+  const bool implicit = table_->keys.empty() && !table_->children.empty();
+  if (!table_->path.empty() && !implicit) out += "[" + table_->path + "]\n";
   out += table_->keys;
   for (const auto& [name, child] : table_->children) {
     if (!out.empty()) out += "\n";

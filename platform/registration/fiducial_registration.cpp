@@ -3,7 +3,9 @@
 #include "platform/registration/fiducial_registration.h"
 
 #include "config/base/atomic_file.h"
+#include "config/toml_writer.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -81,15 +83,16 @@ Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path) {
 }
 
 Status write_registration_toml(const std::string& path, const Registration& r) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n"
-                "[registration]\n"
-                "translation_mm = [%.6f, %.6f, %.6f]\n"
-                "rotation_wxyz = [%.9f, %.9f, %.9f, %.9f]\n",
-                r.fiducials, r.fre_rms_mm, r.fre_max_mm, r.translation_mm.x(), r.translation_mm.y(),
-                r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z());
-  return write_file_atomically(path, buf);
+  config::TomlWriter document;
+  config::TomlWriter section = document.section("registration");
+  const Eigen::Vector3d& t = r.translation_mm;
+  section.numbers("translation_mm", std::array<double, 3>{t.x(), t.y(), t.z()}, -1e4, 1e4, "mm");
+  section.numbers("rotation_wxyz", std::array<double, 4>{r.rotation.w(), r.rotation.x(), r.rotation.y(),
+                                                         r.rotation.z()}, -1.0, 1.0, "");
+  char comment[160];
+  std::snprintf(comment, sizeof comment, "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, "
+                "worst %.3f mm.\n", r.fiducials, r.fre_rms_mm, r.fre_max_mm);
+  return write_file_atomically(path, comment + document.str());
 }
 
 }  // namespace lungar::platform

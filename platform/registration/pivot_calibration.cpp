@@ -3,12 +3,14 @@
 #include "platform/registration/pivot_calibration.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
 #include <Eigen/QR>
 
 #include "config/base/atomic_file.h"
+#include "config/toml_writer.h"
 
 namespace lungar::platform {
 
@@ -54,14 +56,13 @@ Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& poses) {
 }
 
 Status write_tip_offset_toml(const std::string& path, const PivotFit& f) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "# Written by `lungar calibrate pivot` from %d stylus poses turning up to %.1f degrees: RMS error "
-                "%.3f mm, worst %.3f mm.\n"
-                "[trackers.stylus]\n"
-                "tip_offset_mm = [%.4f, %.4f, %.4f]\n",
-                f.poses, f.spread_deg, f.rms_mm, f.max_mm, f.tip_mm.x(), f.tip_mm.y(), f.tip_mm.z());
-  return write_file_atomically(path, buf);
+  config::TomlWriter document;
+  document.section("trackers").section("stylus").numbers(
+      "tip_offset_mm", std::array<double, 3>{f.tip_mm.x(), f.tip_mm.y(), f.tip_mm.z()}, -1000.0, 1000.0, "mm");
+  char comment[200];
+  std::snprintf(comment, sizeof comment, "# Written by `lungar calibrate pivot` from %d stylus poses turning up to "
+                "%.1f degrees: RMS error %.3f mm, worst %.3f mm.\n", f.poses, f.spread_deg, f.rms_mm, f.max_mm);
+  return write_file_atomically(path, comment + document.str());
 }
 
 }  // namespace lungar::platform

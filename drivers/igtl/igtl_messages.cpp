@@ -27,6 +27,21 @@ std::vector<std::uint8_t> packed(Message& msg, const std::string& device, IgtlTi
   return std::vector<std::uint8_t>(p, p + msg->GetPackSize());
 }
 
+/// A TDATA or QTDATA message: one 6-D element a tool, named after it; `set_pose(msg, element, tool)` writes the
+/// tool's pose in the message's own form and adds the element.
+template <typename Message, typename Element, typename SetPose>
+std::vector<std::uint8_t> tracking_message(const std::string& device, std::span<const IgtlTool> tools, IgtlTime time,
+                                           const SetPose& set_pose) {
+  auto msg = Message::New();
+  for (const IgtlTool& tool : tools) {
+    auto e = Element::New();
+    e->SetName(tool.name.c_str());
+    e->SetType(Element::TYPE_6D);
+    set_pose(msg, e, tool);
+  }
+  return packed(msg, device, time);
+}
+
 }  // namespace
 
 IgtlTime IgtlTime::from_ns(std::uint64_t unix_ns) {
@@ -45,34 +60,26 @@ std::vector<std::uint8_t> igtl_transform_message(const std::string& device, cons
 
 std::vector<std::uint8_t> igtl_tdata_message(const std::string& device, std::span<const IgtlTool> tools,
                                              IgtlTime time) {
-  auto msg = igtl::TrackingDataMessage::New();
-  for (const IgtlTool& tool : tools) {
-    auto e = igtl::TrackingDataElement::New();
-    e->SetName(tool.name.c_str());
-    e->SetType(igtl::TrackingDataElement::TYPE_6D);
-    igtl::Matrix4x4 m;
-    to_igtl(tool.matrix, m);
-    e->SetMatrix(m);
-    msg->AddTrackingDataElement(e);
-  }
-  return packed(msg, device, time);
+  return tracking_message<igtl::TrackingDataMessage, igtl::TrackingDataElement>(
+      device, tools, time, [](auto& msg, auto& e, const IgtlTool& tool) {
+        igtl::Matrix4x4 m;
+        to_igtl(tool.matrix, m);
+        e->SetMatrix(m);
+        msg->AddTrackingDataElement(e);
+      });
 }
 
 std::vector<std::uint8_t> igtl_qtdata_message(const std::string& device, std::span<const IgtlTool> tools,
                                               IgtlTime time) {
-  auto msg = igtl::QuaternionTrackingDataMessage::New();
-  for (const IgtlTool& tool : tools) {
-    auto e = igtl::QuaternionTrackingDataElement::New();
-    e->SetName(tool.name.c_str());
-    e->SetType(igtl::QuaternionTrackingDataElement::TYPE_6D);
-    const Eigen::Quaterniond q(Eigen::Matrix3d(tool.matrix.topLeftCorner<3, 3>()));
-    e->SetPosition(static_cast<float>(tool.matrix(0, 3)), static_cast<float>(tool.matrix(1, 3)),
-                   static_cast<float>(tool.matrix(2, 3)));
-    e->SetQuaternion(static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()),
-                     static_cast<float>(q.w()));
-    msg->AddQuaternionTrackingDataElement(e);
-  }
-  return packed(msg, device, time);
+  return tracking_message<igtl::QuaternionTrackingDataMessage, igtl::QuaternionTrackingDataElement>(
+      device, tools, time, [](auto& msg, auto& e, const IgtlTool& tool) {
+        const Eigen::Quaterniond q(Eigen::Matrix3d(tool.matrix.topLeftCorner<3, 3>()));
+        const Eigen::Vector3f t = tool.matrix.topRightCorner<3, 1>().cast<float>();
+        e->SetPosition(t.x(), t.y(), t.z());
+        e->SetQuaternion(static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()),
+                         static_cast<float>(q.w()));
+        msg->AddQuaternionTrackingDataElement(e);
+      });
 }
 
 std::vector<std::uint8_t> igtl_status_message(const std::string& device, IgtlTime time) {

@@ -89,9 +89,17 @@ Status override_tracker(const std::string& tracker, drivers::TrackerConfig& t) {
   return ok();
 }
 
-}  // namespace
+/// Declares, under `group` in --help, the options `add` adds; the options added after go where they went before.
+template <typename Add>
+void grouped(CLI::App& app, const char* group, const Add& add) {
+  const std::string before = app.option_defaults()->get_group();
+  app.option_defaults()->group(group);
+  add();
+  app.option_defaults()->group(before);
+}
 
-void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
+/// What is drawn and what drives it: the settings, the lungs, their breath, the scenario, the tracker.
+void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--config", o.config_path,
                  "settings TOML (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, else "
                  "built-in; every key: default.toml)");
@@ -113,6 +121,10 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--tracker", o.tracker,
                  "tracker source: mock | replay:FILE.trk | hid | igtl[:HOST[:PORT]] (OpenIGTLink, PlusServer or 3D "
                  "Slicer; default: from the config)");
+}
+
+/// Where the frames go, how they are drawn, for how long, and what is kept of the run.
+void add_output_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--headless", o.headless, "draw off-screen even when a display is present");
   app.add_option("--output", o.output,
                  "auto | window | fullscreen | headless | openxr (a headset through its OpenXR runtime)")
@@ -140,6 +152,9 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
                  "record the raw tracker reports into FILE.trk, or the poses as a PLUS sequence FILE.igs.mha (3D "
                  "Slicer opens it) (no FILE: a .trk in $XDG_STATE_HOME/lungar/recordings/)")
       ->expected(0, 1);
+}
+
+void add_classroom_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
       ->check(CLI::IsMember(names_of(sync::kSyncRoleNames)));
   app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
@@ -149,7 +164,17 @@ void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--sync-security", o.sync_security,
                  "join a secure classroom (DDS Security) with this station's folder from `lungar classroom-keys` "
                  "(default: sync.security; none: the classroom is open)");
-  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "tests: pretend this station's clock is off by MS");
+  // For the tests alone: in no group, so --help leaves it out.
+  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "pretend this station's clock is off by MS")
+      ->group("");
+}
+
+}  // namespace
+
+void add_runtime_options(CLI::App& app, RuntimeOptions& o) {
+  grouped(app, "Input", [&] { add_input_options(app, o); });
+  grouped(app, "Output", [&] { add_output_options(app, o); });
+  grouped(app, "Classroom", [&] { add_classroom_options(app, o); });
 }
 
 Status apply_overrides(const RuntimeOptions& o, Settings& s) {

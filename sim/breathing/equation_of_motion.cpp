@@ -93,12 +93,7 @@ double flow_zero(const MuscleCycle& c, double lo, double hi, bool rising) {
 
 /// The periodic cycle for a given T_rise, with its volume extremes.
 MuscleCycle cycle_for(double period, double share, double tau, double rise, double relax) {
-  MuscleCycle c;
-  c.period_s = period;
-  c.inspiratory_share = share;
-  c.tau_s = tau;
-  c.rise_s = rise;
-  c.relax_s = relax;
+  MuscleCycle c{.period_s = period, .inspiratory_share = share, .tau_s = tau, .rise_s = rise, .relax_s = relax};
   // x(T) = x0 e^(-T/tau) + x(T) from rest, and x(T) = x0 in steady state.
   const double from_rest = propagate(0.0, period, rise, relax, tau).period_end;
   c.x_start = from_rest / -std::expm1(-period / tau);

@@ -27,11 +27,11 @@ struct RegionMotion {
 };
 
 struct MotionFigures {
-  double si_share = 0;
-  double apex_base_ratio = 0;
-  double dorsal_ventral_ratio = 0;
-  double mean_displacement_mm = 0;
-  double max_displacement_mm = 0;
+  double si_share = 0;              ///< superior-inferior: mean |d_z| / mean |d| (4-D CT: about 0.9)
+  double apex_base_ratio = 0;       ///< mean |d| at the apex over at the base (< 1: the base moves most)
+  double dorsal_ventral_ratio = 0;  ///< mean |d| at the back over at the front
+  double mean_displacement_mm = 0;  ///< mean |d| over every vertex
+  double max_displacement_mm = 0;   ///< the largest |d|
   std::array<RegionMotion, kSurfaceRegionCount> regions{};  ///< indexed by SurfaceRegion; empty without regions
 };
 

@@ -43,10 +43,10 @@ sim::BreathingSample FollowedBreathing::at(std::int64_t now_ns) const {
   if (feed_->per_lung()) {
     for (std::size_t l = 0; l < 2; ++l) {  // a lung followed on its own; else its posture's share of the breath
       const sim::FollowerOutput lung = followers_.lungs[l].at(t, 0.5 * s.dv_ml);
-      if (lung.state == sim::BreathState::following) s.lung_dv_ml[l] = lung.dv_ml;
+      if (lung.state == sim::BreathState::Following) s.lung_dv_ml[l] = lung.dv_ml;
     }
   }
-  if (o.state == sim::BreathState::following) {
+  if (o.state == sim::BreathState::Following) {
     lag_sum_s_ += t - followers_.breath.last_sample_s();
     ++lag_n_;
     following_s_ += std::max(0.0, t - last_t_);

@@ -74,7 +74,7 @@ class FollowedBreathing final : public BreathingClock {
   std::int64_t t0_ns_;
   // The follower moves with the frames' clock (the frame thread alone calls at()).
   mutable Followers followers_;
-  mutable sim::BreathState state_ = sim::BreathState::model;
+  mutable sim::BreathState state_ = sim::BreathState::Model;
   mutable double lag_sum_s_ = 0, following_s_ = 0, last_t_ = 0;
   mutable long lag_n_ = 0;
   mutable bool apnoea_ = false;  ///< in an apnoea at the last frame: its start is logged once

@@ -59,7 +59,7 @@ Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(const sim::Bake
     const std::string where = "pathology event " + std::to_string(k + 1) + " (" +
                               (e.add.empty() ? "remove " + e.remove : "add " + e.add) + "): ";
     if (Result<sim::Pathology> p = sim::parse_pathology(e.add.empty() ? e.remove : e.add);
-        p && p->kind == sim::PathologyKind::ards) {
+        p && p->kind == sim::PathologyKind::Ards) {
       return fail(where + "an ARDS cannot come or go during a run: its collapse would switch at once; give it in the "
                   "pathology list for the whole run");
     }

@@ -15,12 +15,12 @@ using physiology::Channel;
 using physiology::Quantity;
 
 PhysiologyFeed::PhysiologyFeed(const PhysiologySpec& spec, std::int64_t t0_ns)
-    : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::amm ? "amm" : "openice") {}
+    : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::Amm ? "amm" : "openice") {}
 
 Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpec& spec,
                                                              const std::string& cyclonedds_xml, std::int64_t t0_ns) {
   std::shared_ptr<PhysiologyFeed> f(new PhysiologyFeed(spec, t0_ns));
-  if (spec.source == PhysiologySpec::Source::amm) {
+  if (spec.source == PhysiologySpec::Source::Amm) {
     auto r = physiology::AmmReader::open(spec.domain, f->inbox_);
     if (!r) return Error{r.error()};
     f->amm_ = r.take();
@@ -34,7 +34,7 @@ Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpe
 
 std::string PhysiologyFeed::describe() const {
   const std::string d = " on DDS domain " + std::to_string(spec_.domain);
-  if (spec_.source == PhysiologySpec::Source::amm)
+  if (spec_.source == PhysiologySpec::Source::Amm)
     return "the mannequin's lung volumes (AMM, topic '" + std::string(physiology::kAmmTopic) + "')" + d;
   return std::string("the ventilator's ") + physiology::openice_metric(spec_.quantity) + " (OpenICE)" + d;
 }
@@ -72,7 +72,7 @@ void PhysiologyFeed::give(const physiology::Sample& s, double t_s, Followers& fo
 }
 
 void PhysiologyFeed::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = spec_.source == PhysiologySpec::Source::amm
+  stats["breath_source"] = spec_.source == PhysiologySpec::Source::Amm
                                ? std::string("amm")
                                : std::string("openice:") + physiology::kQuantityNames.name(spec_.quantity);
   stats["breath_dds_domain"] = spec_.domain;

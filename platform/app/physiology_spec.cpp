@@ -21,12 +21,12 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   const std::size_t colon = head.find(':');
   const std::string source = head.substr(0, colon);
   PhysiologySpec spec;
-  if (source == "amm") spec.source = PhysiologySpec::Source::amm;
-  else if (source == "openice") spec.source = PhysiologySpec::Source::openice;
+  if (source == "amm") spec.source = PhysiologySpec::Source::Amm;
+  else if (source == "openice") spec.source = PhysiologySpec::Source::OpenIce;
   else return std::optional<PhysiologySpec>{};
   if (colon != std::string::npos) {
     const std::optional<Quantity> q = physiology::kQuantityNames.parse(head.substr(colon + 1));
-    if (spec.source == PhysiologySpec::Source::amm || !q) return fail("'" + breath + "': " + kSpecHelp);
+    if (spec.source == PhysiologySpec::Source::Amm || !q) return fail("'" + breath + "': " + kSpecHelp);
     spec.quantity = *q;
   }
   if (at != std::string::npos) {

@@ -14,8 +14,8 @@
 namespace lungar::platform {
 
 struct PhysiologySpec {
-  enum class Source { amm, openice };
-  Source source = Source::amm;
+  enum class Source { Amm, OpenIce };
+  Source source = Source::Amm;
   physiology::Quantity quantity = physiology::Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
   std::uint32_t domain = 0;                                          ///< the DDS domain id, [0, 232]
 };

@@ -54,7 +54,7 @@ struct RegistrationSettings {
 /// [sim]: the baked asset and how the patient's orientation becomes the force.
 struct SimSettings {
   std::string asset;  ///< baked asset; empty: the demo's lungs, baked once and cached
-  sim::ForceMode orientation_mode = sim::ForceMode::exact;
+  sim::ForceMode orientation_mode = sim::ForceMode::Exact;
   /// Pathologies applied to the asset when it is loaded, in order (sim/pathology/pathology.h), e.g.
   /// "pneumothorax:right:30"; empty: healthy lungs.
   std::vector<std::string> pathologies;

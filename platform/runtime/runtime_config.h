@@ -26,7 +26,7 @@ inline const char* to_string(Deform v) { return kDeformNames.name(v); }
 
 struct RuntimeConfig {
   Deform deform = Deform::Gpu;
-  sim::ForceMode orientation = sim::ForceMode::exact;  ///< orientation -> force SH (docs/design.md, Orientation)
+  sim::ForceMode orientation = sim::ForceMode::Exact;  ///< orientation -> force SH (docs/design.md, Orientation)
   render::DrawMode mode = render::DrawMode::Points;
   render::StereoStrategy stereo_strategy = render::StereoStrategy::PerEye;
   bool stereo = true;  ///< what the stats JSON's "view" says; the output places the eyes

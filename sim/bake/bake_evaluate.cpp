@@ -105,7 +105,7 @@ void float_errors(const std::vector<std::unique_ptr<LungWork>>& work, const Bake
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     const Eigen::Vector3d& g = dirs[k];
     for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
-    force_sh(a, ForceMode::paper, orientation_for(g), paper_force.data());
+    force_sh(a, ForceMode::Paper, orientation_for(g), paper_force.data());
     displacement_eq7(a, force, d7);
     displacement_eq7(a, paper_force, dp);
     displacement_linear(a, g, dl);

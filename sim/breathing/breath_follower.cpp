@@ -140,22 +140,22 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   const bool calibrated = breaths_ >= p_.calibration_breaths && amplitudes_.count > 0 &&
                           (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 2);
   double target = model_dv_ml, k = 0, seen_value = last_value_;
-  const bool was_following = state_ == BreathState::following;
+  const bool was_following = state_ == BreathState::Following;
   if (lost) {
     const bool recently = any_ && t_s - last_t_ - p_.lost_after_s < p_.holding_s;
-    state_ = recently && state_ != BreathState::model ? BreathState::holding : BreathState::model;
+    state_ = recently && state_ != BreathState::Model ? BreathState::Holding : BreathState::Model;
   } else if (calibrated) {
-    state_ = BreathState::following;
+    state_ = BreathState::Following;
     k = p_.in_ml ? 1.0 : p_.tidal_volume_ml / amplitude();
     seen_value = p_.predict ? predicted(t_s + p_.predict_s) : last_value_;
     target = k * (seen_value - baseline(last_t_));
   } else {
-    state_ = BreathState::model;
+    state_ = BreathState::Model;
   }
   // No jump: once dV is on its source, it moves as the source itself moved this step (the signal's own change at
   // the current scale, or the model's), so steady following has no lag; anything else (a change of source, a
   // new end-exhale level or scale) is caught up at no more than kHandoverMlPerS.
-  const bool following = state_ == BreathState::following;
+  const bool following = state_ == BreathState::Following;
   if (!out_started_) {
     out_ml_ = target;
     out_started_ = true;

@@ -32,15 +32,15 @@
 
 namespace lungar::sim {
 
-enum class BreathState { model, following, holding };
+enum class BreathState { Model, Following, Holding };
 inline constexpr EnumNames<BreathState, 3> kBreathStateNames{
-    {{{BreathState::model, "model"}, {BreathState::following, "following"}, {BreathState::holding, "holding"}}}};
+    {{{BreathState::Model, "model"}, {BreathState::Following, "following"}, {BreathState::Holding, "holding"}}}};
 
 /// How fast dV may move when the source changes (lost, returned): 5 mL per 10 ms step.
 inline constexpr double kHandoverMlPerS = 500.0;
-/// Prediction: the slope is fitted over this much of the newest samples, and dV is extrapolated at most this far.
-inline constexpr double kSlopeWindowS = 0.15;
-inline constexpr double kMaxPredictS = 0.3;
+/// Prediction: the slope is fitted over the newest samples, and dV extrapolated along it, at most so far.
+inline constexpr double kSlopeWindowS = 0.15;  ///< how much of the newest samples the slope is fitted over
+inline constexpr double kMaxPredictS = 0.3;    ///< the furthest dV is extrapolated past the newest sample
 /// The most breaths the amplitude's median and the rate are taken over.
 inline constexpr int kMaxMedianOf = 9;
 
@@ -61,7 +61,7 @@ struct FollowerParams {
 
 struct FollowerOutput {
   double dv_ml = 0;
-  BreathState state = BreathState::model;
+  BreathState state = BreathState::Model;
   double surrogate = 0;    ///< the last sample's value
   bool apnoea = false;     ///< no breath for FollowerParams::apnoea_s while the signal is present
   bool irregular = false;  ///< the last breath's depth or period was off the median
@@ -128,7 +128,7 @@ class BreathFollower {
   int irregular_breaths_ = 0, apnoeas_ = 0;
   double returned_s_ = 0;       ///< when the signal last came back after a loss
   int breaths_at_return_ = -1;  ///< breaths when the signal came back after a loss (-1: not lost)
-  BreathState state_ = BreathState::model;
+  BreathState state_ = BreathState::Model;
   double out_ml_ = 0, out_t_ = 0;
   double used_value_ = 0, used_model_ = 0;  ///< the surrogate and the model's dV at the last at()
   bool out_started_ = false, caught_up_ = true;

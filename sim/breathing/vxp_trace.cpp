@@ -99,7 +99,7 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
   std::string line;
   int line_no = 0;
   const auto at = [&](const std::string& why) { return fail(path + ":" + std::to_string(line_no) + ": " + why); };
-  enum class Part { start, header, data } part = Part::start;
+  enum class Part { Start, Header, Data } part = Part::Start;
   std::map<std::string, std::string> header;
   VxpColumns columns;
   BreathTrace out;
@@ -109,15 +109,15 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    if (part == Part::start) {
+    if (part == Part::Start) {
       if (line != "[Header]") return at("expected a Varian RPM file starting with [Header], got '" + line + "'");
-      part = Part::header;
-    } else if (part == Part::header && line == "[Data]") {
+      part = Part::Header;
+    } else if (part == Part::Header && line == "[Data]") {
       auto c = vxp_columns(header, out);
       if (!c) return at(c.error());
       columns = *c;
-      part = Part::data;
-    } else if (part == Part::header) {
+      part = Part::Data;
+    } else if (part == Part::Header) {
       const auto eq = line.find('=');
       if (eq == std::string::npos) return at("expected Key=Value in the header or [Data], got '" + line + "'");
       header[line.substr(0, eq)] = line.substr(eq + 1);
@@ -125,9 +125,9 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
       return at(row.error());
     }
   }
-  if (part != Part::data)
+  if (part != Part::Data)
     return fail(path + ": expected a [Header] and a [Data] section, got " +
-                (part == Part::start ? std::string("neither") : std::string("no [Data]")));
+                (part == Part::Start ? std::string("neither") : std::string("no [Data]")));
   if (out.samples.size() < 2)
     return fail(path + ": expected at least two valid samples, got " + std::to_string(out.samples.size()) + " (" +
                 std::to_string(out.invalid) + " flagged invalid)");

@@ -85,7 +85,7 @@ void force_sh(const BakedAsset& asset, ForceMode mode, const Eigen::Quaterniond&
   const std::uint32_t c = asset.coefficients();
   const Eigen::Vector3d g = gravity_in_lung_frame(q);
   for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
-    if (mode == ForceMode::exact) force_sh_exact(asset, asset.lungs[l], g, out + l * c);
+    if (mode == ForceMode::Exact) force_sh_exact(asset, asset.lungs[l], g, out + l * c);
     else force_sh_paper(asset.lungs[l], c, q, out + l * c);
   }
 }

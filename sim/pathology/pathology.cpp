@@ -171,7 +171,7 @@ void push_mediastinum(BakedAsset& a, std::size_t l) {
 
 /// emphysema:SEVERITY[:SIDE] and ards:SEVERITY.
 Result<Pathology> parse_severity(std::string_view spec, const std::vector<std::string_view>& parts, Pathology p) {
-  if (p.kind == PathologyKind::ards && parts.size() != 2) return bad(spec, "expected ards:SEVERITY");
+  if (p.kind == PathologyKind::Ards && parts.size() != 2) return bad(spec, "expected ards:SEVERITY");
   if (parts.size() != 2 && parts.size() != 3)
     return bad(spec, "expected emphysema:SEVERITY or emphysema:SEVERITY:SIDE");
   const std::string number(parts[1]);
@@ -189,7 +189,7 @@ Result<Pathology> parse_severity(std::string_view spec, const std::vector<std::s
 /// 1 - how much of the region's weight a vertex at height z carries: 1 inside the third, 0 beyond the ramp.
 double region_weight(double z, double lo, double hi, LungThird third) {
   const double h = hi - lo, ramp = kConsolidationRamp * h;
-  const int index = third == LungThird::lower ? 0 : third == LungThird::middle ? 1 : 2;
+  const int index = third == LungThird::Lower ? 0 : third == LungThird::Middle ? 1 : 2;
   const double bottom = lo + index * h / 3, top = lo + (index + 1) * h / 3;
   const double outside = std::max({0.0, bottom - z, z - top});  // distance beyond the third, mm
   return ramp > 0 ? std::clamp(1.0 - outside / ramp, 0.0, 1.0) : (outside > 0 ? 0.0 : 1.0);
@@ -244,14 +244,14 @@ Result<Pathology> parse_pathology(std::string_view spec) {
   const std::optional<PathologyKind> kind = kPathologyKindNames.parse(parts[0]);
   if (!kind) return bad(spec, kExpected);
   p.kind = *kind;
-  if (p.kind == PathologyKind::emphysema || p.kind == PathologyKind::ards) return parse_severity(spec, parts, p);
-  const bool tension = p.kind == PathologyKind::pneumothorax && parts.size() == 4;
+  if (p.kind == PathologyKind::Emphysema || p.kind == PathologyKind::Ards) return parse_severity(spec, parts, p);
+  const bool tension = p.kind == PathologyKind::Pneumothorax && parts.size() == 4;
   if (tension && parts[3] != "tension") return bad(spec, "expected pneumothorax:SIDE:PERCENT or pneumothorax:SIDE:PERCENT:tension");
   if (parts.size() != 3 && !tension) return bad(spec, kExpected);
   p.tension = tension;
   if (parts[1] != "left" && parts[1] != "right") return bad(spec, "SIDE: expected left or right");
   p.side = std::string(parts[1]);
-  if (p.kind == PathologyKind::pneumothorax) {
+  if (p.kind == PathologyKind::Pneumothorax) {
     const std::string number(parts[2]);
     char* end = nullptr;
     p.percent = std::strtod(number.c_str(), &end);
@@ -267,8 +267,8 @@ Result<Pathology> parse_pathology(std::string_view spec) {
 }
 
 Status apply_pathology(BakedAsset& asset, const Pathology& p) {
-  if (p.kind == PathologyKind::ards) return collapse_dependent(asset, p.severity, p.spec);
-  if (p.kind == PathologyKind::emphysema) {
+  if (p.kind == PathologyKind::Ards) return collapse_dependent(asset, p.severity, p.spec);
+  if (p.kind == PathologyKind::Emphysema) {
     const std::size_t only = p.side.empty() ? asset.lungs.size() : find_lung(asset, p.side);
     if (!p.side.empty() && only == asset.lungs.size())
       return bad(p.spec, "the asset has no lung named '" + p.side + "'");
@@ -278,7 +278,7 @@ Status apply_pathology(BakedAsset& asset, const Pathology& p) {
   }
   const std::size_t l = find_lung(asset, p.side);
   if (l == asset.lungs.size()) return bad(p.spec, "the asset has no lung named '" + p.side + "'");
-  if (p.kind == PathologyKind::pneumothorax) {
+  if (p.kind == PathologyKind::Pneumothorax) {
     collapse(asset, l, p.percent);
     if (p.tension) push_mediastinum(asset, l);
     return {};
@@ -289,7 +289,7 @@ Status apply_pathology(BakedAsset& asset, const Pathology& p) {
 bool has_emphysema(const std::vector<std::string>& specs) {
   for (const std::string& spec : specs) {
     Result<Pathology> p = parse_pathology(spec);
-    if (p && p->kind == PathologyKind::emphysema) return true;
+    if (p && p->kind == PathologyKind::Emphysema) return true;
   }
   return false;
 }
@@ -304,7 +304,7 @@ Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& spec
     parsed.push_back(p.take());
   }
   // ARDS's pattern is fitted to the response and geometry the others leave, so it goes last.
-  std::stable_partition(parsed.begin(), parsed.end(), [](const Pathology& p) { return p.kind != PathologyKind::ards; });
+  std::stable_partition(parsed.begin(), parsed.end(), [](const Pathology& p) { return p.kind != PathologyKind::Ards; });
   for (const Pathology& p : parsed)
     if (Status s = apply_pathology(changed, p); !s) return s;
   asset = std::move(changed);

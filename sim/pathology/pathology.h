@@ -44,15 +44,15 @@
 
 namespace lungar::sim {
 
-enum class PathologyKind { pneumothorax, consolidation, emphysema, ards };
-enum class LungThird { upper, middle, lower };
+enum class PathologyKind { Pneumothorax, Consolidation, Emphysema, Ards };
+enum class LungThird { Upper, Middle, Lower };
 
-inline constexpr EnumNames<PathologyKind, 4> kPathologyKindNames{{{{PathologyKind::pneumothorax, "pneumothorax"},
-                                                                   {PathologyKind::consolidation, "consolidation"},
-                                                                   {PathologyKind::emphysema, "emphysema"},
-                                                                   {PathologyKind::ards, "ards"}}}};
+inline constexpr EnumNames<PathologyKind, 4> kPathologyKindNames{{{{PathologyKind::Pneumothorax, "pneumothorax"},
+                                                                   {PathologyKind::Consolidation, "consolidation"},
+                                                                   {PathologyKind::Emphysema, "emphysema"},
+                                                                   {PathologyKind::Ards, "ards"}}}};
 inline constexpr EnumNames<LungThird, 3> kLungThirdNames{
-    {{{LungThird::upper, "upper"}, {LungThird::middle, "middle"}, {LungThird::lower, "lower"}}}};
+    {{{LungThird::Upper, "upper"}, {LungThird::Middle, "middle"}, {LungThird::Lower, "lower"}}}};
 
 /// A collapsed lung's weight in the split of the breath, as a fraction of its healthy one: with the CT demo's
 /// 53 % right lung, 5 % of its weight is 6 % of the breath supine and 8 % lying on it.
@@ -69,11 +69,11 @@ inline constexpr double kTensionShiftMm = 20.0;
 inline constexpr double kMinPneumothoraxPercent = 1.0, kMaxPneumothoraxPercent = 90.0;
 
 struct Pathology {
-  PathologyKind kind = PathologyKind::pneumothorax;
+  PathologyKind kind = PathologyKind::Pneumothorax;
   std::string side;                     ///< the lung's name in the asset: "left" or "right" ("" emphysema: both)
   double percent = 0;                   ///< pneumothorax: the volume lost, percent
   bool tension = false;                 ///< pneumothorax: the mediastinum pushed over
-  LungThird region = LungThird::lower;  ///< consolidation: which third of the height
+  LungThird region = LungThird::Lower;  ///< consolidation: which third of the height
   double severity = 0;                  ///< emphysema, ards: 0 to 1
   std::string spec;                     ///< as the user wrote it
 };

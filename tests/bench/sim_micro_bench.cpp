@@ -58,7 +58,7 @@ void BM_ForceShExact(benchmark::State& state) {
   std::vector<float> force(a.lungs.size() * a.coefficients());
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::exact, turn(k++), force.data());
+    lungar::sim::force_sh(a, lungar::sim::ForceMode::Exact, turn(k++), force.data());
     benchmark::DoNotOptimize(force.data());
   }
 }
@@ -68,7 +68,7 @@ void BM_ForceShPaper(benchmark::State& state) {
   std::vector<float> force(a.lungs.size() * a.coefficients());
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::paper, turn(k++), force.data());
+    lungar::sim::force_sh(a, lungar::sim::ForceMode::Paper, turn(k++), force.data());
     benchmark::DoNotOptimize(force.data());
   }
 }
@@ -79,7 +79,7 @@ void BM_CpuEq7(benchmark::State& state) {
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(a.positions.size());
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::exact, turn(k), force.data());
+    lungar::sim::force_sh(a, lungar::sim::ForceMode::Exact, turn(k), force.data());
     lungar::sim::deform_eq7(a, force, lungar::sim::gravity_in_lung_frame(turn(k)), 250.0 + 0.01 * static_cast<double>(k),
                             positions);
     ++k;

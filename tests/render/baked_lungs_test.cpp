@@ -66,7 +66,7 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
     // Random forces of the physical force's size per coefficient.
     std::vector<float> physical(force.size());
-    sim::force_sh(a, sim::ForceMode::exact, Eigen::Quaterniond::Identity(), physical.data());
+    sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), physical.data());
     float scale = 0;
     for (float x : physical) scale = std::max(scale, std::abs(x));
     std::mt19937 rng(seed);
@@ -99,7 +99,7 @@ TEST_F(BakedLungsTest, UprightSilhouetteGrowsMostAtTheBase) {
   Renderer* renderer = &*renderer_;
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
-  sim::force_sh(a, sim::ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());  // upright
+  sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());  // upright
 
   // A narrow field (30 degrees at 700 mm: ~2.5 px per mm) so that millimetres of breathing show as pixels.
   constexpr int kW = 960, kH = 960;
@@ -255,7 +255,7 @@ TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
   ASSERT_TRUE(renderer);
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
-  sim::force_sh(a, sim::ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
+  sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
   const glm::vec3 colours[2] = {{0.45f, 0.60f, 0.95f}, {0.90f, 0.45f, 0.45f}};
   std::vector<LungFrame> lungs;
   for (std::size_t i = 0; i < a.lungs.size(); ++i) {

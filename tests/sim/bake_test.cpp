@@ -148,7 +148,7 @@ TEST(Deform, PositionsMoveAlongNormalsByTheirShareOfTheVolume) {
   const std::uint32_t c = a.coefficients();
   const Eigen::Vector3d g(0, 0, -1);
   std::vector<float> force(a.lungs.size() * c), d(a.vertex_count()), moved(3 * a.vertex_count());
-  force_sh(a, ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
+  force_sh(a, ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
   displacement_eq7(a, force, d);
   deform_eq7(a, force, g, 250.0, moved);
   for (std::uint32_t i = 0; i < a.vertex_count(); i += 97) {

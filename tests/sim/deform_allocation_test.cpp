@@ -29,8 +29,8 @@ TEST(Allocation, PerFrameDeformationAllocatesNothing) {
   const long before = lungar::testing::g_allocations.load();
   for (int frame = 0; frame < 20; ++frame) {
     const Eigen::Quaterniond q = axis_rotation(frame % 3, 0.1 * frame);
-    force_sh(a, ForceMode::exact, q, force.data());
-    force_sh(a, ForceMode::paper, q, force.data());
+    force_sh(a, ForceMode::Exact, q, force.data());
+    force_sh(a, ForceMode::Paper, q, force.data());
     deform_eq7(a, force, gravity_in_lung_frame(q), 10.0 * frame, positions);
     eq1.deform(gravity_in_lung_frame(q), 10.0 * frame, positions);
   }

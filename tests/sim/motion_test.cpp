@@ -197,7 +197,7 @@ TEST(SlidingModel, TheCpuEq1RowsFollowTheSlidingModel) {
   eq1.deform(kUpright, 500, moved1);
   const std::uint32_t c = out.asset.coefficients();
   std::vector<float> force(out.asset.lungs.size() * c);
-  force_sh(out.asset, ForceMode::exact, Eigen::Quaterniond::Identity(), force.data());
+  force_sh(out.asset, ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
   deform_eq7(out.asset, force, kUpright, 500, moved7);
   double num = 0, den = 0;
   for (std::size_t i = 0; i < moved1.size(); ++i) {

@@ -103,8 +103,8 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
   const BakedAsset healthy = test::sliding_bake().asset;
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
   const Breath before = breathe(healthy, 500);
-  for (LungThird third : {LungThird::lower, LungThird::upper}) {
-    const int t = third == LungThird::lower ? 0 : 2;
+  for (LungThird third : {LungThird::Lower, LungThird::Upper}) {
+    const int t = third == LungThird::Lower ? 0 : 2;
     const BakedAsset sick = with({std::string("consolidation:right:") + kLungThirdNames.name(third)});
     const Breath after = breathe(sick, 500);
     SCOPED_TRACE(kLungThirdNames.name(third));
@@ -139,12 +139,12 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
 TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
   auto p = parse_pathology("pneumothorax:left:25.5");
   ASSERT_TRUE(p) << p.error();
-  EXPECT_EQ(p->kind, PathologyKind::pneumothorax);
+  EXPECT_EQ(p->kind, PathologyKind::Pneumothorax);
   EXPECT_EQ(p->side, "left");
   EXPECT_DOUBLE_EQ(p->percent, 25.5);
   auto c = parse_pathology("consolidation:right:middle");
   ASSERT_TRUE(c) << c.error();
-  EXPECT_EQ(c->region, LungThird::middle);
+  EXPECT_EQ(c->region, LungThird::Middle);
   const std::pair<const char*, const char*> refused[] = {
       {"pneumothorax:right", "expected pneumothorax:SIDE:PERCENT"},
       {"pneumothorax:centre:30", "SIDE"},

@@ -138,13 +138,13 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
     const double dv = scripted_volume_ml(t);
     switch (work) {
       case CpuWork::ForceSh:
-        sim::force_sh(a, sim::ForceMode::exact, q, force.data());
+        sim::force_sh(a, sim::ForceMode::Exact, q, force.data());
         break;
       case CpuWork::ForceShArds:
-        sim::force_sh(ards, sim::ForceMode::exact, q, force.data());
+        sim::force_sh(ards, sim::ForceMode::Exact, q, force.data());
         break;
       case CpuWork::Eq7:
-        sim::force_sh(a, sim::ForceMode::exact, q, force.data());
+        sim::force_sh(a, sim::ForceMode::Exact, q, force.data());
         sim::deform_eq7(a, force, sim::gravity_in_lung_frame(q), dv, positions);
         break;
       case CpuWork::Eq1:

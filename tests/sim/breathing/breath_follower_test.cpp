@@ -155,10 +155,10 @@ TEST(BreathFollower, ALostSignalHandsOverWithoutAJumpAndIsPickedUpAgain) {
   }
   EXPECT_GT(biggest_before, 5.0) << "the signal's own steps are bigger than the handover's";
   const auto state_at = [&](double t) { return run.state[static_cast<std::size_t>(std::lround(t / 0.01))]; };
-  EXPECT_EQ(state_at(39), BreathState::following);
-  EXPECT_NE(state_at(41), BreathState::following);
-  EXPECT_EQ(state_at(50), BreathState::model);
-  EXPECT_EQ(state_at(67), BreathState::following) << "within 12 s of the return";
+  EXPECT_EQ(state_at(39), BreathState::Following);
+  EXPECT_NE(state_at(41), BreathState::Following);
+  EXPECT_EQ(state_at(50), BreathState::Model);
+  EXPECT_EQ(state_at(67), BreathState::Following) << "within 12 s of the return";
 }
 
 TEST(BreathTrace, AMarkerIsReadAlongItsBreathingAxisInhaleUp) {
@@ -215,7 +215,7 @@ TEST(BreathFollower, AVolumeSourceGivesItsOwnMillilitresNotTheTidalVolumesScale)
     scaled.add(t, v);
     const FollowerOutput o = f.at(t, 0.0), so = scaled.at(t, 0.0);
     if (t > 20.0 && t < 32.0) {
-      ASSERT_EQ(o.state, BreathState::following) << t;
+      ASSERT_EQ(o.state, BreathState::Following) << t;
       peak = std::max(peak, o.dv_ml);
       scaled_peak = std::max(scaled_peak, so.dv_ml);
     }

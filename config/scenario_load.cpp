@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
+#include "config/base/number_text.h"
 #include "config/toml_section.h"
 
 namespace lungar::config {
@@ -17,12 +17,6 @@ namespace {
 
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMaxScenarioS = 86400.0;  // a day
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 // The spellings below must match sim/breathing (pv_curve.cpp, orientation.cpp); config/ does not depend on sim/,
 // and tests/platform/scenario_adapter_test.cpp checks that every name here is known there.
@@ -46,7 +40,8 @@ bool read_rotation(TomlSection& s, std::array<double, 4>& out) {
   if (std::isnan(q[0])) return false;
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (std::abs(norm - 1.0) > 1e-3) {
-    s.fail("rotation_wxyz", "expected a unit quaternion [w, x, y, z] (norm 1 within 1e-3), got norm " + fmt(norm));
+    s.fail("rotation_wxyz",
+           "expected a unit quaternion [w, x, y, z] (norm 1 within 1e-3), got norm " + number_text(norm));
   }
   out = q;
   return true;
@@ -95,8 +90,8 @@ ScenarioEvent read_event(TomlSection s, const toml::table& t, int index) {
   auto required = [&](std::string_view key, double lo, double hi, std::string_view unit, const char* what) {
     const std::optional<double> v = optional_number(s, key, lo, hi, unit);
     if (!v) {
-      s.fail(key, std::string("expected ") + what + ", a number in [" + fmt(lo) + ", " + fmt(hi) + "] " +
-                      std::string(unit) + ", got nothing");
+      s.fail(key, std::string("expected ") + what + ", a number in [" + number_text(lo) + ", " + number_text(hi) +
+                      "] " + std::string(unit) + ", got nothing");
     }
     return *v;
   };
@@ -165,27 +160,28 @@ void check_timeline(const Scenario& sc) {
   bool ventilated = false;
   for (const ScenarioEvent& e : sc.events) {
     if (e.at_s > sc.duration_s) {
-      fail_event(sc, e, "at_s", "expected a time within the scenario's duration_s (" + fmt(sc.duration_s) +
-                                    " s), got " + fmt(e.at_s) + " s");
+      fail_event(sc, e, "at_s",
+                 "expected a time within the scenario's duration_s (" + number_text(sc.duration_s) + " s), got " +
+                     number_text(e.at_s) + " s");
     }
     if (e.kind == ScenarioEventKind::Turn) {
       if (last_turn && last_turn->at_s + last_turn->over_s > e.at_s) {
         fail_event(sc, e, "at_s",
-                   "expected turns that do not overlap, got a turn at " + fmt(e.at_s) + " s while the turn of event[" +
-                       std::to_string(last_turn->index) + "] (line " + std::to_string(last_turn->line) +
-                       ") runs from " + fmt(last_turn->at_s) + " s to " + fmt(last_turn->at_s + last_turn->over_s) +
-                       " s");
+                   "expected turns that do not overlap, got a turn at " + number_text(e.at_s) +
+                       " s while the turn of event[" + std::to_string(last_turn->index) + "] (line " +
+                       std::to_string(last_turn->line) + ") runs from " + number_text(last_turn->at_s) + " s to " +
+                       number_text(last_turn->at_s + last_turn->over_s) + " s");
       }
       last_turn = &e;
     }
     if (e.kind == ScenarioEventKind::Hold || e.kind == ScenarioEventKind::Apnoea) {
       if (last_pause && last_pause->at_s + last_pause->duration_s > e.at_s) {
         fail_event(sc, e, "at_s",
-                   std::string("expected holds and apnoeas that do not overlap, got a ") + to_string(e.kind) +
-                       " at " + fmt(e.at_s) + " s while the " + to_string(last_pause->kind) + " of event[" +
+                   std::string("expected holds and apnoeas that do not overlap, got a ") + to_string(e.kind) + " at " +
+                       number_text(e.at_s) + " s while the " + to_string(last_pause->kind) + " of event[" +
                        std::to_string(last_pause->index) + "] (line " + std::to_string(last_pause->line) +
-                       ") lasts from " + fmt(last_pause->at_s) + " s to " +
-                       fmt(last_pause->at_s + last_pause->duration_s) + " s");
+                       ") lasts from " + number_text(last_pause->at_s) + " s to " +
+                       number_text(last_pause->at_s + last_pause->duration_s) + " s");
       }
       last_pause = &e;
     }

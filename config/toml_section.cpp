@@ -1,6 +1,7 @@
 /// @file toml_section.cpp
 /// @brief Typed, range-checked reads of TOML tables with messages that name file, line and key.
 #include "config/toml_section.h"
+#include "config/base/number_text.h"
 
 #include <cmath>
 #include <filesystem>
@@ -12,14 +13,8 @@ namespace lungar::config {
 
 namespace {
 
-std::string format_number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 std::string range_text(double lo, double hi, std::string_view unit) {
-  std::string r = "[" + format_number(lo) + ", " + format_number(hi) + "]";
+  std::string r = "[" + number_text(lo) + ", " + number_text(hi) + "]";
   if (!unit.empty()) r += " " + std::string(unit);
   return r;
 }
@@ -54,7 +49,8 @@ std::string describe(const toml::node& node) {
   switch (node.type()) {
     case toml::node_type::string: return "the string \"" + std::string(node.as_string()->get()) + "\"";
     case toml::node_type::integer: return "the integer " + std::to_string(node.as_integer()->get());
-    case toml::node_type::floating_point: return "the number " + format_number(node.as_floating_point()->get());
+    case toml::node_type::floating_point:
+      return "the number " + number_text(node.as_floating_point()->get());
     case toml::node_type::boolean: return node.as_boolean()->get() ? "true" : "false";
     case toml::node_type::table: return "a table";
     case toml::node_type::array: return "an array of " + std::to_string(node.as_array()->size());

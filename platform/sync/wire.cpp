@@ -1,6 +1,7 @@
 /// @file wire.cpp
 /// @brief Checked conversions between the classroom's IDL types and lungar's.
 #include "platform/sync/wire.h"
+#include "config/base/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,6 @@
 namespace lungar::platform::sync {
 
 namespace {
-
-std::string num(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
 
 /// Bits of ScenarioEvent::set: which optional fields of a change carry a value.
 enum SetBit : std::uint32_t {
@@ -35,7 +30,7 @@ constexpr std::uint8_t kEventKindCount = 6;  // sim::EventKind's values
 
 Status finite(const char* topic, const char* field, double v) {
   if (std::isfinite(v)) return ok();
-  return fail(std::string(topic) + ": " + field + ": expected a finite number, got " + num(v));
+  return fail(std::string(topic) + ": " + field + ": expected a finite number, got " + number_text(v));
 }
 
 /// BreathingParams and BreathingState carry the same fields by the same names (the enums as bytes on the wire),
@@ -68,7 +63,7 @@ Result<SharedPose> from_wire(const lungar_sync_PatientPose& s) {
   for (int i = 0; i < 3; ++i) {
     if (!std::isfinite(position[i]) || std::abs(position[i]) > kMaxPositionMm) {
       return fail(std::string(kTopic) + ": position_mm[" + std::to_string(i) + "]: expected a finite number within " +
-                  num(kMaxPositionMm) + " mm, got " + num(position[i]));
+                  number_text(kMaxPositionMm) + " mm, got " + number_text(position[i]));
     }
     p.position_mm[i] = position[i];
   }
@@ -79,7 +74,7 @@ Result<SharedPose> from_wire(const lungar_sync_PatientPose& s) {
   }
   if (std::abs(std::sqrt(norm_sq) - 1.0) > kQuaternionNormTolerance) {
     return fail(std::string(kTopic) + ": orientation_wxyz: expected a unit quaternion (norm 1 +- " +
-                num(kQuaternionNormTolerance) + "), got norm " + num(std::sqrt(norm_sq)));
+                number_text(kQuaternionNormTolerance) + "), got norm " + number_text(std::sqrt(norm_sq)));
   }
   if (s.measured_ns <= 0) return fail(std::string(kTopic) + ": measured_ns: expected a time after the epoch");
   p.measured_ns = s.measured_ns;
@@ -121,8 +116,8 @@ Result<std::vector<sim::Event>> from_wire(const lungar_sync_ScenarioEvents& s) {
     const lungar_sync_ScenarioEvent& w = s.events._buffer[i];
     const std::string where = "lungar_scenario_events: events[" + std::to_string(i) + "]";
     if (!std::isfinite(w.t_s) || w.t_s < previous) {
-      return fail(where + ": t_s: expected a finite time not before the previous event's " + num(previous) +
-                  " s, got " + num(w.t_s));
+      return fail(where + ": t_s: expected a finite time not before the previous event's " + number_text(previous) +
+                  " s, got " + number_text(w.t_s));
     }
     previous = w.t_s;
     if (w.kind >= kEventKindCount) return fail(where + ": kind: expected 0..5, got " + std::to_string(w.kind));
@@ -135,7 +130,7 @@ Result<std::vector<sim::Event>> from_wire(const lungar_sync_ScenarioEvents& s) {
     }
     for (double v : {w.rate_bpm, w.ie_ratio, w.tidal_volume_ml, w.ventilator_tau_s, w.peep_cmh2o, w.sigh_volume_ml,
                      w.transition_s}) {
-      if (!std::isfinite(v)) return fail(where + ": expected finite numbers, got " + num(v));
+      if (!std::isfinite(v)) return fail(where + ": expected finite numbers, got " + number_text(v));
     }
     sim::Event e;
     e.t_s = w.t_s;

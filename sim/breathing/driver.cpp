@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "config/base/enum_names.h"
+#include "config/base/number_text.h"
 
 namespace lungar::sim {
 
@@ -15,13 +15,6 @@ namespace {
 double smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
   return x * x * (3.0 - 2.0 * x);
-}
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
 }
 
 /// A hold stops (and restarts) the cycle over this time, s: fast, but without a step in the flow.
@@ -189,12 +182,12 @@ double BreathingDriver::transition_for(const Pattern& from, const Pattern& to, d
 
 Status BreathingDriver::apply(const Event& e) {
   const Segment& back = segments_.back();
-  const std::string what = std::string(to_string(e.kind)) + " at " + fmt(e.t_s) + " s: ";
+  const std::string what = std::string(to_string(e.kind)) + " at " + number_text(e.t_s) + " s: ";
   if (!std::isfinite(e.t_s) || e.t_s < back.t0) {
-    return fail(what + "expected a time at or after the last event (" + fmt(back.t0) + " s)");
+    return fail(what + "expected a time at or after the last event (" + number_text(back.t0) + " s)");
   }
   if (!(e.transition_s < 0 || (std::isfinite(e.transition_s) && e.transition_s <= 600.0))) {
-    return fail(what + "transition_s: expected [0, 600] s, got " + fmt(e.transition_s));
+    return fail(what + "transition_s: expected [0, 600] s, got " + number_text(e.transition_s));
   }
   const double phi = phase_at(back, e.t_s);
   Pattern before = back.pattern;
@@ -219,7 +212,7 @@ Status BreathingDriver::apply(const Event& e) {
       to.sigh_breath = static_cast<std::int64_t>(std::floor(phi)) + 1;
       to.sigh_volume_ml = e.sigh_volume_ml > 0 ? e.sigh_volume_ml : 2.0 * to.params.tidal_volume_ml;
       if (!(std::isfinite(to.sigh_volume_ml) && to.sigh_volume_ml <= 3000.0)) {
-        return fail(what + "volume_ml: expected (0, 3000] mL, got " + fmt(to.sigh_volume_ml));
+        return fail(what + "volume_ml: expected (0, 3000] mL, got " + number_text(to.sigh_volume_ml));
       }
       break;
     case EventKind::HoldStart: to.held = true; break;

@@ -1,11 +1,11 @@
 /// @file orientation.cpp
 /// @brief Named patient poses and eased slerp between them.
 #include "sim/breathing/orientation.h"
+#include "config/base/number_text.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace lungar::sim {
 
@@ -20,12 +20,6 @@ constexpr PoseName kPoseNames[] = {{Pose::Upright, "upright"},
                                    {Pose::Prone, "prone"},
                                    {Pose::LeftLateral, "left_lateral"},
                                    {Pose::RightLateral, "right_lateral"}};
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 
 }  // namespace
 
@@ -72,17 +66,18 @@ Result<OrientationTrack> OrientationTrack::create(const Eigen::Quaterniond& star
   for (std::size_t k = 0; k < turns.size(); ++k) {
     const Turn& t = turns[k];
     if (!(std::isfinite(t.t_s) && t.t_s >= 0)) {
-      return fail("turn at " + fmt(t.t_s) + " s: expected a start time >= 0 s");
+      return fail("turn at " + number_text(t.t_s) + " s: expected a start time >= 0 s");
     }
     if (!(std::isfinite(t.duration_s) && t.duration_s > 0)) {
-      return fail("turn at " + fmt(t.t_s) + " s: expected a duration > 0 s, got " + fmt(t.duration_s));
+      return fail("turn at " + number_text(t.t_s) + " s: expected a duration > 0 s, got " + number_text(t.duration_s));
     }
     if (std::abs(t.target.norm() - 1.0) > 1e-6) {
-      return fail("turn at " + fmt(t.t_s) + " s: expected a unit quaternion as target");
+      return fail("turn at " + number_text(t.t_s) + " s: expected a unit quaternion as target");
     }
     if (k > 0 && turns[k - 1].t_s + turns[k - 1].duration_s > t.t_s) {
-      return fail("turn at " + fmt(t.t_s) + " s: expected turns that do not overlap, but the turn at " +
-                fmt(turns[k - 1].t_s) + " s runs until " + fmt(turns[k - 1].t_s + turns[k - 1].duration_s) + " s");
+      return fail("turn at " + number_text(t.t_s) + " s: expected turns that do not overlap, but the turn at " +
+                  number_text(turns[k - 1].t_s) + " s runs until " +
+                  number_text(turns[k - 1].t_s + turns[k - 1].duration_s) + " s");
     }
   }
   OrientationTrack track;

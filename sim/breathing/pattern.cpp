@@ -2,20 +2,13 @@
 /// @brief Spontaneous breathing by the equation of motion, the ventilator's pressure waveform, and the amplitudes
 ///        that meet a tidal volume.
 #include "sim/breathing/pattern.h"
+#include "config/base/number_text.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace lungar::sim {
 
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 /// Ventilator in periodic steady state, pressures relative to the low pressure L: during inspiration the alveolar
 /// pressure rises toward L + D from x, reaching y; during expiration it falls back toward L from y to x.
@@ -55,13 +48,16 @@ double solve_vent_drive(const BreathingParams& p, const PvCurve& curve, double l
 
 Status validate(const BreathingParams& p) {
   auto bad = [](double v, double lo, double hi) { return !(std::isfinite(v) && v >= lo && v <= hi); };
-  if (bad(p.rate_bpm, 2.0, 60.0)) return fail("rate_bpm: expected [2, 60] breaths/min, got " + fmt(p.rate_bpm));
-  if (bad(p.ie_ratio, 0.1, 4.0)) return fail("ie_ratio: expected [0.1, 4], got " + fmt(p.ie_ratio));
+  if (bad(p.rate_bpm, 2.0, 60.0))
+    return fail("rate_bpm: expected [2, 60] breaths/min, got " + number_text(p.rate_bpm, 4));
+  if (bad(p.ie_ratio, 0.1, 4.0)) return fail("ie_ratio: expected [0.1, 4], got " + number_text(p.ie_ratio, 4));
   if (bad(p.tidal_volume_ml, 50.0, 3000.0)) {
-    return fail("tidal_volume_ml: expected [50, 3000] mL, got " + fmt(p.tidal_volume_ml));
+    return fail("tidal_volume_ml: expected [50, 3000] mL, got " + number_text(p.tidal_volume_ml, 4));
   }
-  if (bad(p.ventilator_tau_s, 0.05, 5.0)) return fail("tau_s: expected [0.05, 5] s, got " + fmt(p.ventilator_tau_s));
-  if (bad(p.peep_cmh2o, 0.0, 20.0)) return fail("peep_cmh2o: expected [0, 20] cmH2O, got " + fmt(p.peep_cmh2o));
+  if (bad(p.ventilator_tau_s, 0.05, 5.0))
+    return fail("tau_s: expected [0.05, 5] s, got " + number_text(p.ventilator_tau_s, 4));
+  if (bad(p.peep_cmh2o, 0.0, 20.0))
+    return fail("peep_cmh2o: expected [0, 20] cmH2O, got " + number_text(p.peep_cmh2o, 4));
   return ok();
 }
 
@@ -74,9 +70,10 @@ Status solve(Pattern& pat) {
   pat.p_low_cmh2o = low;
 
   auto reach_error = [&](const char* what, double wanted) {
-    return std::string(what) + ": expected at most " + fmt(max_tidal_volume_ml(preset, low)) + " mL on the " +
-           std::string(preset.name) + " curve (its volume at " + fmt(kMaxTranspulmonaryCmH2O) +
-           " cmH2O less that at " + fmt(low) + " cmH2O), got " + fmt(wanted) + " mL";
+    return std::string(what) + ": expected at most " + number_text(max_tidal_volume_ml(preset, low), 4) +
+           " mL on the " + std::string(preset.name) + " curve (its volume at " +
+           number_text(kMaxTranspulmonaryCmH2O, 4) + " cmH2O less that at " + number_text(low, 4) + " cmH2O), got " +
+           number_text(wanted, 4) + " mL";
   };
   // Spontaneous: V(low + swing) - V(low) = V_T, solved in closed form by the inverse of the sigmoid.
   auto spontaneous_swing = [&](double v_t) {

@@ -11,18 +11,17 @@
 #include "drivers/hid/hid_hotplug.h"
 #include "drivers/hid/hid_interface.h"
 #include "drivers/tracker/tracker_core.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
 namespace {
 
-constexpr std::int64_t kMs = 1'000'000;
-constexpr std::int64_t kMaxBackoffNs = 4000 * kMs;
-
 class HidDevice final : public TrackerDevice {
  public:
   explicit HidDevice(const TrackerConfig& s)
-      : hid_(s.hid), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)),
+      : hid_(s.hid),
+        backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kNsPerMs)),
         read_timeout_ms_(std::max(1, static_cast<int>(s.hid.read_timeout_ms))) {}
 
   ~HidDevice() override { close(); }
@@ -30,7 +29,7 @@ class HidDevice final : public TrackerDevice {
   void run(TrackerCore& core, std::stop_token stop) override {
     if (!hotplug_.start(hid_.vendor_id, hid_.product_id)) {
       core.log(-1, "hid: hot-plug notifications unavailable (%s); re-enumerating with back-off from %lld ms",
-               hotplug_.why().c_str(), static_cast<long long>(backoff0_ns_ / kMs));
+               hotplug_.why().c_str(), static_cast<long long>(backoff0_ns_ / kNsPerMs));
     }
     const auto length = static_cast<std::size_t>(core.layout().length);
     std::array<std::uint8_t, kTrkMaxReport> buf{};
@@ -57,7 +56,7 @@ class HidDevice final : public TrackerDevice {
         } else {
           core.set_state(TrackerState::Disconnected);
           next_attempt = monotonic_ns() + backoff;
-          backoff = std::min(backoff * 2, kMaxBackoffNs);
+          backoff = std::min(backoff * 2, kMaxReopenBackoffNs);
         }
         continue;
       }

@@ -10,13 +10,12 @@
 #include "drivers/igtl/igtl_interface.h"
 #include "drivers/igtl/tcp_socket.h"
 #include "drivers/tracker/tracker_core.h"
+#include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
 namespace {
 
-constexpr std::int64_t kMs = 1'000'000;
-constexpr std::int64_t kMaxBackoffNs = 4000 * kMs;
 constexpr int kPollMs = 10;  ///< longest wait on the socket, so that stop and staleness are noticed
 /// Bodies of types lungar does not read (images from Slicer) are skipped; beyond this the stream is garbage.
 constexpr std::uint64_t kMaxSkip = 1ull << 30;
@@ -24,7 +23,7 @@ constexpr std::uint64_t kMaxSkip = 1ull << 30;
 class IgtlDevice final : public TrackerDevice {
  public:
   IgtlDevice(const TrackerConfig& s, const IgtlLayout& layout)
-      : igtl_(s.igtl), layout_(layout), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kMs)) {}
+      : igtl_(s.igtl), layout_(layout), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kNsPerMs)) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     std::int64_t backoff = backoff0_ns_, next_attempt = 0;
@@ -46,12 +45,12 @@ class IgtlDevice final : public TrackerDevice {
       if (!s) {
         if (!failure_logged) {  // once per outage: a server that is not up yet is no flood of lines
           core.log(-1, "igtl: %s; retrying with back-off from %lld ms", s.error().c_str(),
-                   static_cast<long long>(backoff0_ns_ / kMs));
+                   static_cast<long long>(backoff0_ns_ / kNsPerMs));
           failure_logged = true;
         }
         core.set_state(TrackerState::Disconnected);
         next_attempt = monotonic_ns() + backoff;
-        backoff = std::min(backoff * 2, kMaxBackoffNs);
+        backoff = std::min(backoff * 2, kMaxReopenBackoffNs);
         continue;
       }
       sock_ = s.take();

@@ -10,11 +10,9 @@
 
 namespace lungar::platform {
 
-namespace {
-
-void say(const std::string& m) { std::fprintf(stderr, "lungar calibrate-display: %s\n", m.c_str()); }
-
-}  // namespace
+void calibrate_display_say(const std::string& message) {
+  std::fprintf(stderr, "lungar calibrate-display: %s\n", message.c_str());
+}
 
 std::string saved_alignments_path(const CalibrateDisplayOptions& o) {
   if (!o.save_alignments.empty()) return o.save_alignments;
@@ -28,12 +26,13 @@ int fit_and_report(const std::array<std::vector<Alignment>, 2>& alignments, cons
   std::array<EyeCalibration, 2> eyes;
   for (int e = 0; e < 2; ++e) {
     auto fitted = calibrate_eye(alignments[e]);
-    if (!fitted) return say(source + ": " + (e == 0 ? "left" : "right") + " eye: " + fitted.error()), 2;
+    if (!fitted)
+      return calibrate_display_say(source + ": " + (e == 0 ? "left" : "right") + " eye: " + fitted.error()), 2;
     eyes[e] = *fitted;
   }
-  if (Status s = write_display_calibration_toml(o.out_path, eyes); !s) return say(s.error()), 1;
+  if (Status s = write_display_calibration_toml(o.out_path, eyes); !s) return calibrate_display_say(s.error()), 1;
   if (!o.report_json.empty()) {
-    if (Status s = write_display_calibration_json(o.report_json, eyes); !s) return say(s.error()), 1;
+    if (Status s = write_display_calibration_json(o.report_json, eyes); !s) return calibrate_display_say(s.error()), 1;
   }
   for (int e = 0; e < 2; ++e) {
     const EyeCalibration& c = eyes[e];
@@ -50,12 +49,13 @@ int fit_and_report(const std::array<std::vector<Alignment>, 2>& alignments, cons
 int run_calibrate_display(const CalibrateDisplayOptions& o) {
   if (o.alignments_csv.empty()) return run_spaam_calibration(o);
   if (!o.save_alignments.empty() || o.stylus_tip_mm || o.fiducial_mm || o.grid != kSpaamGridSide) {
-    return say("--save-alignments, --stylus-tip-mm, --fiducial-mm and --grid apply to the interactive way "
+    return calibrate_display_say(
+               "--save-alignments, --stylus-tip-mm, --fiducial-mm and --grid apply to the interactive way "
                "(without --alignments)"),
            2;
   }
   auto read = read_alignments_csv(o.alignments_csv);
-  if (!read) return say(read.error()), 2;
+  if (!read) return calibrate_display_say(read.error()), 2;
   return fit_and_report(*read, o, o.alignments_csv);
 }
 

@@ -31,6 +31,9 @@ struct CalibrateDisplayOptions {
 /// Where the interactive way keeps its alignments: --save-alignments, else `<out without .toml>-alignments.csv`.
 std::string saved_alignments_path(const CalibrateDisplayOptions& o);
 
+/// One line on stderr as the command says it: "lungar calibrate-display: MESSAGE".
+void calibrate_display_say(const std::string& message);
+
 /// Fits both eyes, prints each eye's reprojection RMS and centre, writes the TOML (and the report); nothing is
 /// written when an eye is refused (the error names `source`, where the alignments came from). The exit code.
 int fit_and_report(const std::array<std::vector<Alignment>, 2>& alignments, const CalibrateDisplayOptions& o,

@@ -20,8 +20,6 @@ namespace lungar::platform {
 
 namespace {
 
-void say_line(const std::string& m) { std::fprintf(stderr, "lungar calibrate-display: %s\n", m.c_str()); }
-
 /// One key's effect on the session; the note the screen shows after it.
 std::string apply_key(char key, SpaamSession& session, const SpaamIo& io) {
   if (key == '\b') return session.undo() ? "undone: the last alignment is dropped" : "nothing to undo";
@@ -100,21 +98,24 @@ int gather_and_fit(const CalibrateDisplayOptions& o, SpaamSession& session, cons
 }
 
 int run_spaam_calibration(const CalibrateDisplayOptions& o) {
-  if (o.out_path.empty()) return say_line("--out: expected the TOML to write [hmd.display_calibration] to"), 2;
-  if (o.stylus_tip_mm && o.fiducial_mm) return say_line("expected --stylus-tip-mm or --fiducial-mm, not both"), 2;
-  if (o.grid < 3 || o.grid > 10) return say_line("--grid: expected 3 to 10, got " + std::to_string(o.grid)), 2;
+  if (o.out_path.empty())
+    return calibrate_display_say("--out: expected the TOML to write [hmd.display_calibration] to"), 2;
+  if (o.stylus_tip_mm && o.fiducial_mm)
+    return calibrate_display_say("expected --stylus-tip-mm or --fiducial-mm, not both"), 2;
+  if (o.grid < 3 || o.grid > 10)
+    return calibrate_display_say("--grid: expected 3 to 10, got " + std::to_string(o.grid)), 2;
   auto settings = spaam_settings(o);
-  if (!settings) return say_line(settings.error()), 2;
+  if (!settings) return calibrate_display_say(settings.error()), 2;
   drivers::TrackerOptions topts;
   topts.log = [](const std::string& line) { log_line("tracker", line); };
   auto tracker = drivers::make_tracker(settings->trackers, topts);
-  if (!tracker) return say_line("tracker: " + tracker.error()), 2;
+  if (!tracker) return calibrate_display_say("tracker: " + tracker.error()), 2;
   const auto& tip = settings->trackers.stylus.tip_offset_mm;
   SpaamPoint point{drivers::Role::Stylus, o.stylus_tip_mm.value_or(Eigen::Vector3d(tip[0], tip[1], tip[2]))};
   if (o.fiducial_mm) point = {drivers::Role::Patient, *o.fiducial_mm};
-  auto output = open_output(*settings, say_line);
-  if (!output) return say_line(output.error()), 2;
-  say_line("output: " + (*output)->describe() + "; tracker: " + (*tracker)->describe());
+  auto output = open_output(*settings, calibrate_display_say);
+  if (!output) return calibrate_display_say(output.error()), 2;
+  calibrate_display_say("output: " + (*output)->describe() + "; tracker: " + (*tracker)->describe());
   SpaamSession session(settings->hmd.eye_width_px, settings->hmd.eye_height_px, point, o.grid);
   SpaamScreen screen;
   FrameOutput& out = **output;
@@ -129,7 +130,7 @@ int run_spaam_calibration(const CalibrateDisplayOptions& o) {
   io.draw = [&](const SpaamSession& s, const std::string& note) {
     return draw_spaam_frame(out, screen, settings->hmd, s, note);
   };
-  io.say = say_line;
+  io.say = calibrate_display_say;
   return gather_and_fit(o, session, io);
 }
 

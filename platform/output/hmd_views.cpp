@@ -5,19 +5,9 @@
 #include <Eigen/Geometry>
 
 #include "platform/registration/display_calibration.h"
+#include "platform/runtime/gl_math.h"
 
 namespace lungar::platform {
-
-namespace {
-
-glm::mat4 to_glm(const Eigen::Matrix4d& m) {
-  glm::mat4 g;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) g[c][r] = static_cast<float>(m(r, c));
-  return g;
-}
-
-}  // namespace
 
 render::HmdGeometry::CalibratedEye calibrated_eye(const std::array<double, 12>& p_sensor, const HmdSettings& s) {
   // The runtime's head frame (OpenGL: +y up, -z forward) sits at head_to_eye_mm in the sensor's frame, turned

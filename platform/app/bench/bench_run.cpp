@@ -86,7 +86,7 @@ json bake_json(const BakeRecord& r) {
   return j;
 }
 
-void say(const std::string& line) { log_line("bench: " + line); }
+void bench_say(const std::string& line) { log_line("bench: " + line); }
 
 /// One run's state: the output context, the options, the typed targets and the JSON being filled.
 class Run {
@@ -104,8 +104,8 @@ class Run {
     if (on("fig6") && (rc_ = coefficients())) return rc_;
     out_["targets"] = targets_.to_json();
     for (const auto& [name, t] : out_["targets"].items()) {
-      say("target " + name + ": " + std::to_string(t["value"].get<double>()) +
-          (t["met"].get<bool>() ? " (met)" : " (NOT met)"));
+      bench_say("target " + name + ": " + std::to_string(t["value"].get<double>()) +
+                (t["met"].get<bool>() ? " (met)" : " (NOT met)"));
     }
     const SystemInfo end = read_system_info();
     out_["system"]["load_avg_end"] = end.load_avg;
@@ -113,7 +113,7 @@ class Run {
     if (Status written = write_file_atomically(o_.json_path, out_.dump(2) + "\n"); !written) {
       return error(written.error());
     }
-    say("wrote " + o_.json_path);
+    bench_say("wrote " + o_.json_path);
     return 0;
   }
 
@@ -143,8 +143,9 @@ class Run {
                         {"default_point_size_px", 5},  {"head_distance_mm", kHeadDistanceMm},
                         {"coeff_storage", render::to_string(o_.storage)}};
     out_["paper_table2_fps"] = paper_table2();
-    say("renderer: " + context_->describe());
-    say("cpu: " + sys.cpu_model + ", " + std::to_string(sys.cores) + " cores, load " + std::to_string(sys.load_avg[0]));
+    bench_say("renderer: " + context_->describe());
+    bench_say("cpu: " + sys.cpu_model + ", " + std::to_string(sys.cores) + " cores, load " +
+              std::to_string(sys.load_avg[0]));
   }
 
   /// Loads (or bakes) an asset, records its bake and uploads it as a scene; nullptr after printing the error.
@@ -155,8 +156,9 @@ class Run {
       return nullptr;
     }
     if (baked_.insert(key_text(key)).second) out_["bake"].push_back(bake_json(got->record));
-    say("asset: " + std::to_string(got->asset.vertex_count()) + " nodes, " + std::to_string(got->asset.coefficients()) +
-        " coefficients" + (got->record.known ? ", baked in " + std::to_string(got->record.bake_s) + " s" : ""));
+    bench_say("asset: " + std::to_string(got->asset.vertex_count()) + " nodes, " +
+              std::to_string(got->asset.coefficients()) + " coefficients" +
+              (got->record.known ? ", baked in " + std::to_string(got->record.bake_s) + " s" : ""));
     auto s = BenchScene::create(context_, std::move(got->asset), "bench " + key_text(key),
                                 {.storage = o_.storage});
     if (!s) {
@@ -176,7 +178,7 @@ class Run {
     char line[200];
     std::snprintf(line, sizeof line, "%-34s %8.2f ms  %7.1f FPS  (reps %.2f..%.2f, load %.1f)", label.c_str(),
                   r->stats.median_ms, r->stats.fps(), r->stats.min_ms, r->stats.max_ms, r->load_1min);
-    say(line);
+    bench_say(line);
     if (median_ms) *median_ms = r->stats.median_ms;
     json j = config_json(c);
     j.update(stats_json(r->stats));
@@ -231,7 +233,7 @@ class Run {
       j[key].erase("fps");
       if (work == CpuWork::Eq7) eq7 = st.median_ms;
       if (work == CpuWork::Eq1) eq1 = st.median_ms;
-      say(std::string("cpu ") + key + ": " + std::to_string(st.median_ms) + " ms");
+      bench_say(std::string("cpu ") + key + ": " + std::to_string(st.median_ms) + " ms");
     }
     j["eq1_over_eq7"] = eq7 > 0 ? eq1 / eq7 : 0.0;
     targets_.eq1_over_eq7 = j["eq1_over_eq7"].get<double>();
@@ -318,7 +320,7 @@ class Run {
     char line[200];
     std::snprintf(line, sizeof line, "paired %-26s %8.2f / %.2f ms = %.3f (median of %zu interleaved ratios)",
                   key.c_str(), r->b.median_ms, r->a.median_ms, r->ratio_median, r->ratios.size());
-    say(line);
+    bench_say(line);
     out_["paired"][key] = {{"a", config_json(a)},
                            {"b", config_json(b)},
                            {"a_ms_p50", r->a.median_ms},
@@ -344,7 +346,7 @@ class Run {
     j["eq1"].erase("fps");
     targets_.eq1_over_eq7_denser = j["eq1_over_eq7"].get<double>();
     targets_.denser_nnz_per_row = nnz;
-    say("cpu eq1 (epsilon " + std::to_string(*o_.eq1_epsilon) + "): " + std::to_string(st.median_ms) + " ms");
+    bench_say("cpu eq1 (epsilon " + std::to_string(*o_.eq1_epsilon) + "): " + std::to_string(st.median_ms) + " ms");
     for (bool stereo : {false, true}) {
       json f = measure(*s, {Method::Cpu1, stereo}, std::string("table2 cpu_eq1 dense ") + (stereo ? "stereo" : "mono"));
       if (f.is_null()) return 1;
@@ -436,7 +438,7 @@ class Run {
   void snapshots(BenchScene& s) {
     for (DrawMode mode : {DrawMode::Points, DrawMode::Mesh}) {
       const std::string path = o_.snapshot_dir + "/bench-frame-" + render::to_string(mode) + ".png";
-      if (auto st = s.snapshot({Method::Gpu7, true, mode}, path); !st) say("snapshot: " + st.error());
+      if (auto st = s.snapshot({Method::Gpu7, true, mode}, path); !st) bench_say("snapshot: " + st.error());
     }
   }
 

@@ -150,7 +150,7 @@ class Run {
 
   /// Loads (or bakes) an asset, records its bake and uploads it as a scene; nullptr after printing the error.
   std::unique_ptr<BenchScene> scene(const AssetKey& key) {
-    auto got = load_or_bake(key, o_.asset_dir, o_.rebake && !baked_.count(key_text(key)), say);
+    auto got = load_or_bake(key, o_.asset_dir, o_.rebake && !baked_.count(key_text(key)), bench_say);
     if (!got) {
       error(got.error());
       return nullptr;
@@ -421,7 +421,7 @@ class Run {
     const bool has_base = !keys.empty() && keys.front().transfer_rows;
     for (const AssetKey& k : keys) {
       if (has_base && k.nodes == o_.nodes && k.bands == kBaseBands && !k.transfer_rows) continue;  // see acquire()
-      auto got = load_or_bake(k, o_.asset_dir, o_.rebake, say);
+      auto got = load_or_bake(k, o_.asset_dir, o_.rebake, bench_say);
       if (!got) return error(got.error());
     }
     return 0;

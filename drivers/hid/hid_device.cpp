@@ -10,6 +10,7 @@
 
 #include "drivers/hid/hid_hotplug.h"
 #include "drivers/hid/hid_interface.h"
+#include "drivers/tracker/reopen_backoff.h"
 #include "drivers/tracker/tracker_core.h"
 #include "drivers/tracker/tracker_device.h"
 
@@ -21,7 +22,7 @@ class HidDevice final : public TrackerDevice {
  public:
   explicit HidDevice(const TrackerConfig& s)
       : hid_(s.hid),
-        backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kNsPerMs)),
+        backoff_(s.reopen_backoff_ms),
         read_timeout_ms_(std::max(1, static_cast<int>(s.hid.read_timeout_ms))) {}
 
   ~HidDevice() override { close(); }
@@ -29,19 +30,17 @@ class HidDevice final : public TrackerDevice {
   void run(TrackerCore& core, std::stop_token stop) override {
     if (!hotplug_.start(hid_.vendor_id, hid_.product_id)) {
       core.log(-1, "hid: hot-plug notifications unavailable (%s); re-enumerating with back-off from %lld ms",
-               hotplug_.why().c_str(), static_cast<long long>(backoff0_ns_ / kNsPerMs));
+               hotplug_.why().c_str(), backoff_.first_ms());
     }
     const auto length = static_cast<std::size_t>(core.layout().length);
     std::array<std::uint8_t, kTrkMaxReport> buf{};
-    std::int64_t backoff = backoff0_ns_;
-    std::int64_t next_attempt = 0;
     std::int64_t next_presence_check = 0;
     bool ever_streamed = false;
     core.set_state(TrackerState::Disconnected);
     while (!stop.stop_requested()) {
       const std::int64_t now = monotonic_ns();
       if (!dev_) {
-        if (now < next_attempt && !hotplug_.take_event()) {
+        if (!backoff_.due(now) && !hotplug_.take_event()) {
           std::this_thread::sleep_for(std::chrono::milliseconds(read_timeout_ms_));
           core.tick(monotonic_ns());
           continue;
@@ -50,13 +49,12 @@ class HidDevice final : public TrackerDevice {
         if (open(core)) {
           if (ever_streamed) core.count_reconnect();
           ever_streamed = true;
-          backoff = backoff0_ns_;
+          backoff_.opened();
           core.count_open();  // stays "opening" until the first accepted report
-          next_presence_check = monotonic_ns() + backoff0_ns_;
+          next_presence_check = monotonic_ns() + backoff_.first_ns();
         } else {
           core.set_state(TrackerState::Disconnected);
-          next_attempt = monotonic_ns() + backoff;
-          backoff = std::min(backoff * 2, kMaxReopenBackoffNs);
+          backoff_.failed(monotonic_ns());
         }
         continue;
       }
@@ -65,7 +63,7 @@ class HidDevice final : public TrackerDevice {
       const std::int64_t t = monotonic_ns();
       if (n < 0) {
         core.log(-1, "hid: %s lost (read error); reopening", found_.path.c_str());
-        lose(core, next_attempt, backoff);
+        lose(core);
         continue;
       }
       if (n > 0) core.feed(std::span<const std::uint8_t>(buf.data(), static_cast<std::size_t>(n)), t);
@@ -73,10 +71,10 @@ class HidDevice final : public TrackerDevice {
       // A silent device may have been unplugged without the read failing (some kernels, emulated nodes):
       // when it says nothing, look for it in the enumeration now and then.
       if (core.state() != TrackerState::Streaming && t >= next_presence_check) {
-        next_presence_check = t + backoff0_ns_;
+        next_presence_check = t + backoff_.first_ns();
         if (!hid_probe(probe_settings())) {
           core.log(-1, "hid: %s is gone from the bus; reopening", found_.path.c_str());
-          lose(core, next_attempt, backoff);
+          lose(core);
         }
       }
     }
@@ -137,11 +135,10 @@ class HidDevice final : public TrackerDevice {
     return true;
   }
 
-  void lose(TrackerCore& core, std::int64_t& next_attempt, std::int64_t& backoff) {
+  void lose(TrackerCore& core) {
     close();
     core.set_state(TrackerState::Disconnected);
-    backoff = backoff0_ns_;
-    next_attempt = monotonic_ns() + backoff;
+    backoff_.lost(monotonic_ns());
   }
 
   void close() {
@@ -150,7 +147,7 @@ class HidDevice final : public TrackerDevice {
   }
 
   HidConfig hid_;
-  std::int64_t backoff0_ns_;
+  ReopenBackoff backoff_;
   int read_timeout_ms_;
   hid_device* dev_ = nullptr;
   HidFound found_;

@@ -9,6 +9,7 @@
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_interface.h"
 #include "drivers/igtl/tcp_socket.h"
+#include "drivers/tracker/reopen_backoff.h"
 #include "drivers/tracker/tracker_core.h"
 #include "drivers/tracker/tracker_device.h"
 
@@ -23,19 +24,18 @@ constexpr std::uint64_t kMaxSkip = 1ull << 30;
 class IgtlDevice final : public TrackerDevice {
  public:
   IgtlDevice(const TrackerConfig& s, const IgtlLayout& layout)
-      : igtl_(s.igtl), layout_(layout), backoff0_ns_(static_cast<std::int64_t>(s.reopen_backoff_ms * kNsPerMs)) {}
+      : igtl_(s.igtl), layout_(layout), backoff_(s.reopen_backoff_ms) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
-    std::int64_t backoff = backoff0_ns_, next_attempt = 0;
     bool ever_connected = false, failure_logged = false;
     core.set_state(TrackerState::Disconnected);
     while (!stop.stop_requested()) {
       if (sock_.is_open()) {
-        if (!read_step(core)) lose(core, next_attempt, backoff);
+        if (!read_step(core)) lose(core);
         core.tick(monotonic_ns());
         continue;
       }
-      if (monotonic_ns() < next_attempt) {
+      if (!backoff_.due(monotonic_ns())) {
         std::this_thread::sleep_for(std::chrono::milliseconds(kPollMs));
         core.tick(monotonic_ns());
         continue;
@@ -44,13 +44,11 @@ class IgtlDevice final : public TrackerDevice {
       auto s = TcpSocket::connect(igtl_.host, igtl_.port, static_cast<int>(igtl_.connect_timeout_ms));
       if (!s) {
         if (!failure_logged) {  // once per outage: a server that is not up yet is no flood of lines
-          core.log(-1, "igtl: %s; retrying with back-off from %lld ms", s.error().c_str(),
-                   static_cast<long long>(backoff0_ns_ / kNsPerMs));
+          core.log(-1, "igtl: %s; retrying with back-off from %lld ms", s.error().c_str(), backoff_.first_ms());
           failure_logged = true;
         }
         core.set_state(TrackerState::Disconnected);
-        next_attempt = monotonic_ns() + backoff;
-        backoff = std::min(backoff * 2, kMaxReopenBackoffNs);
+        backoff_.failed(monotonic_ns());
         continue;
       }
       sock_ = s.take();
@@ -58,7 +56,7 @@ class IgtlDevice final : public TrackerDevice {
       if (ever_connected) core.count_reconnect();
       ever_connected = true;
       failure_logged = false;
-      backoff = backoff0_ns_;
+      backoff_.opened();
       core.count_open();  // stays "opening" until the first pose
       have_ = 0;
       need_ = kIgtlHeaderBytes;
@@ -125,16 +123,15 @@ class IgtlDevice final : public TrackerDevice {
     core.feed_decoded(TrkSource::Igtl, message, decode_igtl_message(message, layout_), t_arrival_ns);
   }
 
-  void lose(TrackerCore& core, std::int64_t& next_attempt, std::int64_t& backoff) {
+  void lose(TrackerCore& core) {
     sock_.close();
     core.set_state(TrackerState::Disconnected);
-    backoff = backoff0_ns_;
-    next_attempt = monotonic_ns() + backoff;
+    backoff_.lost(monotonic_ns());
   }
 
   IgtlConfig igtl_;
   IgtlLayout layout_;
-  std::int64_t backoff0_ns_;
+  ReopenBackoff backoff_;
   TcpSocket sock_;
   std::array<std::uint8_t, kIgtlHeaderBytes + kIgtlMaxBody> buf_{};
   std::size_t have_ = 0, need_ = kIgtlHeaderBytes;

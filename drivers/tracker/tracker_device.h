@@ -4,7 +4,6 @@
 /// @ingroup drivers
 #pragma once
 
-#include <cstdint>
 #include <stop_token>
 #include <string>
 
@@ -13,11 +12,6 @@
 namespace lungar::drivers {
 
 class TrackerCore;
-
-/// A device that is lost is opened again after trackers.reopen_backoff_ms, the wait doubling after each failed
-/// try up to this cap (ns), so that an unplugged tracker costs a try every few seconds, not a busy loop.
-inline constexpr std::int64_t kNsPerMs = 1'000'000;
-inline constexpr std::int64_t kMaxReopenBackoffNs = 4000 * kNsPerMs;
 
 class TrackerDevice {
  public:

@@ -6,26 +6,20 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "config/base/atomic_file.h"
+#include "tests/file_text.h"
 #include "tests/partial_files.h"
 #include "tests/scratch_dir.h"
 
 namespace lungar {
 namespace {
 
+using testing::file_text;
 using testing::partial_files_beside;
 using testing::ScratchDir;
-
-std::string contents(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(AtomicFile, TwoWritersOfOnePathEachCommitWholeAndTheLastWins) {
   const ScratchDir dir("lungar_atomic_file");
@@ -38,10 +32,10 @@ TEST(AtomicFile, TwoWritersOfOnePathEachCommitWholeAndTheLastWins) {
   second.write("second\n");
   const Status one = first.commit();
   ASSERT_TRUE(one) << one.error();
-  EXPECT_EQ(contents(path), "first writer's whole file\n");
+  EXPECT_EQ(file_text(path), "first writer's whole file\n");
   const Status two = second.commit();
   ASSERT_TRUE(two) << two.error();
-  EXPECT_EQ(contents(path), "second\n");
+  EXPECT_EQ(file_text(path), "second\n");
   EXPECT_EQ(partial_files_beside(path), std::vector<std::string>{});
 }
 
@@ -54,7 +48,7 @@ TEST(AtomicFile, AnAbandonedWriteLeavesNothingAndKeepsTheOldFile) {
     ASSERT_TRUE(f.open(path));
     f.write("half of a new one");
   }  // destroyed before commit()
-  EXPECT_EQ(contents(path), "old\n");
+  EXPECT_EQ(file_text(path), "old\n");
   EXPECT_EQ(partial_files_beside(path), std::vector<std::string>{});
 }
 

@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "platform/app/classroom_keys.h"
+#include "tests/file_text.h"
 
 namespace lungar::platform {
 namespace {
@@ -19,12 +19,7 @@ namespace fs = std::filesystem;
 
 int sh(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ::lungar::testing::file_text;
 
 std::string command_output(const std::string& command) {
   std::string out;
@@ -68,8 +63,8 @@ TEST(ClassroomKeys, EveryStationGetsAFolderThatOpensslAccepts) {
     const std::string subject = command_output("openssl x509 -noout -subject -nameopt RFC2253 -in " +
                                                (f / "identity_cert.pem").string());
     ASSERT_EQ(subject.rfind("subject=", 0), 0u) << subject;
-    EXPECT_NE(slurp(d.path / "keys" / "permissions.xml").find("<subject_name>" + subject.substr(8, subject.size() - 9) +
-                                                               "</subject_name>"),
+    EXPECT_NE(file_text(d.path / "keys" / "permissions.xml")
+                  .find("<subject_name>" + subject.substr(8, subject.size() - 9) + "</subject_name>"),
               std::string::npos)
         << subject;
   }
@@ -115,7 +110,7 @@ TEST(ClassroomKeys, BadRequestsAreRefusedAndLeaveNothing) {
   bad = o;
   bad.out_dir = (d.path / "taken").string();
   refused(bad, "expected a new or empty folder");
-  EXPECT_EQ(slurp(d.path / "taken" / "mine.txt"), "keep me");
+  EXPECT_EQ(file_text(d.path / "taken" / "mine.txt"), "keep me");
 }
 
 TEST(ClassroomKeys, AnAuthorityIsReusedForANewStation) {

@@ -7,9 +7,9 @@
 
 #include "render/lung_drawable.h"
 #include "render/png_snapshot.h"
+#include "tests/partial_files.h"
 #include "tests/render/gl_fixture.h"
 #include "tests/render/synthetic_lungs.h"
-#include "tests/partial_files.h"
 
 namespace lungar::render {
 namespace {

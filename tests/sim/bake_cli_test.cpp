@@ -24,6 +24,7 @@
 #include "label_map_files_support.h"
 #include "sim/asset/asset_io.h"
 #include "sim_test_support.h"
+#include "tests/file_text.h"
 
 namespace lungar::sim {
 namespace {
@@ -36,15 +37,12 @@ int run(const std::string& args, const std::string& err, const std::string& out 
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
+using ::lungar::testing::file_text;
 
 TEST(BakeCli, HelpAndVersion) {
   test::TempDir dir;
   EXPECT_EQ(run("--help", dir.file("err"), dir.file("help")), 0);
-  const std::string help = slurp(dir.file("help"));
+  const std::string help = file_text(dir.file("help"));
   EXPECT_EQ(help.find("->"), std::string::npos) << "CLI11's enum-map garbage:\n" << help;
   EXPECT_NE(help.find("--map TEXT:{radial,conformal}=conformal"), std::string::npos) << help;
   EXPECT_EQ(run("--version", dir.file("err")), 0);
@@ -54,11 +52,11 @@ TEST(BakeCli, MapNamesAnyCaseAndRefusesOthers) {
   test::TempDir dir;
   const std::string args = "--procedural --nodes 600 --no-evaluate --no-transfer-rows --out " + dir.file("r.lungbake") +
                            " --report-json " + dir.file("r.json") + " --map ";
-  ASSERT_EQ(run(args + "RADIAL", dir.file("err")), 0) << slurp(dir.file("err"));
-  EXPECT_EQ(nlohmann::json::parse(slurp(dir.file("r.json")))["map"], "radial");
+  ASSERT_EQ(run(args + "RADIAL", dir.file("err")), 0) << file_text(dir.file("err"));
+  EXPECT_EQ(nlohmann::json::parse(file_text(dir.file("r.json")))["map"], "radial");
   EXPECT_EQ(run(args + "spherical", dir.file("err")), 2);
-  EXPECT_NE(slurp(dir.file("err")).find("spherical not in {radial,conformal}"), std::string::npos)
-      << slurp(dir.file("err"));
+  EXPECT_NE(file_text(dir.file("err")).find("spherical not in {radial,conformal}"), std::string::npos)
+      << file_text(dir.file("err"));
 }
 
 /// Starts lungar-bake with `args` (stdout to /dev/null, stderr to `err`); its process id.
@@ -87,7 +85,8 @@ TEST(BakeCli, CtrlCStopsTheBakeSoonAndLeavesNoFile) {
                                 dir.file("big.lungbake"), "--report-json", dir.file("big.json")}, err);
   ASSERT_GT(pid, 0);
   const auto started = Clock::now();
-  while (slurp(err).find("baking") == std::string::npos && Clock::now() - started < 30s) std::this_thread::sleep_for(10ms);
+  while (file_text(err).find("baking") == std::string::npos && Clock::now() - started < 30s)
+    std::this_thread::sleep_for(10ms);
   std::this_thread::sleep_for(1s);  // into the bake, which takes far longer at 100,000 nodes
   const auto sent = Clock::now();
   ASSERT_EQ(::kill(pid, SIGINT), 0);
@@ -102,8 +101,8 @@ TEST(BakeCli, CtrlCStopsTheBakeSoonAndLeavesNoFile) {
   }
   const double stop_s = std::chrono::duration<double>(Clock::now() - sent).count();
   ASSERT_TRUE(WIFEXITED(status)) << "the signal ended it instead of the bake stopping";
-  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << slurp(err);
-  EXPECT_NE(slurp(err).find("interrupted; nothing was written"), std::string::npos) << slurp(err);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << file_text(err);
+  EXPECT_NE(file_text(err).find("interrupted; nothing was written"), std::string::npos) << file_text(err);
   EXPECT_EQ(dir.entries(), 1u) << "only the captured stderr: no asset, report or .partial file";
   // A parallel step stops within a body; a serial one (the conformal map's solve, the factorisation) runs to its end.
   EXPECT_LT(stop_s, 60.0);
@@ -114,7 +113,7 @@ TEST(BakeCli, MissingMeshIsOneCleanErrorAndNoFile) {
   const int rc = run("--mesh " + dir.file("none.stl") + " --out " + dir.file("x.lungbake"), dir.file("err"));
   EXPECT_GE(rc, 1);
   EXPECT_LT(rc, 128);
-  const std::string err = slurp(dir.file("err"));
+  const std::string err = file_text(dir.file("err"));
   EXPECT_NE(err.find("none.stl: cannot open"), std::string::npos) << err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.lungbake")));
 }
@@ -126,7 +125,7 @@ TEST(BakeCli, BadOptionsAreRefused) {
     const int rc = run(args, dir.file("err"));
     EXPECT_GE(rc, 1) << args;
     EXPECT_LT(rc, 128) << args;
-    EXPECT_FALSE(slurp(dir.file("err")).empty()) << args;
+    EXPECT_FALSE(file_text(dir.file("err")).empty()) << args;
   }
 }
 
@@ -134,10 +133,10 @@ TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
   test::TempDir dir;
   const std::string args = "--procedural --nodes 2000 --seed 3 --threads 2 --out " + dir.file("p.lungbake") +
                            " --report-json " + dir.file("p.json");
-  ASSERT_EQ(run(args, dir.file("err")), 0) << slurp(dir.file("err"));
+  ASSERT_EQ(run(args, dir.file("err")), 0) << file_text(dir.file("err"));
   const Result<BakedAsset> a = load_asset(dir.file("p.lungbake"));
   ASSERT_TRUE(a) << a.error();
-  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("p.json")));
+  const nlohmann::json r = nlohmann::json::parse(file_text(dir.file("p.json")));
   for (const char* key : {"nodes", "triangles", "lungs", "bands", "coefficients", "transfer_nnz_per_row_mean",
                           "bake_s", "folded_triangles", "eq7_rms_rel_error", "alpha", "paper_interp_rms_rel_error",
                           "linear_basis_rms_rel_error", "displacement_max_mm_at_tidal", "tidal_volume_rel_error",
@@ -161,8 +160,8 @@ TEST(BakeCli, ThePapersModelIsOneOptionAway) {
   test::TempDir dir;
   const std::string args = "--procedural --nodes 2000 --no-transfer-rows --out " + dir.file("p.lungbake") +
                            " --report-json " + dir.file("p.json") + " --model ";
-  ASSERT_EQ(run(args + "paper", dir.file("err")), 0) << slurp(dir.file("err"));
-  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("p.json")));
+  ASSERT_EQ(run(args + "paper", dir.file("err")), 0) << file_text(dir.file("err"));
+  const nlohmann::json r = nlohmann::json::parse(file_text(dir.file("p.json")));
   EXPECT_EQ(r["model"], "paper");
   EXPECT_EQ(r["motion"]["compared"]["model"], "sliding");
   EXPECT_LT(r["motion"]["si_share"].get<double>(), 0.5) << "the paper's balloon";
@@ -172,37 +171,40 @@ TEST(BakeCli, ThePapersModelIsOneOptionAway) {
 TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
   test::TempDir dir;
   ASSERT_EQ(run("--procedural --nodes 2000 --no-evaluate --no-transfer-rows --out " + dir.file("p.lungbake"),
-                dir.file("err")), 0) << slurp(dir.file("err"));
+                dir.file("err")),
+            0)
+      << file_text(dir.file("err"));
   EXPECT_EQ(run("export --help", dir.file("err"), dir.file("help")), 0);
-  EXPECT_NE(slurp(dir.file("help")).find("--posture"), std::string::npos);
+  EXPECT_NE(file_text(dir.file("help")).find("--posture"), std::string::npos);
   const std::string args = "export --asset " + dir.file("p.lungbake") + " --out " + dir.file("e.ply");
-  ASSERT_EQ(run(args + " --posture prone --volume-ml 400", dir.file("err")), 0) << slurp(dir.file("err"));
-  const std::string ply = slurp(dir.file("e.ply"));
+  ASSERT_EQ(run(args + " --posture prone --volume-ml 400", dir.file("err")), 0) << file_text(dir.file("err"));
+  const std::string ply = file_text(dir.file("e.ply"));
   EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
   for (const char* line : {"property float dx\n", "property float dz\n", "element face "})
     EXPECT_NE(ply.find(line), std::string::npos) << line;
-  EXPECT_NE(slurp(dir.file("err")).find("wrote " + dir.file("e.ply")), std::string::npos) << slurp(dir.file("err"));
+  EXPECT_NE(file_text(dir.file("err")).find("wrote " + dir.file("e.ply")), std::string::npos)
+      << file_text(dir.file("err"));
   std::filesystem::remove(dir.file("e.ply"));
   EXPECT_EQ(run(args + " --gravity 0,0", dir.file("err")), 2);
-  EXPECT_NE(slurp(dir.file("err")).find("--gravity"), std::string::npos) << slurp(dir.file("err"));
+  EXPECT_NE(file_text(dir.file("err")).find("--gravity"), std::string::npos) << file_text(dir.file("err"));
   EXPECT_EQ(run(args + " --posture sideways", dir.file("err")), 2);
   EXPECT_EQ(run("export --asset " + dir.file("none.lungbake") + " --out " + dir.file("e.ply"), dir.file("err")), 1);
-  EXPECT_NE(slurp(dir.file("err")).find("none.lungbake"), std::string::npos) << slurp(dir.file("err"));
+  EXPECT_NE(file_text(dir.file("err")).find("none.lungbake"), std::string::npos) << file_text(dir.file("err"));
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
-  ASSERT_EQ(run(args + " --series 4", dir.file("err")), 0) << slurp(dir.file("err"));
+  ASSERT_EQ(run(args + " --series 4", dir.file("err")), 0) << file_text(dir.file("err"));
   EXPECT_TRUE(std::filesystem::exists(dir.file("e_003.ply")));
   // Pathologies: two in one export, then a bad one refused in one line naming it, writing nothing.
   ASSERT_EQ(run(args + " --pathology pneumothorax:left:20 --pathology consolidation:right:upper", dir.file("err")), 0)
-      << slurp(dir.file("err"));
-  EXPECT_NE(slurp(dir.file("e.ply")).find("with pneumothorax:left:20 with consolidation:right:upper"),
+      << file_text(dir.file("err"));
+  EXPECT_NE(file_text(dir.file("e.ply")).find("with pneumothorax:left:20 with consolidation:right:upper"),
             std::string::npos);
   std::filesystem::remove(dir.file("e.ply"));
-  ASSERT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 0) << slurp(dir.file("err"));
+  ASSERT_EQ(run(args + " --pathology emphysema:0.4", dir.file("err")), 0) << file_text(dir.file("err"));
   std::filesystem::remove(dir.file("e.ply"));
-  ASSERT_EQ(run(args + " --pathology ards:0.4", dir.file("err")), 0) << slurp(dir.file("err"));
+  ASSERT_EQ(run(args + " --pathology ards:0.4", dir.file("err")), 0) << file_text(dir.file("err"));
   std::filesystem::remove(dir.file("e.ply"));
   EXPECT_EQ(run(args + " --pathology ards:1.4", dir.file("err")), 1);
-  const std::string err = slurp(dir.file("err"));
+  const std::string err = file_text(dir.file("err"));
   EXPECT_NE(err.find("'ards:1.4'"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
@@ -230,8 +232,8 @@ TEST(BakeCli, LabelMapBakeWritesThePerLungReport) {
   const std::string args = "--labelmap " + dir.file("m.nii.gz") + " --label right=2 --label left=3 --nodes 8000 " +
                            "--bands 3 --no-transfer-rows --threads 2 --out " + dir.file("m.lungbake") +
                            " --report-json " + dir.file("m.json");
-  ASSERT_EQ(run(args, dir.file("err")), 0) << slurp(dir.file("err"));
-  const nlohmann::json r = nlohmann::json::parse(slurp(dir.file("m.json")));
+  ASSERT_EQ(run(args, dir.file("err")), 0) << file_text(dir.file("err"));
+  const nlohmann::json r = nlohmann::json::parse(file_text(dir.file("m.json")));
   EXPECT_EQ(r["map"], "conformal");
   ASSERT_EQ(r["per_lung"].size(), 2u);
   for (const auto& lung : r["per_lung"]) {
@@ -260,7 +262,7 @@ TEST(BakeCli, BadLabelOptionsAreRefused) {
     const int rc = run(args, dir.file("err"));
     EXPECT_GE(rc, 1) << args;
     EXPECT_LT(rc, 128) << args;
-    EXPECT_FALSE(slurp(dir.file("err")).empty()) << args;
+    EXPECT_FALSE(file_text(dir.file("err")).empty()) << args;
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.lungbake"))) << args;
   }
 }

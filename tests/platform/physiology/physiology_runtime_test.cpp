@@ -49,11 +49,11 @@ PhysiologyRun run_with_publisher(const std::string& breath_source, const std::st
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / test_classroom("physiology-" + tag);
   std::filesystem::create_directories(dir);
   const std::string domain = std::to_string(test_domain());
-  StationProcess lungar(kLungar,
-                        {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath",
-                         breath_source + "@" + domain, "--seconds", "20", "--stats-json", (dir / "stats.json").string(),
-                         "--snapshot", (dir / "snapshot.png").string()},
-                        dir / "lungar");
+  StationProcess lungar(
+      kLungar,
+      {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath", breath_source + "@" + domain,
+       "--seconds", "20", "--stats-json", (dir / "stats.json").string(), "--snapshot", (dir / "snapshot.png").string()},
+      dir / "lungar");
   EXPECT_TRUE(lungar.wait_for("breathing: following", 60.0)) << lungar.err();
   StationProcess publisher(LUNGAR_FASTDDS_PUBLISHER, {kind, domain, "14", "bad"}, dir / "publisher");
   EXPECT_EQ(publisher.wait(60.0), 0) << publisher.err() << publisher.out();

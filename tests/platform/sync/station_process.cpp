@@ -9,8 +9,9 @@
 
 #include <chrono>
 #include <fstream>
-#include <sstream>
 #include <thread>
+
+#include "tests/file_text.h"
 
 namespace lungar::testing {
 
@@ -66,14 +67,7 @@ void StationProcess::kill_now() {
   if (pid_ > 0) ::kill(pid_, SIGKILL);
 }
 
-static std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string StationProcess::err() const { return slurp(err_); }
-std::string StationProcess::out() const { return slurp(out_); }
+std::string StationProcess::err() const { return file_text(err_); }
+std::string StationProcess::out() const { return file_text(out_); }
 
 }  // namespace lungar::testing

@@ -1,13 +1,14 @@
 /// @file toml_section.cpp
 /// @brief Typed, range-checked reads of TOML tables with messages that name file, line and key.
 #include "config/toml_section.h"
-#include "config/base/number_text.h"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
+
+#include "config/base/number_text.h"
 
 namespace lungar::config {
 

@@ -165,8 +165,7 @@ void add_classroom_options(CLI::App& app, RuntimeOptions& o) {
                  "join a secure classroom (DDS Security) with this station's folder from `lungar classroom-keys` "
                  "(default: sync.security; none: the classroom is open)");
   // For the tests alone: in no group, so --help leaves it out.
-  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "pretend this station's clock is off by MS")
-      ->group("");
+  app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "pretend this station's clock is off by MS")->group("");
 }
 
 }  // namespace

@@ -87,11 +87,12 @@ Status write_registration_toml(const std::string& path, const Registration& r) {
   config::TomlWriter section = document.section("registration");
   const Eigen::Vector3d& t = r.translation_mm;
   section.numbers("translation_mm", std::array<double, 3>{t.x(), t.y(), t.z()}, -1e4, 1e4, "mm");
-  section.numbers("rotation_wxyz", std::array<double, 4>{r.rotation.w(), r.rotation.x(), r.rotation.y(),
-                                                         r.rotation.z()}, -1.0, 1.0, "");
+  section.numbers("rotation_wxyz",
+                  std::array<double, 4>{r.rotation.w(), r.rotation.x(), r.rotation.y(), r.rotation.z()}, -1.0, 1.0, "");
   char comment[160];
-  std::snprintf(comment, sizeof comment, "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, "
-                "worst %.3f mm.\n", r.fiducials, r.fre_rms_mm, r.fre_max_mm);
+  std::snprintf(comment, sizeof comment,
+                "# Written by `lungar calibrate` from %d fiducials: RMS error %.3f mm, worst %.3f mm.\n", r.fiducials,
+                r.fre_rms_mm, r.fre_max_mm);
   return write_file_atomically(path, comment + document.str());
 }
 

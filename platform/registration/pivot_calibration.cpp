@@ -57,11 +57,14 @@ Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& poses) {
 
 Status write_tip_offset_toml(const std::string& path, const PivotFit& f) {
   config::TomlWriter document;
-  document.section("trackers").section("stylus").numbers(
-      "tip_offset_mm", std::array<double, 3>{f.tip_mm.x(), f.tip_mm.y(), f.tip_mm.z()}, -1000.0, 1000.0, "mm");
+  document.section("trackers")
+      .section("stylus")
+      .numbers("tip_offset_mm", std::array<double, 3>{f.tip_mm.x(), f.tip_mm.y(), f.tip_mm.z()}, -1000.0, 1000.0, "mm");
   char comment[200];
-  std::snprintf(comment, sizeof comment, "# Written by `lungar calibrate pivot` from %d stylus poses turning up to "
-                "%.1f degrees: RMS error %.3f mm, worst %.3f mm.\n", f.poses, f.spread_deg, f.rms_mm, f.max_mm);
+  std::snprintf(comment, sizeof comment,
+                "# Written by `lungar calibrate pivot` from %d stylus poses turning up to "
+                "%.1f degrees: RMS error %.3f mm, worst %.3f mm.\n",
+                f.poses, f.spread_deg, f.rms_mm, f.max_mm);
   return write_file_atomically(path, comment + document.str());
 }
 

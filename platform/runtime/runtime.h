@@ -38,11 +38,11 @@ namespace lungar::platform {
 
 /// What a Runtime is made of. The output's GL context must be current on the thread that calls frame().
 struct RuntimeParts {
-  std::shared_ptr<LungScene> scene;                        ///< the baked lungs and their GPU buffers
-  std::unique_ptr<FrameOutput> output;                     ///< where the views are drawn and presented
-  std::unique_ptr<PoseSource> poses;                       ///< the head's and the patient's poses each frame
-  std::unique_ptr<BreathingClock> breathing;               ///< the breath's volume each frame
-  std::vector<std::shared_ptr<FrameListener>> listeners;   ///< told of every frame (recorders, the classroom)
+  std::shared_ptr<LungScene> scene;                       ///< the baked lungs and their GPU buffers
+  std::unique_ptr<FrameOutput> output;                    ///< where the views are drawn and presented
+  std::unique_ptr<PoseSource> poses;                      ///< the head's and the patient's poses each frame
+  std::unique_ptr<BreathingClock> breathing;              ///< the breath's volume each frame
+  std::vector<std::shared_ptr<FrameListener>> listeners;  ///< told of every frame (recorders, the classroom)
   /// The lungs' shapes changing during the run (none: as loaded).
   std::shared_ptr<LungCourse> course;
   /// The frame's clock (monotonic ns); the bench scripts it so that every configuration sees the same inputs.

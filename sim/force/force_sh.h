@@ -16,7 +16,8 @@ namespace lungar::sim {
 
 enum class ForceMode { Exact, Paper };
 /// The names TOML, the command line and logs give the modes.
-inline constexpr EnumNames<ForceMode, 2> kForceModeNames{{{{ForceMode::Exact, "exact"}, {ForceMode::Paper, "paper_interp"}}}};
+inline constexpr EnumNames<ForceMode, 2> kForceModeNames{
+    {{{ForceMode::Exact, "exact"}, {ForceMode::Paper, "paper_interp"}}}};
 inline const char* to_string(ForceMode v) { return kForceModeNames.name(v); }
 
 /// The paper's rotation angles a, b, c about X, Y, Z in [0, 2 pi), with R = Rz(c) Ry(b) Rx(a).

@@ -11,6 +11,7 @@ void read_breathing_settings(TomlSection s, BreathingSettings& b) {
   s.number("tidal_volume_ml", b.tidal_volume_ml, 50.0, 3000.0, "mL");
   s.text("scenario", b.scenario);
   s.text("source", b.source);
+  s.choice("rpm_flagged", b.rpm_flagged, {"follow", "skip"});
   if (b.source.empty()) {
     s.fail("source",
            "expected \"model\", a trace file, \"marker:ROLE\", \"amm[@DOMAIN]\" or \"openice[:METRIC][@DOMAIN]\", "

@@ -18,6 +18,11 @@ struct BreathingSettings {
   /// What drives the breath: "model" (the above), a recorded trace (CSV or .vxp, relative to the config file) or
   /// "marker:ROLE" (a chest marker tracked live); `lungar --breath` overrides it.
   std::string source = "model";
+  /// A Varian RPM trace's flagged samples (a negative validflag: RPM's gating verdict, the breath off its expected
+  /// pattern or baseline, while the amplitude is still the patient's breathing): "follow" them (counted in
+  /// breath_flagged_samples) or "skip" them, as a site that wants RPM's verdict may (the follower then holds and
+  /// hands over to the model through each flagged stretch).
+  std::string rpm_flagged = "follow";
 };
 
 /// Reads [breathing] over `b`; throws ConfigError naming the file, key and expectation.

@@ -2,12 +2,14 @@
 /// @brief The follower behind the BreathingClock interface (followed_breathing.h).
 #include "platform/app/followed_breathing.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
 #include "config/base/log_line.h"
+#include "sim/breathing/pv_curve.h"
 
 namespace lungar::platform {
 
@@ -19,7 +21,12 @@ void TraceFeed::feed(double t_s, Followers& followers) {
 void TraceFeed::add_stats(nlohmann::json& stats) const {
   stats["breath_source"] = "trace";
   stats["breath_file"] = path_;
-  stats["breath_invalid_samples"] = trace_.invalid;
+  stats["breath_format"] = trace_.format;
+  // Samples the recorder flagged (RPM's validflag) that this trace still holds: followed.
+  long flagged = 0;
+  for (const sim::TraceSample& s : trace_.samples) flagged += s.flagged ? 1 : 0;
+  stats["breath_flagged_samples"] = flagged;
+  stats["breath_invalid_samples"] = 0;
 }
 
 FollowedBreathing::FollowedBreathing(std::shared_ptr<SurrogateFeed> feed,
@@ -31,6 +38,9 @@ FollowedBreathing::FollowedBreathing(std::shared_ptr<SurrogateFeed> feed,
   // reaches the eye about one refresh of a 60 Hz HMD later.
   p.predict_s = kFrameToPhotonsS;
   p.in_ml = feed_->in_ml();
+  // The highest the lungs can go above the end-exhale level: the preset's inspiratory capacity (TLC - FRC).
+  const sim::PvPreset& preset = sim::pv_preset(model_->start.preset);
+  p.max_ml = std::min(3.0 * p.tidal_volume_ml, sim::max_tidal_volume_ml(preset, preset.p_frc_cmh2o));
   followers_.breath = sim::BreathFollower(p);
   followers_.lungs = {sim::BreathFollower(p), sim::BreathFollower(p)};
 }
@@ -73,6 +83,8 @@ void FollowedBreathing::add_stats(nlohmann::json& stats) const {
   stats["breath_following_s"] = following_s_;
   stats["breath_apnoeas"] = followers_.breath.apnoeas();
   stats["breath_irregular"] = followers_.breath.irregular_breaths();
+  stats["breath_bounded_samples"] = followers_.breath.bounded_samples();
+  stats["breath_max_ml"] = followers_.breath.max_ml();
 }
 
 }  // namespace lungar::platform

@@ -99,6 +99,7 @@ Result<std::shared_ptr<MarkerFeed>> marker_of(const std::string& breath, std::in
 /// The followed breath's feed: the live marker's (made before the tracker, which calls it), a mannequin's or a
 /// ventilator's over DDS, or a recorded trace's; each says in the log what it follows.
 Result<std::shared_ptr<SurrogateFeed>> open_feed(const std::string& breath, std::shared_ptr<MarkerFeed> marker,
+                                                 const config::BreathingSettings& breathing,
                                                  const sync::SyncSettings& network, std::int64_t t0) {
   if (marker) {
     log_line("breathing: following the " + breath.substr(7) + " marker live (its breathing axis from its first " +
@@ -116,8 +117,14 @@ Result<std::shared_ptr<SurrogateFeed>> open_feed(const std::string& breath, std:
   }
   auto trace = sim::read_breath_trace(breath);
   if (!trace) return Error{trace.error()};
+  const bool skip = breathing.rpm_flagged == "skip" && trace->flagged > 0;
   log_line("breathing: following " + breath + " (" + std::to_string(trace->samples.size()) + " samples" +
-           (trace->marker ? ", a marker read along its breathing axis" : "") + "), the model before and after");
+           (trace->marker ? ", a marker read along its breathing axis" : "") +
+           (trace->flagged > 0 ? ", " + std::to_string(trace->flagged) + " flagged by the recorder, " +
+                                     (skip ? "skipped" : "followed")
+                               : std::string()) +
+           "), the model before and after");
+  if (skip) trace = sim::without_flagged(trace.take());
   return std::shared_ptr<SurrogateFeed>(std::make_shared<TraceFeed>(trace.take(), breath));
 }
 
@@ -152,7 +159,7 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
                   "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
                   "--breath, and run the trainee without it (breathing.source = \"model\")");
     }
-    auto feed = open_feed(breath, *marker, s.sync, t0);
+    auto feed = open_feed(breath, *marker, s.breathing, s.sync, t0);
     if (!feed) return feed.with_context(where);
     parts.breathing = std::make_unique<FollowedBreathing>(feed.take(), shared_script, t0);
   }

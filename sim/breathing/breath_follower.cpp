@@ -75,23 +75,35 @@ double BreathFollower::predicted(double t_s) const {
   // Within the breath: no deeper than the deepest of the last breaths, no lower than the end-exhale level, so that
   // the turn at a peak or a trough, where a straight line overshoots, stays where the breaths turned.
   const double deepest = *std::max_element(amplitudes_.v.begin(), amplitudes_.v.begin() + amplitudes_.count);
-  const double base = baseline(last_t_), top = base + deepest;
+  const double base = baseline(), top = base + deepest;
   return std::clamp(last_value_ + slope * ahead, std::min(base, last_value_), std::max(top, last_value_));
 }
 
 void BreathFollower::turn_found(bool trough, const Turn& t) {
   if (trough) {
-    if (trough_count_ == 2) troughs_[0] = troughs_[1];
-    troughs_[trough_count_ == 2 ? 1 : trough_count_++] = t;
+    // The end-exhale of the coming breath: the lowest point since the last breath (talking's small troughs
+    // between two breaths are not it).
+    if (!has_low_ || t.value < low_.value) low_ = t;
+    has_low_ = true;
     return;
   }
-  if (trough_count_ == 0) return;  // a peak before any trough: no breath to measure yet
-  const double a = t.value - troughs_[trough_count_ - 1].value;
+  if (!has_low_) return;  // a peak before any trough: no breath to measure yet
+  last_turn_s_ = t.t_s;
+  const double a = t.value - low_.value;
   if (!(a > 0)) return;
+  const bool too_soon = peak_times_.count > 0 && t.t_s - peak_times_.v[peak_times_.count - 1] < p_.min_breath_s;
+  const bool too_shallow = amplitudes_.count > 0 && a < p_.min_depth_share * amplitude();
+  if (too_soon || too_shallow) {  // the chest moved, but not a breath: followed, flagged, not learnt from
+    irregular_breaths_ += irregular_ ? 0 : 1;
+    irregular_ = true;
+    return;
+  }
   irregular_ = irregular(a, t.t_s);
   irregular_breaths_ += irregular_ ? 1 : 0;
   amplitudes_.push(a);
   peak_times_.push(t.t_s);
+  end_exhales_.push(low_.value);
+  has_low_ = false;
   ++breaths_;
 }
 
@@ -123,23 +135,31 @@ double BreathFollower::rate_per_min() const {
   return span > 0 ? 60.0 * static_cast<double>(n - 1) / span : 0.0;
 }
 
-double BreathFollower::baseline(double t_s) const {
-  if (trough_count_ == 0) return lo_;
-  const Turn& b = troughs_[trough_count_ - 1];
-  if (trough_count_ < 2) return b.value;
-  const Turn& a = troughs_[0];
-  const double span = b.t_s - a.t_s;
-  if (!(span > 0)) return b.value;
-  // The drift between the last two end-exhales, carried forward for at most one more breath.
-  const double ahead = std::clamp(t_s - b.t_s, 0.0, span);
-  return b.value + (b.value - a.value) / span * ahead;
+double BreathFollower::baseline() const {
+  if (end_exhales_.count == 0) return has_low_ ? low_.value : lo_;
+  std::array<double, kMaxMedianOf> e = end_exhales_.v;
+  const std::size_t n = end_exhales_.count;
+  std::sort(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  return n % 2 == 1 ? e[n / 2] : 0.5 * (e[n / 2 - 1] + e[n / 2]);
+}
+
+double BreathFollower::max_ml() const { return p_.max_ml > 0 ? p_.max_ml : 3.0 * p_.tidal_volume_ml; }
+
+double BreathFollower::bounded(double raw_ml) const {
+  const double vt = p_.tidal_volume_ml, top = max_ml();
+  const double floor_soft = -vt / 4, floor_span = vt / 4;   // compressed from -V_T/4 towards -V_T/2
+  const double top_span = std::min(vt, 0.5 * top), top_soft = top - top_span;  // towards max_ml
+  if (raw_ml < floor_soft) return floor_soft - floor_span * std::tanh((floor_soft - raw_ml) / floor_span);
+  if (raw_ml > top_soft) return top_soft + top_span * std::tanh((raw_ml - top_soft) / top_span);
+  return raw_ml;
 }
 
 FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   const bool lost = !any_ || t_s - last_t_ > p_.lost_after_s;
   const bool calibrated = breaths_ >= p_.calibration_breaths && amplitudes_.count > 0 &&
-                          (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 2);
+                          (breaths_at_return_ < 0 || breaths_ - breaths_at_return_ >= 1);
   double target = model_dv_ml, k = 0, seen_value = last_value_;
+  bool was_bounded = false;
   const bool was_following = state_ == BreathState::Following;
   if (lost) {
     const bool recently = any_ && t_s - last_t_ - p_.lost_after_s < p_.holding_s;
@@ -148,7 +168,10 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
     state_ = BreathState::Following;
     k = p_.in_ml ? 1.0 : p_.tidal_volume_ml / amplitude();
     seen_value = p_.predict ? predicted(t_s + p_.predict_s) : last_value_;
-    target = k * (seen_value - baseline(last_t_));
+    const double raw = k * (seen_value - baseline());
+    was_bounded = !p_.in_ml && (raw < -p_.tidal_volume_ml / 2 || raw > max_ml());
+    target = p_.in_ml ? raw : bounded(raw);
+    bounded_ += was_bounded ? 1 : 0;
   } else {
     state_ = BreathState::Model;
   }
@@ -172,11 +195,11 @@ FollowerOutput BreathFollower::at(double t_s, double model_dv_ml) {
   used_model_ = model_dv_ml;
   // Apnoea: the signal is there (not lost) and has made no breath for apnoea_s since the last one it made (or
   // since it came back after a loss: what happened in the gap is not known).
-  const double last_breath_s = peak_times_.count > 0 ? peak_times_.v[peak_times_.count - 1] : 0.0;
-  const bool apnoea = !lost && breaths_ > 0 && t_s - std::max(last_breath_s, returned_s_) > p_.apnoea_s;
+  // Talking counts as the chest moving: its turns end an apnoea as a breath does.
+  const bool apnoea = !lost && breaths_ > 0 && t_s - std::max(last_turn_s_, returned_s_) > p_.apnoea_s;
   apnoeas_ += apnoea && !in_apnoea_ ? 1 : 0;
   in_apnoea_ = apnoea;
-  return {out_ml_, state_, last_value_, apnoea, irregular_ && !apnoea};
+  return {out_ml_, state_, last_value_, apnoea, irregular_ && !apnoea, was_bounded};
 }
 
 }  // namespace lungar::sim

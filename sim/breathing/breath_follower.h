@@ -5,14 +5,23 @@
 ///
 /// - Breaths are found as troughs and peaks of the surrogate with hysteresis (a turn counts once the signal has
 ///   come back by a third of the typical amplitude), so noise and jerks make no breath.
-/// - The end-exhale level (the baseline) follows the troughs, with the drift between the last two carried
-///   forward, so a marker that slowly sinks (a patient settling) does not read as breathing out.
+/// - A breath counts (for the scale, the end-exhale level and the rate) only when it is one: at least
+///   min_breath_s after the last one and at least min_depth_share of the typical depth. Talking, a cough, the
+///   jitter of an upper-chest marker make turns that are none of these: they are followed as the chest moves and
+///   flagged `irregular`, but they do not rescale the next minute or move the end-exhale level.
+/// - The end-exhale level (the baseline) is the median of the last kBaselineOf breaths' end-exhales (the lowest
+///   point since the breath before): a step, a drift or one deep exhale moves it by one breath's worth at most,
+///   and it is never extrapolated, so a marker that shifts on the table cannot drag dV away without bound.
 /// - Amplitude drives geometry: dV = k (s - baseline), with k = V_T / the median amplitude of the last breaths,
 ///   so a deeper breath gives a bigger dV and one irregular breath does not rescale the rest; a volume source
 ///   (FollowerParams::in_ml) gives litres directly, k = 1.
+/// - dV stays what a respiratory system can do: never more than V_T/2 below the end-exhale level (the expiratory
+///   reserve a quiet breath does not reach) and never above max_ml (the inspiratory capacity). Inside
+///   [-V_T/4, max_ml - V_T] dV is k (s - baseline) as it is; beyond, it is compressed smoothly towards the bound
+///   (no flat top, no kink), and each sample whose raw dV lay beyond a bound is counted (bounded_samples()).
 /// - States: `model` (not yet calibrated, or handed over), `following`, `holding` (the signal stopped: dV moves
-///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once two breaths of the
-///   returned signal are found, moving from the model's dV to the signal's at that same bounded rate.
+///   towards the model's at most kHandoverMlPerS, no jump). After a loss it follows again once a breath of the
+///   returned signal is found (the scale and the end-exhale level are kept from before), moving from the model's dV to the signal's at that same bounded rate.
 /// - Prediction: dV is the surrogate extrapolated to the time it will be seen, `at()`'s time plus predict_s (the
 ///   display's share of the delay), from the newest sample along the slope of the last kSlopeWindowS of samples,
 ///   at most kMaxPredictS ahead and kept between the end-exhale level and the deepest recent breath: a sample is old by
@@ -43,13 +52,19 @@ inline constexpr double kSlopeWindowS = 0.15;  ///< how much of the newest sampl
 inline constexpr double kMaxPredictS = 0.3;    ///< the furthest dV is extrapolated past the newest sample
 /// The most breaths the amplitude's median and the rate are taken over.
 inline constexpr int kMaxMedianOf = 9;
+/// The breaths whose end-exhales the end-exhale level is the median of: one odd one is outvoted.
+inline constexpr int kBaselineOf = 3;
 
 struct FollowerParams {
   double tidal_volume_ml = 500.0;  ///< V_T: what the median breath of the surrogate maps to
   double lost_after_s = 0.5;       ///< no sample for this long: the signal is lost
   double holding_s = 2.0;          ///< then `holding` this long before `model`
   int calibration_breaths = 2;     ///< breaths found before following
-  int median_of = 5;               ///< breaths in the amplitude's median (at most kMaxMedianOf)
+  int median_of = kMaxMedianOf;    ///< breaths in the amplitude's median (at most kMaxMedianOf)
+  double min_breath_s = 1.5;       ///< a breath peaking sooner after the last (talking, a cough) is none
+  double min_depth_share = 0.3;    ///< nor one shallower than this share of the typical depth
+  /// The highest dV (mL): the inspiratory capacity (TLC - FRC of the patient's preset); 0: 3 V_T.
+  double max_ml = 0;
   double apnoea_s = 10.0;          ///< no breath for this long, the signal present: apnoea
   double irregular_share = 0.5;    ///< a breath's depth or period this far off the median (as a share): irregular
   double predict_s = 0.0;          ///< beyond at()'s time: the display's delay (frame to photons), s
@@ -64,13 +79,15 @@ struct FollowerOutput {
   BreathState state = BreathState::Model;
   double surrogate = 0;    ///< the last sample's value
   bool apnoea = false;     ///< no breath for FollowerParams::apnoea_s while the signal is present
-  bool irregular = false;  ///< the last breath's depth or period was off the median
+  bool irregular = false;  ///< the last breath's depth or period was off the median, or it was no breath
+  bool bounded = false;    ///< dV was held inside the respiratory system's range (FollowerParams::max_ml)
 };
 
 class BreathFollower {
  public:
   explicit BreathFollower(FollowerParams p = {}) : p_(p) {
     amplitudes_.capacity = static_cast<std::size_t>(std::clamp(p_.median_of, 1, kMaxMedianOf));
+    end_exhales_.capacity = kBaselineOf;
   }
 
   /// One surrogate sample (inhale up); times must not decrease. A non-finite value is dropped and counted.
@@ -87,6 +104,10 @@ class BreathFollower {
   /// Breaths flagged irregular, and apnoeas begun, so far.
   int irregular_breaths() const { return irregular_breaths_; }
   int apnoeas() const { return apnoeas_; }
+  /// Outputs whose dV the bounds held (the raw dV below -V_T/2 or above max_ml).
+  long bounded_samples() const { return bounded_; }
+  /// The highest dV the bound allows, mL.
+  double max_ml() const;
 
  private:
   struct Turn {
@@ -110,22 +131,27 @@ class BreathFollower {
   /// Whether a breath of depth `a` peaking at `t_s` is off the last breaths' medians.
   bool irregular(double a, double t_s) const;
   double amplitude() const;
-  double baseline(double t_s) const;
+  double baseline() const;
+  /// dV within the respiratory system's range, compressed smoothly near its ends.
+  double bounded(double raw_ml) const;
 
   FollowerParams p_;
   bool any_ = false, rising_ = true;
   double last_t_ = 0, last_value_ = 0;
   Turn extreme_{0, 0};             ///< the candidate turn: the highest point while rising, lowest while falling
   double lo_ = 0, hi_ = 0;         ///< the range seen before the first amplitude
-  std::array<Turn, 2> troughs_{};  ///< the last two, oldest first
-  std::size_t trough_count_ = 0;
-  Recent amplitudes_;              ///< peak minus the trough before it, the last median_of
-  Recent peak_times_;              ///< the last kMaxMedianOf peaks' times
+  Turn low_{0, 0};                 ///< the lowest trough since the last breath: the next breath's end-exhale
+  bool has_low_ = false;
+  Recent end_exhales_;             ///< the last kBaselineOf breaths' end-exhales
+  Recent amplitudes_;              ///< peak minus its end-exhale, the last median_of breaths
+  Recent peak_times_;              ///< the last kMaxMedianOf breaths' peak times
+  double last_turn_s_ = -1;        ///< the last peak found, breath or not: the chest moved
   std::array<Turn, 16> newest_{};  ///< the newest samples, a ring: what the slope is fitted to
   std::size_t newest_next_ = 0, newest_count_ = 0;
   int breaths_ = 0, dropped_ = 0;
   bool irregular_ = false, in_apnoea_ = false;
   int irregular_breaths_ = 0, apnoeas_ = 0;
+  long bounded_ = 0;
   double returned_s_ = 0;       ///< when the signal last came back after a loss
   int breaths_at_return_ = -1;  ///< breaths when the signal came back after a loss (-1: not lost)
   BreathState state_ = BreathState::Model;

@@ -2,7 +2,9 @@
 /// @brief The CSV surrogates of breath_trace.h, and a marker's projection on its breathing axis.
 #include "sim/breathing/breath_trace.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,19 +12,31 @@
 #include <Eigen/Eigenvalues>
 
 namespace lungar::sim {
-namespace {
-
-constexpr double kAxisWindowS = 30.0;
-
-/// Projects marker positions on their breathing axis over the first kAxisWindowS.
-std::vector<TraceSample> project_marker(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p) {
+std::vector<TraceSample> marker_excursion(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p) {
   const Eigen::Vector3d axis = breathing_axis(t, p, kAxisWindowS);
   std::vector<TraceSample> out;
   for (std::size_t i = 0; i < p.size(); ++i) out.push_back({t[i] - t.front(), axis.dot(p[i] - p.front())});
   return out;
 }
 
-}  // namespace
+Status check_sample_times(const BreathTrace& trace, const std::string& path) {
+  const std::vector<TraceSample>& s = trace.samples;
+  std::vector<double> dt;
+  for (std::size_t i = 1; i < s.size(); ++i) dt.push_back(s[i].t_s - s[i - 1].t_s);
+  if (dt.empty()) return ok();
+  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+  const double median = dt[dt.size() / 2];
+  if (median >= 1e-3 && median <= 2.0) return ok();
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%g s", median);
+  return fail(path + ": t_s: expected times in seconds (a median interval from 0.001 to 2 s), got a median of " +
+              buf + (median > 2.0 ? " (milliseconds under a t_s header?)" : ""));
+}
+
+BreathTrace without_flagged(BreathTrace trace) {
+  std::erase_if(trace.samples, [](const TraceSample& s) { return s.flagged; });
+  return trace;
+}
 
 Eigen::Vector3d breathing_axis(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& p, double window_s) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -52,7 +66,15 @@ Result<BreathTrace> read_breath_trace(const std::string& path) {
   if (!in)
     return fail(path + ": cannot open: expected " +
                 (vxp ? "a Varian RPM .vxp file" : "a CSV trace (t_s,value or t_s,x_mm,y_mm,z_mm)"));
-  return vxp ? parse_vxp_trace(in, path) : parse_csv_trace(in, path);
+  std::string first;
+  std::getline(in, first);
+  const bool extmarker = first.rfind("\"Frame\";", 0) == 0 || first.rfind("Frame;", 0) == 0;
+  in.clear();
+  in.seekg(0);
+  auto trace = vxp ? parse_vxp_trace(in, path) : extmarker ? parse_extmarker_trace(in, path) : parse_csv_trace(in, path);
+  if (!trace) return trace;
+  if (Status times = check_sample_times(*trace, path); !times) return fail(times.error());
+  return trace;
 }
 
 Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path) {
@@ -99,7 +121,7 @@ Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path) {
   if (t.size() < 2) return fail(path + ": expected at least two samples, got " + std::to_string(t.size()));
   if (columns == 4) {
     out.marker = true;
-    out.samples = project_marker(t, p);
+    out.samples = marker_excursion(t, p);
   } else {
     const double t0 = out.samples.front().t_s;
     for (TraceSample& s : out.samples) s.t_s -= t0;

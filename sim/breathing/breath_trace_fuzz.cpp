@@ -23,7 +23,7 @@ void check(const lungar::Result<lungar::sim::BreathTrace>& r) {
     if (!std::isfinite(s[i].t_s) || !std::isfinite(s[i].value)) std::abort();
     if (i > 0 && !(s[i].t_s > s[i - 1].t_s)) std::abort();
   }
-  if (r->invalid < 0 || r->peaks_marked < 0) std::abort();
+  if (r->flagged < 0 || r->peaks_marked < 0) std::abort();
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 /// @file vxp_trace.cpp
 /// @brief Varian RPM's `.vxp` respiratory traces (breath_trace.h): the header's keys, the data layout's columns,
-/// invalid samples skipped and counted, the peaks RPM marked.
+/// flagged samples kept and counted, the amplitude in mm, the peaks RPM marked.
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -38,11 +38,10 @@ Result<VxpColumns> vxp_columns(std::map<std::string, std::string>& header, Breat
   const auto positive = [&](const char* key, double& v) {
     return header.count(key) && number(header[key], v) && v > 0;
   };
-  double scale = 0;
   if (!positive("Samples_per_second", out.samples_per_second))
     return fail("Samples_per_second: expected a positive number in the header, got '" + header["Samples_per_second"] +
                 "'");
-  if (!positive("Scale_factor", scale))
+  if (!positive("Scale_factor", out.scale_to_mm))
     return fail("Scale_factor: expected a positive number in the header, got '" + header["Scale_factor"] + "'");
   VxpColumns c;
   c.layout = header["Data_layout"];
@@ -79,17 +78,16 @@ Status vxp_row(const std::string& line, const VxpColumns& c, BreathTrace& out, d
     if (!m.empty() && m != "P" && m != "Z") return fail("mark: expected P, Z or nothing, got '" + m + "'");
     out.peaks_marked += m == "P" ? 1 : 0;
   }
-  if (out.samples.empty() && out.invalid == 0) {
+  if (out.samples.empty()) {
     t0_ms = last_ms = ms;
   } else if (!(ms > last_ms)) {
     return fail("timestamp: expected times that increase, got '" + line + "'");
   }
   last_ms = ms;
-  if (valid < 0) {
-    ++out.invalid;  // RPM lost the marker block: skipped, never followed
-    return ok();
-  }
-  out.samples.push_back({(ms - t0_ms) / 1000.0, amp});
+  // A negative validflag is RPM's gating verdict (the breath off its expected pattern or baseline), not a lost
+  // signal: the amplitude is still the patient's breathing. Kept, marked, counted.
+  out.flagged += valid < 0 ? 1 : 0;
+  out.samples.push_back({(ms - t0_ms) / 1000.0, amp * out.scale_to_mm, valid < 0});
   return ok();
 }
 
@@ -129,8 +127,7 @@ Result<BreathTrace> parse_vxp_trace(std::istream& in, const std::string& path) {
     return fail(path + ": expected a [Header] and a [Data] section, got " +
                 (part == Part::Start ? std::string("neither") : std::string("no [Data]")));
   if (out.samples.size() < 2)
-    return fail(path + ": expected at least two valid samples, got " + std::to_string(out.samples.size()) + " (" +
-                std::to_string(out.invalid) + " flagged invalid)");
+    return fail(path + ": expected at least two samples, got " + std::to_string(out.samples.size()));
   return out;
 }
 

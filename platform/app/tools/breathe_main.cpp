@@ -2,6 +2,7 @@
 /// @brief lungar-breathe: runs the breathing driver (and a scenario) without graphics and prints CSV for plots:
 ///        the time series (t, P, V, dV, phase, orientation), or the three pressure-volume curves, or the presets;
 ///        or, as one JSON object, the exhale path of steady breathing against 4-D CT.
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -87,32 +88,50 @@ void print_follow_row(double t, const sim::FollowerOutput& o, double model) {
               o.apnoea ? 1 : 0, o.irregular ? 1 : 0);
 }
 
-/// --breath FILE: the follower driven by a recorded surrogate, sampled every dt, with the model's dV for its
-/// handovers.
-int print_followed(const sim::BreathingScript& script, const std::string& trace_path, double tidal_ml,
-                   std::optional<double> seconds, double dt) {
-  auto trace = sim::read_breath_trace(trace_path);
-  if (!trace) return fail_with(trace.error());
+/// The follower's parameters for a run of `script`: V_T, and the preset's inspiratory capacity as the highest dV.
+sim::FollowerParams follower_params(const sim::BreathingScript& script, double tidal_ml) {
   sim::FollowerParams fp;
   fp.tidal_volume_ml = tidal_ml;
-  sim::BreathFollower follower(fp);
+  const sim::PvPreset& preset = sim::pv_preset(script.start.preset);
+  fp.max_ml = std::min(3.0 * tidal_ml, sim::max_tidal_volume_ml(preset, preset.p_frc_cmh2o));
+  return fp;
+}
+
+/// --breath FILE: the follower driven by a recorded surrogate, sampled every dt, with the model's dV for its
+/// handovers; a trace's flagged samples followed or skipped ([breathing] rpm_flagged).
+int print_followed(const sim::BreathingScript& script, const std::string& trace_path, double tidal_ml,
+                   const std::string& rpm_flagged, std::optional<double> seconds, double dt) {
+  auto trace = sim::read_breath_trace(trace_path);
+  if (!trace) return fail_with(trace.error());
+  const int flagged = trace->flagged;
+  const bool skip = rpm_flagged == "skip";
+  if (skip) trace = sim::without_flagged(trace.take());
+  sim::BreathFollower follower(follower_params(script, tidal_ml));
   const double end = seconds.value_or(trace->samples.back().t_s);
   print_follow_header();
   std::size_t next = 0;
+  long states[3] = {0, 0, 0};
   const auto n = static_cast<long>(std::floor(end / dt + 1e-9));
   for (long k = 0; k <= n; ++k) {
     const double t = static_cast<double>(k) * dt;
     for (; next < trace->samples.size() && trace->samples[next].t_s <= t; ++next)
       follower.add(trace->samples[next].t_s, trace->samples[next].value);
     const double model = script.driver.at(t).dv_ml;
-    print_follow_row(t, follower.at(t, model), model);
+    const sim::FollowerOutput o = follower.at(t, model);
+    ++states[static_cast<int>(o.state)];
+    print_follow_row(t, o, model);
   }
   // The summary on stderr, so that stdout stays one CSV.
   std::fprintf(stderr,
-               "lungar-breathe: %s %s: %zu samples (%d flagged invalid, skipped), %d breaths found (the file marks %d "
-               "peaks), %.1f/min at the end, %d irregular, %d apnoeas\n",
-               trace->format.c_str(), trace_path.c_str(), trace->samples.size(), trace->invalid, follower.breaths(),
-               trace->peaks_marked, follower.rate_per_min(), follower.irregular_breaths(), follower.apnoeas());
+               "lungar-breathe: %s %s: %zu samples (%d flagged by the recorder, %s), %d breaths found (the file marks "
+               "%d peaks), %.1f/min at the end, %d irregular, %d apnoeas; following %.0f %% of the run; dV held by "
+               "its bounds (-V_T/2, %.0f mL) at %ld of %ld steps\n",
+               trace->format.c_str(), trace_path.c_str(), trace->samples.size(), flagged,
+               skip ? "skipped" : "followed", follower.breaths(), trace->peaks_marked, follower.rate_per_min(),
+               follower.irregular_breaths(), follower.apnoeas(),
+               100.0 * static_cast<double>(states[static_cast<int>(sim::BreathState::Following)]) /
+                   static_cast<double>(n + 1),
+               follower.max_ml(), follower.bounded_samples(), n + 1);
   return 0;
 }
 
@@ -123,8 +142,7 @@ int print_followed_live(const sim::BreathingScript& script, const platform::Phys
   const std::int64_t t0 = monotonic_ns();
   auto feed = platform::PhysiologyFeed::open(spec, cyclonedds_xml, t0);
   if (!feed) return fail_with(feed.error());
-  sim::FollowerParams fp;
-  fp.tidal_volume_ml = tidal_ml;
+  sim::FollowerParams fp = follower_params(script, tidal_ml);
   fp.in_ml = (*feed)->in_ml();
   platform::Followers followers{sim::BreathFollower(fp), {sim::BreathFollower(fp), sim::BreathFollower(fp)}};
   std::fprintf(stderr, "lungar-breathe: following %s for %.1f s\n", (*feed)->describe().c_str(), seconds);
@@ -152,7 +170,7 @@ int follow(const sim::BreathingScript& script, const std::string& breath, const 
   auto live = platform::parse_physiology_spec(breath);
   if (!live) return fail_with("--breath: " + live.error());
   const double tidal_ml = settings.breathing.tidal_volume_ml;
-  if (!*live) return print_followed(script, breath, tidal_ml, seconds, dt);
+  if (!*live) return print_followed(script, breath, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
   const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
                                                                 : settings.sync.cyclonedds_xml;
   return print_followed_live(script, **live, xml, tidal_ml, seconds.value_or(60.0), dt);
@@ -222,7 +240,8 @@ int main(int argc, char** argv) {
   std::string breath;
   app.add_option("--breath", breath,
                  "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker; "
-                 "a Varian RPM .vxp) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
+                 "an ExtMarker Frame;Timestamp;x;y;z file; a Varian RPM .vxp, its flagged samples as --config's "
+                 "[breathing] rpm_flagged says) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
                  "model_dv_ml, apnoea, irregular (0 | 1); or amm[@DOMAIN], openice[:volume|flow|pressure][@DOMAIN]: "
                  "follow a mannequin or a ventilator over DDS live for --seconds (default 60; Cyclone's XML from "
                  "--config's [sync] cyclonedds_xml)");

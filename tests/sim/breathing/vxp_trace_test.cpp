@@ -1,6 +1,6 @@
 /// @file vxp_trace_test.cpp
-/// @brief Varian RPM .vxp traces: a file as RPM 1.6 writes it is read with its times, its invalid samples skipped
-///        and counted and its peak marks counted, and the follower finds the breaths RPM marked; each way a file
+/// @brief Varian RPM .vxp traces: a file as RPM 1.6 writes it is read with its times, its amplitude in mm
+///        (Scale_factor applied), its flagged samples kept, marked and counted and its peak marks counted, and the follower finds the breaths RPM marked; each way a file
 ///        can be wrong is one line naming the file, the line and what was expected.
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ namespace lungar::sim {
 namespace {
 
 /// 60 s at 30 samples/s, 15 breaths/min, amplitude in cm (0.8 deep), a P mark at each peak and a Z at each
-/// end-exhale; samples 300-314 (half a second) flagged invalid (-1), as when the block leaves the camera's view.
+/// end-exhale; samples 300-314 (half a second) flagged (-1): RPM's verdict, the amplitude still breathing.
 std::string rpm_file(int* peaks = nullptr) {
   std::ostringstream o;
   o << "[Header]\r\nCRC=12345\r\nVersion=1.6\r\nData_layout=amplitude,phase,timestamp,validflag,ttlin,mark,ttlout\r\n"
@@ -45,13 +45,18 @@ TEST(VxpTrace, AnRpmFileIsReadAndFollowedBreathForBreath) {
   auto trace = parse_vxp_trace(in, "rpm.vxp");
   ASSERT_TRUE(trace) << trace.error();
   EXPECT_EQ(trace->format, "vxp");
-  EXPECT_EQ(trace->invalid, 15);
-  EXPECT_EQ(trace->samples.size(), 1800u - 15u);
+  EXPECT_EQ(trace->flagged, 15);
+  ASSERT_EQ(trace->samples.size(), 1800u) << "flagged samples are kept: they are the patient's breathing";
+  EXPECT_FALSE(trace->samples[299].flagged);
+  EXPECT_TRUE(trace->samples[300].flagged);
+  EXPECT_TRUE(trace->samples[314].flagged);
+  EXPECT_FALSE(trace->samples[315].flagged);
+  EXPECT_EQ(without_flagged(*trace).samples.size(), 1800u - 15u) << "rpm_flagged = \"skip\"";
   EXPECT_EQ(trace->peaks_marked, marked);
   EXPECT_DOUBLE_EQ(trace->samples_per_second, 30.0);
   EXPECT_DOUBLE_EQ(trace->samples.front().t_s, 0.0);
   EXPECT_NEAR(trace->samples.back().t_s, 1799 / 30.0, 0.002) << "timestamps in ms, from the first";
-  EXPECT_NEAR(trace->samples.front().value, 1.5, 1e-9) << "the amplitude as written";
+  EXPECT_NEAR(trace->samples.front().value, 15.0, 1e-9) << "1.5 cm times Scale_factor 10: mm";
   BreathFollower f;
   for (const TraceSample& s : trace->samples) f.add(s.t_s, s.value);
   EXPECT_NEAR(f.breaths(), marked, 1) << "the follower finds the breaths RPM marked";
@@ -84,8 +89,10 @@ TEST(VxpTrace, EachWrongFileIsOneLineNamingWhatWasExpected) {
       {replaced(",0,P,0", ",0,Q,0"), ": mark: expected P, Z or nothing, got 'Q'"},
       {replaced("1000000,0,0,Z,0", "1000000,0,0,Z"), "rpm.vxp:14: expected 7 columns"},
       {replaced("1000033,0", "999000,0"), "rpm.vxp:15: timestamp: expected times that increase"},
+      {replaced("1000033,0", "1000000,0"), "rpm.vxp:15: timestamp: expected times that increase"},  // repeated
+      {replaced("Scale_factor=10.0", "Scale_factor=-10"), ": Scale_factor: expected a positive number"},
       {good.substr(0, good.find("[Data]")), "rpm.vxp: expected a [Header] and a [Data] section, got no [Data]"},
-      {good.substr(0, good.find("[Data]") + 8), "rpm.vxp: expected at least two valid samples, got 0"},
+      {good.substr(0, good.find("[Data]") + 8), "rpm.vxp: expected at least two samples, got 0"},
   };
   for (const auto& [text, why] : bad) {
     std::istringstream in(text);

@@ -88,10 +88,12 @@ void BreathFollower::turn_found(bool trough, const Turn& t) {
     return;
   }
   if (!has_low_) return;  // a peak before any trough: no breath to measure yet
+  // Too soon after the last turn of any kind: talking turns three times a second, and every one of its turns
+  // counts, so that a stretch of it never passes for a breath every min_breath_s.
+  const bool too_soon = last_turn_s_ >= 0 && t.t_s - last_turn_s_ < p_.min_breath_s;
   last_turn_s_ = t.t_s;
   const double a = t.value - low_.value;
   if (!(a > 0)) return;
-  const bool too_soon = peak_times_.count > 0 && t.t_s - peak_times_.v[peak_times_.count - 1] < p_.min_breath_s;
   const bool too_shallow = amplitudes_.count > 0 && a < p_.min_depth_share * amplitude();
   if (too_soon || too_shallow) {  // the chest moved, but not a breath: followed, flagged, not learnt from
     irregular_breaths_ += irregular_ ? 0 : 1;
@@ -102,7 +104,10 @@ void BreathFollower::turn_found(bool trough, const Turn& t) {
   irregular_breaths_ += irregular_ ? 1 : 0;
   amplitudes_.push(a);
   peak_times_.push(t.t_s);
-  end_exhales_.push(low_.value);
+  // Bounded slope: the level moves by at most one typical depth a breath, so that a cough's or a shift's deep
+  // exhale (five depths below, in a real recording) does not drag it; a real step is reached over a few breaths.
+  const double level = baseline(), reach = amplitudes_.count > 0 ? amplitude() : a;
+  end_exhales_.push(end_exhales_.count > 0 ? std::clamp(low_.value, level - reach, level + reach) : low_.value);
   has_low_ = false;
   ++breaths_;
 }

@@ -48,13 +48,25 @@ Eigen::Vector3d breathing_axis(const std::vector<double>& t, const std::vector<E
   for (std::size_t i = 0; i < n; ++i) scatter += (p[i] - mean) * (p[i] - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
   const Eigen::Vector3d axis = eig.eigenvectors().col(2);
-  // Inhalation is the shorter phase: the signal spends less time rising than falling. Count the time spent
-  // rising over the window (a 0.2 s difference, so that noise does not count).
+  // Which way is inhalation: two signs of it, which agree in quiet breathing. The chest dwells at end-exhale
+  // and leaves it in the inhale direction only (a sigh, a deep breath: the inspiratory capacity is several tidal
+  // volumes, the reserve below end-exhale is not breathed into), so the excursion's skewness points the inhale
+  // way; and inhalation is the shorter phase, so the signal spends less time rising than falling. A strong tail
+  // (|skewness| >= 1) decides; else the phases do, as the skewness of near-sinusoidal breathing is noise.
+  std::vector<double> x(n);
+  double m = 0;
+  for (std::size_t i = 0; i < n; ++i) m += x[i] = axis.dot(p[i]);
+  m /= static_cast<double>(n);
+  double m2 = 0, m3 = 0;
+  for (double v : x) m2 += (v - m) * (v - m), m3 += (v - m) * (v - m) * (v - m);
+  const double skew = m2 > 0 ? (m3 / static_cast<double>(n)) / std::pow(m2 / static_cast<double>(n), 1.5) : 0.0;
+  if (std::abs(skew) >= 1.0) return skew > 0 ? axis : Eigen::Vector3d(-axis);
+  // Count the time spent rising over the window (a 0.2 s difference, so that noise does not count).
   double rising = 0, falling = 0;
   for (std::size_t i = 1; i < n; ++i) {
     std::size_t j = i;
     while (j > 0 && t[i] - t[j] < 0.2) --j;
-    (axis.dot(p[i]) > axis.dot(p[j]) ? rising : falling) += t[i] - t[i - 1];
+    (x[i] > x[j] ? rising : falling) += t[i] - t[i - 1];
   }
   return rising > falling ? Eigen::Vector3d(-axis) : axis;
 }

@@ -33,6 +33,8 @@ struct BreathTrace {
   int flagged = 0;
   int peaks_marked = 0;              ///< vxp: samples RPM marked P (its own end-inhale peaks), for comparison
   double samples_per_second = 0;     ///< vxp: the header's Samples_per_second
+  int skipped = 0;                   ///< extmarker: rows whose timestamp went back (garbled), dropped
+  int first_skipped_line = 0;        ///< the first of them, for the summary
   double scale_to_mm = 1;            ///< vxp: the header's Scale_factor, applied: values are in mm
 };
 
@@ -53,7 +55,7 @@ Result<BreathTrace> read_breath_trace(const std::string& path);
 Result<BreathTrace> parse_csv_trace(std::istream& in, const std::string& path);
 /// The ExtMarker data set's marker file from `in` (Krilavicius et al.): a header naming Frame, Timestamp, x, y, z,
 /// then `;`-separated rows with decimal commas, the timestamp in ms; a last all-zero row (as some files end) is
-/// skipped.
+/// skipped, and so are rows whose timestamp goes back (counted in `skipped`; more than 1 % of them is an error).
 Result<BreathTrace> parse_extmarker_trace(std::istream& in, const std::string& path);
 /// Times that are seconds: a median interval between samples from 1 ms to 2 s (a respiratory surrogate is sampled
 /// at 0.5 to 1000 Hz). A trace in ms under a `t_s` header fails here, named, instead of never locking on.

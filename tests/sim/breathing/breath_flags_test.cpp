@@ -18,6 +18,7 @@ struct Script {
   double seconds = 60;
   std::vector<std::pair<int, double>> deeper;  ///< breath n, depth factor
   double hold_from = -1, hold_to = -1, gap_from = -1, gap_to = -1, pause_after = -1;
+  double talk_from = -1, talk_to = -1;  ///< talking instead of breathing: 3 Hz, 4 units peak to peak
 };
 
 struct Flags {
@@ -46,6 +47,7 @@ Flags run(const Script& s) {
     const double u = std::min((t - start) / 4.0, 1.0);
     double v = 10.0 * depth * (u < 1.0 / 3 ? 0.5 - 0.5 * std::cos(3 * M_PI * u) : std::exp(-6.0 * (u - 1.0 / 3)));
     if (t >= s.hold_from && t < s.hold_to) v = 0.0;
+    if (t >= s.talk_from && t < s.talk_to) v = 3.0 + 2.0 * std::sin(2 * M_PI * 3.0 * t);
     if (!(t >= s.gap_from && t < s.gap_to)) f.add(t, v);
     r.t.push_back(t);
     r.out.push_back(f.at(t, 0.0));
@@ -89,6 +91,25 @@ TEST(BreathFlags, APauseBetweenBreathsIsIrregular) {
   Script s;
   s.pause_after = 4.0;  // one 8-s breath: twice the median period
   EXPECT_EQ(run(s).irregular, 1);
+}
+
+TEST(BreathFlags, TalkingIsFlaggedAndDoesNotRescaleTheBreathsAfterIt) {
+  Script s;
+  s.talk_from = 20.0;  // 20 s of talking: 60 turns, each a fifth of a breath's time and 0.4 of its depth
+  s.talk_to = 40.0;
+  const Flags f = run(s);
+  double during = 0, after = 0;
+  bool flagged = false;
+  for (std::size_t i = 0; i < f.t.size(); ++i) {
+    if (f.t[i] >= 22.0 && f.t[i] < 40.0) flagged = flagged || f.out[i].irregular;
+    if (f.t[i] >= 22.0 && f.t[i] < 40.0) during = std::max(during, f.out[i].dv_ml);
+    if (f.t[i] >= 44.0 && f.t[i] < 56.0) after = std::max(after, f.out[i].dv_ml);
+  }
+  EXPECT_TRUE(flagged);
+  EXPECT_GT(during, 100.0) << "the chest moves while talking, and so do the lungs";
+  EXPECT_LT(during, 400.0) << "but by less than a breath";
+  // A breath after the talking is a breath: V_T, not V_T scaled by the talking's smaller turns (1,150 mL).
+  EXPECT_NEAR(after, 500.0, 75.0);
 }
 
 TEST(BreathFlags, HoldingTheBreathFifteenSecondsIsOneApnoeaFromTenSecondsOn) {

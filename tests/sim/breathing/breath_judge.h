@@ -65,6 +65,17 @@ inline std::vector<double> detrended(const std::vector<double>& t, const std::ve
   return out;
 }
 
+/// Pearson's correlation of `a` and `b` (the same length).
+inline double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const auto n = static_cast<double>(a.size());
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    sab += (a[i] - ma) * (b[i] - mb), saa += (a[i] - ma) * (a[i] - ma), sbb += (b[i] - mb) * (b[i] - mb);
+  return sab / std::sqrt(saa * sbb);
+}
+
 /// The figures of dV (`dv` at times `lt`, every 10 ms from 0) against the marker recording `m`.
 inline BreathFigures judge(const MarkerRecording& m, const std::vector<double>& lt, const std::vector<double>& dv) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -84,13 +95,8 @@ inline BreathFigures judge(const MarkerRecording& m, const std::vector<double>& 
   }
   const std::vector<double> a = detrended(t, marker, 8.0), b = detrended(t, followed, 8.0);
   const auto n = static_cast<double>(a.size());
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    sab += (a[i] - ma) * (b[i] - mb), saa += (a[i] - ma) * (a[i] - ma), sbb += (b[i] - mb) * (b[i] - mb);
   BreathFigures f;
-  f.corr = std::abs(sab / std::sqrt(saa * sbb));
+  f.corr = std::abs(correlation(a, b));
   // The main period: the strongest bin of the detrended marker's spectrum (bin k is k / (N dt)).
   std::vector<double> dts;
   for (std::size_t i = 1; i < t.size(); ++i) dts.push_back(t[i] - t[i - 1]);

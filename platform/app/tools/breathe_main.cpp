@@ -104,6 +104,9 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
   auto trace = sim::read_breath_trace(trace_path);
   if (!trace) return fail_with(trace.error());
   const int flagged = trace->flagged;
+  if (trace->skipped > 0)
+    std::fprintf(stderr, "lungar-breathe: %s: %d rows whose time went back dropped (the first at line %d)\n",
+                 trace_path.c_str(), trace->skipped, trace->first_skipped_line);
   const bool skip = rpm_flagged == "skip";
   if (skip) trace = sim::without_flagged(trace.take());
   sim::BreathFollower follower(follower_params(script, tidal_ml));

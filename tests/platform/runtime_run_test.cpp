@@ -259,6 +259,10 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   EXPECT_GT(j["breath_following_s"].get<double>(), 2.0);
   EXPECT_NE(j["breath_state"], "following") << "the trace ended at 7 s";
   EXPECT_NEAR(j["volume_ml_max"].get<double>(), 500.0, 30.0);
+  EXPECT_EQ(j["breath_flagged_samples"].get<long>(), 0);
+  EXPECT_EQ(j["breath_bounded_samples"].get<long>(), 0) << "a clean trace never reaches dV's bounds";
+  EXPECT_GT(j["breath_max_ml"].get<double>(), 1000.0) << "the normal preset's inspiratory capacity, at most 3 V_T";
+  EXPECT_LE(j["breath_max_ml"].get<double>(), 1500.0);
   // The same trace named in the settings ([breathing] source) rather than on the command line.
   options.breath_path.clear();
   settings.breathing.source = trace;
@@ -270,6 +274,36 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   std::ofstream(trace) << "t_s,value\n0,1\n0,2\n";
   options.seconds = 1.0;
   EXPECT_NE(platform::run_runtime(settings, options), 0);
+}
+
+// An RPM trace whose middle breaths RPM flagged (a negative validflag: its gating verdict, the amplitude still
+// breathing): followed through them and counted by default; with [breathing] rpm_flagged = "skip" the follower
+// loses the signal there and follows for less of the run.
+TEST_F(RuntimeRun, AnRpmTracesFlaggedBreathsAreFollowedUnlessTheSiteSkipsThem) {
+  std::filesystem::create_directories(dir);
+  const std::string trace = (dir / "rpm.vxp").string();
+  {
+    std::ofstream o(trace);
+    o << "[Header]\nData_layout=amplitude,phase,timestamp,validflag,ttlin,mark,ttlout\nSamples_per_second=25\n"
+         "Scale_factor=10.0\n[Data]\n";
+    for (int i = 0; i < 12 * 25; ++i)  // 30 breaths a minute for 12 s, 6 mm deep, the breaths of 6-9 s flagged
+      o << 2.0 + 0.6 * std::pow(std::sin(M_PI * i / 25.0 / 2.0), 2) << ",0," << 40 * i << ","
+        << (i >= 6 * 25 && i < 9 * 25 ? -1 : 0) << ",0,,0\n";
+  }
+  options.breath_path = trace;
+  options.frames.reset();
+  options.seconds = 11.5;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto followed = stats();
+  EXPECT_EQ(followed["breath_format"], "vxp");
+  EXPECT_EQ(followed["breath_flagged_samples"].get<long>(), 75);
+  settings.breathing.rpm_flagged = "skip";
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto skipped = stats();
+  settings.breathing.rpm_flagged = "follow";
+  EXPECT_EQ(skipped["breath_flagged_samples"].get<long>(), 0) << "none left to follow";
+  // Following from the second breath (~5 s) to the end, against losing it at 6.5 s until a breath after 9 s.
+  EXPECT_GT(followed["breath_following_s"].get<double>(), skipped["breath_following_s"].get<double>() + 2.5);
 }
 
 // --breath marker:stylus: a marker on the chest, replayed live from a PLUS sequence, moves 8 mm along an oblique

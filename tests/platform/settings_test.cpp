@@ -39,6 +39,7 @@ TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   EXPECT_EQ(s.render.color_left, d.render.color_left);
   EXPECT_EQ(s.breathing.preset, d.breathing.preset);
   EXPECT_DOUBLE_EQ(s.breathing.tidal_volume_ml, d.breathing.tidal_volume_ml);
+  EXPECT_EQ(s.breathing.rpm_flagged, d.breathing.rpm_flagged);
   EXPECT_EQ(s.sync.role, d.sync.role);
   EXPECT_EQ(s.sync.classroom, d.sync.classroom);
   EXPECT_EQ(s.sync.domain, d.sync.domain);
@@ -192,6 +193,11 @@ TEST(BadConfig, UnknownPreset) {
   EXPECT_EQ(error_of("[breathing]\npreset = \"asthma\"\n"),
             "bad.toml:2: key 'breathing.preset': expected one of \"normal\" | \"emphysema\" | \"fibrosis\", got the "
             "string \"asthma\"");
+}
+
+TEST(BadConfig, RpmFlaggedIsFollowOrSkip) {
+  EXPECT_EQ(error_of("[breathing]\nrpm_flagged = \"drop\"\n"),
+            "bad.toml:2: key 'breathing.rpm_flagged': expected one of \"follow\" | \"skip\", got the string \"drop\"");
 }
 
 TEST(BadConfig, ArrayOfTheWrongLength) {

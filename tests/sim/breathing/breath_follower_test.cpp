@@ -187,13 +187,53 @@ TEST(BreathTrace, AMarkerIsReadAlongItsBreathingAxisInhaleUp) {
   const std::pair<const char*, const char*> bad[] = {{"time,value\n0,1\n", ":1: header"},
                                                      {"t_s,value\n0,1\n0.1,x\n", ":3: expected finite numbers"},
                                                      {"t_s,value\n0,1\n0,2\n", ":3: t_s: expected times that increase"},
-                                                     {"t_s,value\n0,1,2\n", ":2: expected 2 numbers"}};
+                                                     {"t_s,value\n0,1,2\n", ":2: expected 2 numbers"},
+                                                     // milliseconds under a t_s header: it would never lock on
+                                                     {"t_s,value\n0,1\n40,2\n80,3\n120,2\n",
+                                                      ": t_s: expected times in seconds (a median interval from "
+                                                      "0.001 to 2 s), got a median of 40 s"},
+                                                     {"t_s,value\n0,1\n0.0002,2\n0.0004,3\n",
+                                                      ": t_s: expected times in seconds"},
+                                                     {"\"Frame\";\"Time\";\"x\"\n0;0;1\n", ":1: header: expected ExtMarker's"},
+                                                     {"\"Frame\";\"Timestamp\";\"x\";\"y\";\"z\"\n0;0;1,5;2;3\n6;100;1;2\n",
+                                                      ":3: expected 5 fields"}};
   for (const auto& [text, why] : bad) {
     std::ofstream(path) << text;
     auto r = read_breath_trace(path);
     ASSERT_FALSE(r) << text;
     EXPECT_NE(r.error().find(path + why), std::string::npos) << r.error();
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BreathTrace, AnExtMarkerFileDropsAGarbledTimeAndRefusesMany) {
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_extmarker_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "marker.csv").string();
+  const auto write = [&](int garbled) {  // 300 rows at 10 Hz, decimal commas, `garbled` times gone back
+    std::ofstream o(path);
+    o << "\"Frame\";\"Timestamp\";\"x\";\"y\";\"z\"\n";
+    for (int i = 0; i < 300; ++i) {
+      const int ms = i % 50 == 25 && i / 50 < garbled ? 89 : 100 * i;
+      o << 6 * i << ";" << ms << ";-290,2;" << (i % 40 < 13 ? i % 40 : 13 - (i % 40 - 13) / 2) << ",5;96,7\n";
+    }
+    o << "0;0;0;0;0\n";  // as some of the set's files end
+  };
+  write(1);
+  auto one = read_breath_trace(path);
+  ASSERT_TRUE(one) << one.error();
+  EXPECT_EQ(one->format, "extmarker");
+  EXPECT_TRUE(one->marker);
+  EXPECT_EQ(one->skipped, 1);
+  EXPECT_EQ(one->first_skipped_line, 27);
+  EXPECT_EQ(one->samples.size(), 299u) << "the garbled row and the zero row dropped";
+  EXPECT_NEAR(one->samples.back().t_s, 29.9, 1e-9) << "ms read as s";
+  write(6);  // 2 % of the rows
+  auto many = read_breath_trace(path);
+  ASSERT_FALSE(many);
+  EXPECT_NE(many.error().find(path + ":27: Timestamp: expected times (ms) that increase, got 6 rows"),
+            std::string::npos)
+      << many.error();
   std::filesystem::remove_all(dir);
 }
 

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -22,6 +23,7 @@
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/settings_load.h"
 #include "platform/sync/classroom_station.h"
+#include "sim/breathing/breath_clarity.h"
 #include "sim/breathing/breath_follower.h"
 #include "sim/breathing/breath_trace.h"
 #include "sim/breathing/exhale_path.h"
@@ -167,12 +169,47 @@ int print_followed_live(const sim::BreathingScript& script, const platform::Phys
   return 0;
 }
 
-/// --breath: a recorded trace, or a live source over DDS (amm, openice).
-int follow(const sim::BreathingScript& script, const std::string& breath, const platform::Settings& settings,
-           std::optional<double> seconds, double dt) {
+/// Several recordings given (--breath A --breath B ...): the one whose breathing is clearest (breath_clarity.h),
+/// each one's clarity said on stderr; or the one error that stops them being compared.
+Result<std::string> clearest_of(const std::vector<std::string>& paths) {
+  std::vector<sim::BreathTrace> traces;
+  for (const std::string& path : paths) {
+    auto trace = sim::read_breath_trace(path);
+    if (!trace) return Error{trace.error()};
+    traces.push_back(trace.take());
+  }
+  std::vector<double> clarity;
+  const std::size_t best = sim::clearest_breathing(traces, &clarity);
+  std::string others;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.2f", clarity[i]);
+    if (i != best) others += (others.empty() ? "" : ", ") + paths[i] + " " + share;
+  }
+  std::fprintf(stderr,
+               "lungar-breathe: following %s, the clearest breathing of %zu (its share of power at 6-42/min over "
+               "the first 60 s: %.2f; %s)\n",
+               paths[best].c_str(), paths.size(), clarity[best], others.c_str());
+  return paths[best];
+}
+
+/// --breath: a recorded trace (the clearest of several), or a live source over DDS (amm, openice).
+int follow(const sim::BreathingScript& script, const std::vector<std::string>& breaths,
+           const platform::Settings& settings, std::optional<double> seconds, double dt) {
+  std::string breath = breaths.front();
+  const double tidal_ml = settings.breathing.tidal_volume_ml;
+  if (breaths.size() > 1) {
+    for (const std::string& b : breaths) {
+      auto live = platform::parse_physiology_spec(b);
+      if (!live) return fail_with("--breath: " + live.error());
+      if (*live) return fail_with("--breath: several sources are compared only as recordings, got '" + b + "'");
+    }
+    auto best = clearest_of(breaths);
+    if (!best) return fail_with(best.error());
+    return print_followed(script, *best, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
+  }
   auto live = platform::parse_physiology_spec(breath);
   if (!live) return fail_with("--breath: " + live.error());
-  const double tidal_ml = settings.breathing.tidal_volume_ml;
   if (!*live) return print_followed(script, breath, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
   const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
                                                                 : settings.sync.cyclonedds_xml;
@@ -240,11 +277,11 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long to run, s (default: the scenario's duration_s, else 60)")
       ->check(CLI::Range(0.0, 86400.0));
   app.add_option("--dt", dt, "time step of the series, s (default 0.01)")->check(CLI::Range(1e-4, 10.0));
-  std::string breath;
+  std::vector<std::string> breath;
   app.add_option("--breath", breath,
                  "FILE: follow a recorded respiratory surrogate (CSV t_s,value, or t_s,x_mm,y_mm,z_mm for a marker; "
                  "an ExtMarker Frame;Timestamp;x;y;z file; a Varian RPM .vxp, its flagged samples as --config's "
-                 "[breathing] rpm_flagged says) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
+                 "[breathing] rpm_flagged says; given several times, the one whose breathing is clearest) and print t_s, dv_ml, breath_state (following | holding | model), surrogate, "
                  "model_dv_ml, apnoea, irregular (0 | 1); or amm[@DOMAIN], openice[:volume|flow|pressure][@DOMAIN]: "
                  "follow a mannequin or a ventilator over DDS live for --seconds (default 60; Cyclone's XML from "
                  "--config's [sync] cyclonedds_xml)");

@@ -182,6 +182,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
     for (const std::string& spec : o.pathologies) {
       if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) return p.with_context("--pathology: ");
     }
+    if (Status distinct = sim::check_pathologies(o.pathologies); !distinct) return distinct.with_context("--pathology: ");
     s.sim.pathologies = o.pathologies;
   }
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;

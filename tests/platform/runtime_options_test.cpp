@@ -121,3 +121,17 @@ TEST(RuntimeOptions, BadValuesAreNamed) {
   o.frames = 0;
   EXPECT_EQ(apply_overrides(o, s).error(), "--frames: expected a positive number of frames, got 0");
 }
+
+TEST(RuntimeOptions, TheSamePathologyGivenTwiceIsRefusedNamingBoth) {
+  lungar::platform::Settings s;
+  RuntimeOptions o;
+  o.pathologies = {"pneumothorax:right:30", "pneumothorax:right:30"};
+  const lungar::Status twice = apply_overrides(o, s);
+  ASSERT_FALSE(twice);
+  EXPECT_EQ(twice.error().rfind("--pathology: pathology 'pneumothorax:right:30': repeats 'pneumothorax:right:30'", 0),
+            0u)
+      << twice.error();
+  EXPECT_TRUE(s.sim.pathologies.empty()) << "nothing taken";
+  o.pathologies = {"pneumothorax:right:30", "pneumothorax:left:30"};
+  EXPECT_TRUE(apply_overrides(o, s));
+}

@@ -96,6 +96,9 @@ TEST(Settings, PathologiesAreReadAndABadOneNamesTheFileTheFieldAndTheSpec) {
   EXPECT_NE(e.find("pathology"), std::string::npos) << e;
   EXPECT_NE(e.find("'pneumothorax:right:300'"), std::string::npos) << e;
   EXPECT_NE(e.find("PERCENT"), std::string::npos) << e;
+  const std::string twice = error_of("[sim]\npathology = [\"emphysema:0.4\", \"emphysema:0.6:left\"]\n");
+  EXPECT_NE(twice.find("bad.toml"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("'emphysema:0.6:left': repeats 'emphysema:0.4'"), std::string::npos) << twice;
 }
 
 TEST(Settings, OpenXrOutputAndItsHead) {

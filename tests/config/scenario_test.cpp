@@ -248,3 +248,19 @@ TEST(BadScenario, SyntaxErrorAndMissingFile) {
   EXPECT_EQ(load_scenario("/nonexistent/s.toml").error(),
             "/nonexistent/s.toml: cannot read the scenario: expected a TOML file, got no such file");
 }
+
+// An empty scenario was accepted, and the log still said it breathes and turns the patient: it is refused in one
+// line naming the file; a scenario with only a start, only a pathology or only an event is one.
+TEST(Scenario, AnEmptyScenarioIsRefusedNamingTheFile) {
+  for (const std::string toml : {"", "name = \"nothing\"\nduration_s = 30.0\n", "# only comments\n"}) {
+    const std::string e = error_of(toml);
+    EXPECT_EQ(e.rfind("bad.toml: ", 0), 0u) << e;
+    EXPECT_NE(e.find("expected a scenario: at least one [[event]], a [start] table or a pathology list"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  }
+  ok("[start]\n");
+  ok("pathology = [\"ards:0.6\"]\n");
+  ok("[[event]]\nat_s = 1.0\nkind = \"sigh\"\n");
+}

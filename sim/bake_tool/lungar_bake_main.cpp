@@ -108,6 +108,9 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
       ->check(CLI::Range(1u, 8u))->capture_default_str();
   app.add_option("--units", cmd.units, "units of the mesh files")->check(CLI::IsMember({"mm", "cm", "m"}))
       ->capture_default_str();
+  app.add_flag("--any-volume", cmd.any_volume,
+               "bake lungs enclosing less than 30 mL or more than 8000 mL each (refused otherwise: the units are "
+               "likely wrong)");
   add_enum_option(app, "--model", cmd.options.model, lungar::sim::kMotionModelNames,
                   "how the surface moves (sliding: driven by the diaphragm, sliding along the chest wall, held at the "
                   "mediastinum; paper: every vertex along its normal, the paper's)");

@@ -121,6 +121,8 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--tracker", o.tracker,
                  "tracker source: mock | replay:FILE.trk | hid | igtl[:HOST[:PORT]] (OpenIGTLink, PlusServer or 3D "
                  "Slicer; default: from the config)");
+  app.add_flag("--replay-truncated", o.replay_truncated,
+               "replay a truncated .trk (a recording cut short) as far as it goes instead of refusing it");
 }
 
 /// Where the frames go, how they are drawn, for how long, and what is kept of the run.
@@ -190,6 +192,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (o.fullscreen) s.display.output = Output::Fullscreen;
   if (o.headless) s.display.output = Output::Headless;
   if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
+  if (o.replay_truncated) s.trackers.replay_truncated = true;
   if (Status v = override_view(o.view, s); !v) return v;
   if (Status m = override_choice("--mode", o.mode, render::kDrawModeNames, s.render.mode); !m) return m;
   if (Status d = override_choice("--deform", o.deform, kDeformNames, s.render.deform); !d) return d;

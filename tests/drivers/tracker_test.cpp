@@ -142,6 +142,29 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   EXPECT_EQ(log->records.front().source, TrkSource::Mock);
 }
 
+// A truncated .trk (a recording cut short) replayed without a word, though lungar-trk info knew: it is refused in
+// one line naming the file and the way to replay it anyway, which then replays the records it holds.
+TEST(Tracker, ATruncatedLogIsRefusedUnlessReplayTruncatedIsGiven) {
+  const std::filesystem::path cut =
+      std::filesystem::temp_directory_path() / ("lungar_truncated_" + std::to_string(::getpid()) + ".trk");
+  std::filesystem::copy_file(lungar::testing::tracker_data("upright_to_supine.trk"), cut,
+                             std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(cut, std::filesystem::file_size(cut) - 7);
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
+  t.replay_file = cut.string();
+  t.replay_realtime = false;
+  const auto refused = make_tracker(t, quiet());
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().rfind(cut.string() + ": the log is truncated", 0), 0u) << refused.error();
+  EXPECT_NE(refused.error().find("--replay-truncated"), std::string::npos) << refused.error();
+  EXPECT_EQ(refused.error().find('\n'), std::string::npos);
+  t.replay_truncated = true;
+  const auto replayed = make_tracker(t, quiet());
+  EXPECT_TRUE(replayed) << replayed.error();
+  std::filesystem::remove(cut);
+}
+
 TEST(Tracker, BadSettingsAreOneLineErrors) {
   TrackerConfig t;
   t.source = TrackerSource::Replay;

@@ -19,6 +19,7 @@
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "lungar/version.h"
 
@@ -257,7 +258,11 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--head", serve_opts.head, "device name of the head pose (\"\": not sent)");
   serve_cmd->add_option("--patient", serve_opts.patient, "device name of the patient pose (\"\": not sent)");
   serve_cmd->add_option("--stylus", serve_opts.stylus, "device name of the stylus pose (default: not sent)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return lungar::exit_on_parse_error(app, e, "lungar-trk");
+  }
 
   if (info_cmd->parsed()) return info(file);
   if (dump_cmd->parsed()) return dump(file, format, config_path);

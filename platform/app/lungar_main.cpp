@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "config/config_paths.h"
 #include "lungar/version.h"
@@ -165,7 +166,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return lungar::exit_on_parse_error(app, e, "lungar");
   }
   if (const std::optional<int> rc = run_command(commands, o)) return *rc;
 

@@ -11,6 +11,7 @@
 #include <vector>
 #include <unistd.h>
 
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
@@ -211,13 +212,8 @@ int main(int argc, char** argv) {
     if (!cmd.procedural && cmd.meshes.empty() && cmd.labelmap.empty())
       throw CLI::RequiredError("--procedural, --mesh FILE or --labelmap FILE");
     if (cmd.out.empty()) throw CLI::RequiredError("--out");
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "lungar-bake: %s (see --help)\n", e.what());
-    return 2;
+    return lungar::exit_on_parse_error(app, e, "lungar-bake");
   }
 
   cmd.options.cancel = &g_interrupted;

@@ -107,8 +107,9 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);
   app.add_option("--pathology", o.pathologies,
-                 "SPEC, repeatable: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION or emphysema:SEVERITY[:SIDE] "
-                 "(default: sim.pathology)")
+                 "SPEC, repeatable, each pathology once: pneumothorax:SIDE:PERCENT[:tension], "
+                 "consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE left or right, PERCENT 1 "
+                 "to 90, REGION upper, middle or lower, SEVERITY 0 to 1; default: sim.pathology)")
       ->allow_extra_args(false);
   app.add_option("--breath", o.breath_path,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "

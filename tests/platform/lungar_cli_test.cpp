@@ -2,7 +2,7 @@
 /// @brief Every tool as a user runs it from a shell, where the command line goes wrong: a refused command line is
 ///        one line on stderr naming the tool, exit 2 (CLI11's own codes were 104-114, without the tool's name);
 ///        --help and --version exit 0. And `lungar`'s own checks of what it was given: the same pathology twice,
-///        exit 2 before anything runs.
+///        exit 2 before anything runs; --help lists every pathology.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -97,4 +97,18 @@ TEST(ToolCommandLines, TheSamePathologyTwiceStopsLungarWithOneLineAndExitTwo) {
   EXPECT_EQ(r.err.substr(r.err.find("\nlungar: --pathology") + 1),
             "lungar: --pathology: pathology 'pneumothorax:right:20': repeats 'pneumothorax:right:30': expected one "
             "pneumothorax a lung (give its size once; a second one would collapse the lung again)\n");
+}
+
+// The help left out ards and :tension, which the runtime takes.
+TEST(ToolCommandLines, LungarsHelpListsEveryPathology) {
+  const lungar::testing::ScratchDir root("lungar_cli");
+  const Ran r = run("platform/lungar", "--help", root.path());
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::size_t at = r.out.find("--pathology");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string help = r.out.substr(at, r.out.find("--breath", at) - at);
+  for (const char* spec : {"pneumothorax:SIDE:PERCENT[:tension]", "consolidation:SIDE:REGION",
+                           "emphysema:SEVERITY[:SIDE]", "ards:SEVERITY"}) {
+    EXPECT_NE(help.find(spec), std::string::npos) << spec << " is not in:\n" << help;
+  }
 }

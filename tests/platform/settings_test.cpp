@@ -76,6 +76,18 @@ TEST(Settings, EveryKeyOfTheShippedProfileIsDocumentedWithAComment) {
   EXPECT_GT(keys, 40);
 }
 
+// An empty sim.asset draws the demo's CT lungs (platform/app/demo_asset.h); the profile said the procedural pair.
+TEST(Settings, TheShippedProfileSaysWhatAnEmptyAssetDraws) {
+  std::ifstream in(kDefaultToml);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("asset = ", 0) != 0) {
+  }
+  ASSERT_EQ(line.rfind("asset = \"\"", 0), 0u) << "no empty [sim] asset in " << kDefaultToml;
+  const std::string comment = line.substr(line.find('#'));
+  EXPECT_NE(comment.find("\"\" = the demo's CT lungs"), std::string::npos) << comment;
+  EXPECT_EQ(comment.find("\"\" = the cached procedural pair"), std::string::npos) << comment;
+}
+
 TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
   auto r = load_settings_from_string("[render]\npoint_size_px = 3\n[hmd]\nview = \"mono\"\n", "x.toml");
   ASSERT_TRUE(r) << r.error();

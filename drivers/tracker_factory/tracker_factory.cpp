@@ -107,6 +107,7 @@ Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, con
     if (!recording) return fail(recording.error());
   }
   core->log(-1, "tracker: %s", (*device)->describe().c_str());
+  if (!options.record_path.empty()) core->log(-1, "recording the tracker's reports into %s", options.record_path.c_str());
   if (settings.source == TrackerSource::Replay && settings.replay_truncated) {
     core->log(-1, "replay %s: a truncated log is replayed as far as it goes (--replay-truncated)",
               settings.replay_file.c_str());

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -108,10 +109,26 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   t.stale_ms = 50;
   TrackerOptions o = quiet();
   o.record_path = rec;
+  struct Logged {
+    std::mutex mutex;
+    std::vector<std::string> lines;
+  };
+  auto logged = std::make_shared<Logged>();
+  o.log = [logged](const std::string& line) {
+    const std::lock_guard<std::mutex> lock(logged->mutex);
+    logged->lines.push_back(line);
+  };
   auto made = make_tracker(t, o);
   ASSERT_TRUE(made) << made.error();
   Tracker& tr = **made;
   EXPECT_EQ(tr.describe(), "mock upright_to_supine");
+  // --record says where it writes (it did not: a bare --record's file was found only in the folder).
+  {
+    const std::lock_guard<std::mutex> lock(logged->mutex);
+    EXPECT_TRUE(std::any_of(logged->lines.begin(), logged->lines.end(), [&](const std::string& line) {
+      return line.find("recording the tracker's reports into " + rec) != std::string::npos;
+    })) << "no line names " << rec;
+  }
   ASSERT_TRUE(eventually([&] { return tr.stats().accepted >= 100; }));
   EXPECT_EQ(tr.state(), TrackerState::Streaming);
   const PoseSample head = tr.latest(Role::Head, monotonic_ns());

@@ -286,7 +286,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     return 2;
   }
   breathe_as_the_pathologies_do(s);
-  log_line(summarize(s));
+  log_line(summarize(s, scenario ? &*scenario : nullptr));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
   std::shared_ptr<PathologyCourse> course;

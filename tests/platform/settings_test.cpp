@@ -7,6 +7,7 @@
 #include <cctype>
 #include <string>
 
+#include "config/scenario_load.h"
 #include "platform/app/settings_load.h"
 
 using lungar::platform::load_settings;
@@ -301,4 +302,17 @@ TEST(Settings, EveryShippedTrackerProfileLoadsAsAWholeConfig) {
     ++n;
   }
   EXPECT_GE(n, 3);
+}
+
+// The log line named the settings' breathing (12/min, 500 mL) while the ARDS scenario breathed 20/min, 420 mL.
+TEST(Settings, TheSummaryNamesTheBreathingOfTheScenarioThatRuns) {
+  const lungar::platform::Settings s;
+  const auto scenario =
+      lungar::config::load_scenario(std::string(LUNGAR_SOURCE_DIR) + "/config/scenarios/ards-proning.toml", s.breathing);
+  ASSERT_TRUE(scenario) << scenario.error();
+  const std::string line = lungar::platform::summarize(s, &*scenario);
+  EXPECT_NE(line.find("breathing normal 20/min V_T 420 mL (the scenario ards proning's start)"), std::string::npos)
+      << line;
+  EXPECT_NE(lungar::platform::summarize(s).find("breathing normal 12/min V_T 500 mL, tracker"), std::string::npos)
+      << lungar::platform::summarize(s);
 }

@@ -300,7 +300,7 @@ Status check_pathologies(const std::vector<std::string>& specs) {
           expected = "one emphysema a lung (emphysema:SEVERITY without SIDE is both lungs')";
           break;
         case PathologyKind::Ards:
-          expected = "one ARDS (give its severity once)";
+          expected = "one ARDS (it is given twice: give its severity once)";
           break;
       }
       return bad(spec, "repeats '" + before.spec + "': expected " + expected);

@@ -25,7 +25,7 @@ plot.find_binary = lambda build_dir: "lungar-breathe"
 # lungar-breathe's CSV: every column 0, a row per preset.
 plot.breathe = lambda binary, *args: [collections.defaultdict(lambda: "0", preset=name) for name in plot.COLOURS]
 followed = []
-plot.plot_follow = lambda binary, out: followed.append(out)
+plot.plot_follow = lambda binary, out, *more: followed.append(out)  # more: a recording to plot, where given
 
 failed = []
 with tempfile.TemporaryDirectory() as tmp:

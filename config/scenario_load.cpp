@@ -236,6 +236,12 @@ Result<Scenario> parse(const std::string& text, const std::string& name, const B
                                        static_cast<int>(k)));
       }
     }
+    if (sc.events.empty() && sc.pathologies.empty() && root.get("start") == nullptr) {
+      // Nothing to run: the log would still say the scenario breathes and turns the patient.
+      throw ConfigError(name +
+                        ": expected a scenario: at least one [[event]], a [start] table or a pathology list, got "
+                        "none (config/scenarios/teaching.toml shows each)");
+    }
     std::stable_sort(sc.events.begin(), sc.events.end(),
                      [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at_s < b.at_s; });
     check_timeline(sc);

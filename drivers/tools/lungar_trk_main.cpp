@@ -19,6 +19,7 @@
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "drivers/trk/trk_writer.h"
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "lungar/version.h"
 
@@ -39,6 +40,47 @@ Result<TrackerConfig> settings_for(const TrkLog& log, const std::string& file, c
     return fail(file + ": the log does not describe its report layout: expected --config FILE.toml");
   }
   return tracker_config_from_toml(log.header.layout_toml, file + " (header layout)");
+}
+
+/// Each sensor's reports per second, as the header's rate_hz counts them (a record carries one sensor's report, or
+/// an OpenIGTLink message with one or more poses), decoded with the log's own layout; "" when it has none.
+std::string sensor_rates(const TrkLog& log, const std::string& file) {
+  if (log.header.layout_toml.empty()) return "";
+  auto settings = settings_for(log, file, "");
+  if (!settings) return "";
+  auto layout = make_layout(*settings);
+  auto igtl_layout = make_igtl_layout(*settings);
+  if (!layout || !igtl_layout) return "";
+  struct Seen {
+    std::size_t count = 0;
+    std::int64_t first_ns = 0, last_ns = 0;
+  };
+  std::map<std::string, Seen> roles;
+  for (const auto& rec : log.records) {
+    const DecodedReport d = rec.source == TrkSource::Igtl ? decode_igtl_message(rec.report, *igtl_layout)
+                                                          : decode_report(rec.report, *layout);
+    for (int k = 0; d.error == DecodeError::None && k < d.count; ++k) {
+      Seen& s = roles[to_string(d.poses[k].role)];
+      if (s.count++ == 0) s.first_ns = rec.t_arrival_ns;
+      s.last_ns = rec.t_arrival_ns;
+    }
+  }
+  double sum = 0;
+  int rated = 0;
+  std::string each;
+  for (const auto& [role, s] : roles) {
+    if (s.count < 2 || s.last_ns <= s.first_ns) continue;
+    const double hz = static_cast<double>(s.count - 1) / (static_cast<double>(s.last_ns - s.first_ns) * 1e-9);
+    char part[64];
+    std::snprintf(part, sizeof part, "%s%s %.2f", each.empty() ? "" : ", ", role.c_str(), hz);
+    each += part;
+    sum += hz;
+    ++rated;
+  }
+  if (rated == 0) return "";
+  char line[128];
+  std::snprintf(line, sizeof line, "rate_hz: %.2f (each sensor's reports per second: ", sum / rated);
+  return line + each + ")";
 }
 
 int info(const std::string& file) {
@@ -64,7 +106,9 @@ int info(const std::string& file) {
                            ? static_cast<double>(log.records.back().t_arrival_ns - log.records.front().t_arrival_ns) * 1e-9
                            : 0.0;
   std::printf("records: %zu\nduration_s: %.3f\n", log.records.size(), dur_s);
-  if (dur_s > 0) std::printf("rate_hz: %.2f\n", static_cast<double>(log.records.size() - 1) / dur_s);
+  // The header's rate_hz is each sensor's; the records of all sensors together come that many times more often.
+  if (dur_s > 0) std::printf("records_per_s: %.2f\n", static_cast<double>(log.records.size() - 1) / dur_s);
+  if (const std::string rates = sensor_rates(log, file); !rates.empty()) std::printf("%s\n", rates.c_str());
   for (const auto& [k, v] : sources) std::printf("source %s: %zu\n", k.c_str(), v);
   for (const auto& [k, v] : lengths) std::printf("report length %s: %zu\n", k.c_str(), v);
   std::printf("layout: %s\ntruncated_tail: %s\n", log.header.layout_toml.empty() ? "absent" : "present",
@@ -257,7 +301,11 @@ int main(int argc, char** argv) {
   serve_cmd->add_option("--head", serve_opts.head, "device name of the head pose (\"\": not sent)");
   serve_cmd->add_option("--patient", serve_opts.patient, "device name of the patient pose (\"\": not sent)");
   serve_cmd->add_option("--stylus", serve_opts.stylus, "device name of the stylus pose (default: not sent)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return lungar::exit_on_parse_error(app, e, "lungar-trk");
+  }
 
   if (info_cmd->parsed()) return info(file);
   if (dump_cmd->parsed()) return dump(file, format, config_path);

@@ -145,6 +145,7 @@ struct TrackerConfig {
   std::string replay_file;
   bool replay_realtime = true;
   bool replay_loop = false;         ///< start the log again at its end
+  bool replay_truncated = false;    ///< replay a log whose last record stops partway (refused otherwise)
   double stale_ms = 100.0;        ///< a pose older than this is marked stale
   double reopen_backoff_ms = 250.0;
   double quat_norm_tolerance = 0.05;  ///< a decoded quaternion's |norm - 1| above this is malformed

@@ -316,6 +316,7 @@ void visit(Io& s, TrackerConfig& t) {
   s.text("replay_file", t.replay_file);
   s.boolean("replay_realtime", t.replay_realtime);
   s.boolean("replay_loop", t.replay_loop);
+  s.boolean("replay_truncated", t.replay_truncated);
   s.number("stale_ms", t.stale_ms, 1.0, 10000.0, "ms");
   s.number("reopen_backoff_ms", t.reopen_backoff_ms, 1.0, 60000.0, "ms");
   s.number("quat_norm_tolerance", t.quat_norm_tolerance, 1e-6, 0.5, "");

@@ -62,6 +62,14 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
       if (is_plus_sequence_path(settings.replay_file)) return plus_device(settings);
       Result<TrkLog> log = load_trk(settings.replay_file);
       if (!log) return fail(log.error());
+      // A log cut short (a crash or a full disk while recording) replays what it holds only when asked: else the
+      // replay ends early without a word, and a lesson or a test runs on less than the recording.
+      if (log->truncated_tail && !settings.replay_truncated) {
+        return fail(settings.replay_file + ": the log is truncated (its last record stops partway: the recording " +
+                    "was cut short; lungar-trk info says so); expected a whole log, or --replay-truncated " +
+                    "(trackers.replay_truncated = true) to replay the " + std::to_string(log->records.size()) +
+                    " records it holds");
+      }
       // The bytes are decoded with the configured layout, as the live device would; a log made with another
       // layout says so in its header, and the mismatch is worth a line.
       layout_differs = recorded_with_another_layout(*log, settings);
@@ -99,6 +107,11 @@ Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, con
     if (!recording) return fail(recording.error());
   }
   core->log(-1, "tracker: %s", (*device)->describe().c_str());
+  if (!options.record_path.empty()) core->log(-1, "recording the tracker's reports into %s", options.record_path.c_str());
+  if (settings.source == TrackerSource::Replay && settings.replay_truncated) {
+    core->log(-1, "replay %s: a truncated log is replayed as far as it goes (--replay-truncated)",
+              settings.replay_file.c_str());
+  }
   if (layout_differs) {
     core->log(-1,
               "replay %s: the log was recorded with another report layout than the config's; decoding with "

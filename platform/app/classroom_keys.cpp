@@ -282,15 +282,27 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
     for (const char* f : {"ca_cert.pem", "ca_key.pem"})
       if (!fs::exists(fs::path(o.ca_dir) / f)) return fail("--ca " + o.ca_dir + ": expected " + f + " there");
   }
-  const fs::path out(o.out_dir);
+  // "keys/" (as a shell completes it) names the folder keys: without the slash its parent is where the work
+  // folder goes, beside it, and not inside it.
+  fs::path out = fs::path(o.out_dir).lexically_normal();
+  while (!out.has_filename() && out.has_relative_path()) out = out.parent_path();
   std::error_code ec;
-  if (fs::exists(out, ec) && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
+  const bool out_existed = fs::exists(out, ec);
+  if (out_existed && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
     return fail(o.out_dir + ": expected a new or empty folder (nothing is overwritten)");
-  const fs::path work = out.parent_path().empty() ? fs::path(".") / (".keys-" + std::to_string(getpid()))
-                                                  : out.parent_path() / (".keys-" + std::to_string(getpid()));
+  const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+  const fs::path work = parent / (".keys-" + std::to_string(getpid()));
+  // The first folder this run makes on the way to the work folder: on a failure it goes, with all it holds, so that
+  // a retry finds things as they were.
+  fs::path first_made = work;
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    first_made = p;
   fs::remove_all(work, ec);
   fs::create_directories(work, ec);
-  if (ec) return fail(work.string() + ": cannot make it: " + ec.message());
+  if (ec) {
+    fs::remove_all(first_made, ec);
+    return fail(work.string() + ": cannot make it: " + ec.message());
+  }
   fs::permissions(work, fs::perms::owner_all, fs::perm_options::replace, ec);
   // make_into's folder work (create, copy, chmod) throws on a full disk or a read-only place: one line too.
   Result<std::vector<std::string>> made = fail("");
@@ -300,14 +312,16 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
     made = fail(o.out_dir + ": " + e.what());
   }
   if (!made) {
-    fs::remove_all(work, ec);
+    fs::remove_all(first_made, ec);
     return made.with_context("");
   }
-  if (fs::exists(out)) fs::remove(out, ec);  // the empty folder it replaces
+  if (out_existed) fs::remove(out, ec);  // the empty folder it replaces
   fs::rename(work, out, ec);
   if (ec) {
-    fs::remove_all(work);
-    return fail(o.out_dir + ": cannot put the keys there: " + ec.message());
+    const std::string why = ec.message();
+    fs::remove_all(first_made, ec);
+    if (out_existed) fs::create_directory(out, ec);  // the user's empty folder, as it was
+    return fail(o.out_dir + ": cannot put the keys there: " + why);
   }
   return made;
 }

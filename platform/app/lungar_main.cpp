@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "config/config_paths.h"
 #include "lungar/version.h"
@@ -108,7 +109,8 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
 }
 
 /// The chosen subcommand's exit code; none when the command line runs the runtime.
-std::optional<int> run_command(Commands& m, const std::string& config_path) {
+std::optional<int> run_command(Commands& m, const lungar::platform::RuntimeOptions& o) {
+  const std::string& config_path = o.config_path;
   if (*m.pivot_app) return lungar::platform::run_pivot(m.pivot);
   if (*m.display_app) {
     if (m.display_tip.size() == 3) m.display.stylus_tip_mm = Eigen::Vector3d(m.display_tip.data());
@@ -138,7 +140,8 @@ std::optional<int> run_command(Commands& m, const std::string& config_path) {
     m.calibrate.stylus_tip_mm = Eigen::Vector3d(m.stylus_tip[0], m.stylus_tip[1], m.stylus_tip[2]);
   }
   if (*m.calibrate_app) return lungar::platform::run_calibrate(m.calibrate);
-  if (*m.doctor) return lungar::platform::doctor::run_doctor(config_path);
+  // The runtime's options, before `doctor` or after it (it falls through): what the run would use is checked.
+  if (*m.doctor) return lungar::platform::doctor::run_doctor(o);
   return std::nullopt;
 }
 
@@ -163,9 +166,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return lungar::exit_on_parse_error(app, e, "lungar");
   }
-  if (const std::optional<int> rc = run_command(commands, o.config_path)) return *rc;
+  if (const std::optional<int> rc = run_command(commands, o)) return *rc;
 
   const auto dirs = lungar::config::XdgDirs::from_environment();
   const auto chosen = lungar::config::choose_config(o.config_path, dirs);

@@ -249,14 +249,31 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
   return exit_code;
 }
 
-/// A scenario's patient brings its pathologies (after the settings' own).
-void take_the_scenarios_pathologies(const std::optional<config::Scenario>& scenario, Settings& s) {
-  if (!scenario) return;
+/// A scenario's patient brings its pathologies (after the settings' own): an error when one of them is one the
+/// settings (or --pathology) already give otherwise (a second pneumothorax of the same lung would compound), or
+/// when the scenario's events add one already there.
+Status take_the_scenarios_pathologies(const std::optional<config::Scenario>& scenario, Settings& s) {
+  if (!scenario) return ok();
+  const std::string name = scenario->name.empty() ? scenario->source : scenario->name;
+  std::vector<std::string> taken = s.sim.pathologies;
   for (const std::string& spec : scenario->pathologies) {
-    if (std::find(s.sim.pathologies.begin(), s.sim.pathologies.end(), spec) != s.sim.pathologies.end()) continue;
-    log_line("scenario " + (scenario->name.empty() ? scenario->source : scenario->name) + ": pathology " + spec);
-    s.sim.pathologies.push_back(spec);
+    if (std::find(taken.begin(), taken.end(), spec) != taken.end()) continue;
+    taken.push_back(spec);
   }
+  if (Status own = sim::check_pathologies(scenario->pathologies); !own) {
+    return own.with_context("scenario " + scenario->source + ": key 'pathology': ");
+  }
+  if (Status distinct = sim::check_pathologies(taken); !distinct) {
+    return distinct.with_context("scenario " + scenario->source +
+                                 ": key 'pathology' against sim.pathology (or --pathology): ");
+  }
+  if (Status course = sim::check_timeline(timeline_of(taken, &*scenario)); !course) {
+    return course.with_context("scenario " + scenario->source + ": ");
+  }
+  for (std::size_t k = s.sim.pathologies.size(); k < taken.size(); ++k)
+    log_line("scenario " + name + ": pathology " + taken[k]);
+  s.sim.pathologies = std::move(taken);
+  return ok();
 }
 
 /// An emphysema's poor recoil is the breathing's: the emphysema preset, unless the breathing was chosen otherwise.
@@ -271,9 +288,12 @@ void breathe_as_the_pathologies_do(Settings& s) {
 int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   Settings s = configured;  // the demo's CT lungs may set the registration
   const std::optional<config::Scenario> scenario = the_scenario(s);
-  take_the_scenarios_pathologies(scenario, s);
+  if (Status taken = take_the_scenarios_pathologies(scenario, s); !taken) {
+    log_line("error: " + taken.error());
+    return 2;
+  }
   breathe_as_the_pathologies_do(s);
-  log_line(summarize(s));
+  log_line(summarize(s, scenario ? &*scenario : nullptr));
   const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
   RuntimeParts parts;
   std::shared_ptr<PathologyCourse> course;

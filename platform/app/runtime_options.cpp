@@ -107,8 +107,9 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);
   app.add_option("--pathology", o.pathologies,
-                 "SPEC, repeatable: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION or emphysema:SEVERITY[:SIDE] "
-                 "(default: sim.pathology)")
+                 "SPEC, repeatable, each pathology once: pneumothorax:SIDE:PERCENT[:tension], "
+                 "consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE left or right, PERCENT 1 "
+                 "to 90, REGION upper, middle or lower, SEVERITY 0 to 1; default: sim.pathology)")
       ->allow_extra_args(false);
   app.add_option("--breath", o.breath_path,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "
@@ -121,6 +122,8 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--tracker", o.tracker,
                  "tracker source: mock | replay:FILE.trk | hid | igtl[:HOST[:PORT]] (OpenIGTLink, PlusServer or 3D "
                  "Slicer; default: from the config)");
+  app.add_flag("--replay-truncated", o.replay_truncated,
+               "replay a truncated .trk (a recording cut short) as far as it goes instead of refusing it");
 }
 
 /// Where the frames go, how they are drawn, for how long, and what is kept of the run.
@@ -182,6 +185,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
     for (const std::string& spec : o.pathologies) {
       if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) return p.with_context("--pathology: ");
     }
+    if (Status distinct = sim::check_pathologies(o.pathologies); !distinct) return distinct.with_context("--pathology: ");
     s.sim.pathologies = o.pathologies;
   }
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
@@ -189,6 +193,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (o.fullscreen) s.display.output = Output::Fullscreen;
   if (o.headless) s.display.output = Output::Headless;
   if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
+  if (o.replay_truncated) s.trackers.replay_truncated = true;
   if (Status v = override_view(o.view, s); !v) return v;
   if (Status m = override_choice("--mode", o.mode, render::kDrawModeNames, s.render.mode); !m) return m;
   if (Status d = override_choice("--deform", o.deform, kDeformNames, s.render.deform); !d) return d;

@@ -40,6 +40,7 @@ struct RuntimeOptions {
   std::string sync_security;       ///< this station's folder of `lungar classroom-keys`: a secure classroom
   double sync_clock_skew_ms = 0;   ///< tests: pretend this station's clock is off by this much
   bool record_requested = false;   ///< --record given, with or without a file
+  bool replay_truncated = false;   ///< --replay-truncated: replay a truncated .trk as far as it goes
 };
 
 /// Adds the run options to `app`; names of enumerations are checked against config's tables.

@@ -68,6 +68,7 @@ void read_sim(TomlSection s, SimSettings& m) {
   for (const std::string& spec : m.pathologies) {
     if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) s.fail("pathology", p.error());
   }
+  if (Status distinct = sim::check_pathologies(m.pathologies); !distinct) s.fail("pathology", distinct.error());
   s.finish();
 }
 
@@ -125,7 +126,8 @@ Result<Settings> load_chosen_settings(const config::ConfigChoice& choice) {
   return load_settings(choice.path);
 }
 
-std::string summarize(const Settings& s) {
+std::string summarize(const Settings& s, const config::Scenario* scenario) {
+  const config::BreathingSettings& b = scenario ? scenario->start : s.breathing;
   std::ostringstream o;
   o << "config " << s.source << ": output " << to_string(s.display.output)
     << (s.display.output == Output::OpenXr ? std::string(" (head ") + to_string(s.display.openxr.head) + ")" : "")
@@ -137,8 +139,11 @@ std::string summarize(const Settings& s) {
     o << "IPD " << s.hmd.ipd_mm << " mm)";
   }
   o << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
-    << to_string(s.render.deform) << ", breathing " << s.breathing.preset << " " << s.breathing.rate_bpm
-    << "/min V_T " << s.breathing.tidal_volume_ml << " mL, tracker " << drivers::to_string(s.trackers.source)
+    << to_string(s.render.deform) << ", breathing " << b.preset << " " << b.rate_bpm << "/min V_T "
+    << b.tidal_volume_ml << " mL"
+    << (scenario ? " (the scenario " + (scenario->name.empty() ? scenario->source : scenario->name) + "'s start)"
+                 : std::string())
+    << ", tracker " << drivers::to_string(s.trackers.source)
     << (s.trackers.source == drivers::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())
     << ", orientation " << sim::to_string(s.sim.orientation_mode);
   return o.str();

@@ -8,6 +8,7 @@
 
 #include "config/base/result.h"
 #include "config/config_paths.h"
+#include "config/scenario.h"
 #include "platform/app/settings.h"
 
 namespace lungar::platform {
@@ -21,7 +22,8 @@ Result<Settings> load_settings_from_string(const std::string& toml_text, const s
 /// The chosen file loaded over the defaults (or the defaults); the error names the file, the line and the key.
 Result<Settings> load_chosen_settings(const config::ConfigChoice& choice);
 
-/// One log line: output, view, mode, deform, breathing, tracker, orientation.
-std::string summarize(const Settings& s);
+/// One log line: output, view, mode, deform, breathing, tracker, orientation. With a `scenario` the breathing is its
+/// start's (its [start] over [breathing]), which is what breathes, and the line says so.
+std::string summarize(const Settings& s, const config::Scenario* scenario = nullptr);
 
 }  // namespace lungar::platform

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "config/base/atomic_file.h"
+#include "config/base/number_text.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake_tool/label_map_io.h"
 #include "sim/bake_tool/mesh_import.h"
@@ -155,6 +156,24 @@ Result<std::vector<LungMesh>> mesh_lungs(const BakeCommand& cmd, const BakeProgr
   return imported;
 }
 
+/// Each imported lung encloses what a human lung can (kMinLungVolumeMl to kMaxLungVolumeMl), unless --any-volume.
+Status check_lung_volumes(const BakeCommand& cmd, const std::string& source, const std::vector<LungMesh>& lungs) {
+  if (cmd.any_volume) return ok();
+  for (const LungMesh& lung : lungs) {
+    const double ml = std::abs(enclosed_volume(lung.mesh)) / 1000.0;
+    if (ml >= kMinLungVolumeMl && ml <= kMaxLungVolumeMl) continue;
+    char volume[64];
+    std::snprintf(volume, sizeof volume, "%.3g mL", ml);
+    const std::string hint = cmd.labelmap.empty() ? "check --units (the mesh was read in " + cmd.units + ")"
+                                                  : std::string("check the label map's voxel spacing and --label");
+    return fail(source + ": lung '" + lung.name + "' encloses " + volume + "; expected " +
+                number_text(kMinLungVolumeMl) + " to " + number_text(kMaxLungVolumeMl) +
+                " mL a lung (a newborn's to beyond an adult's at total lung capacity): " + hint +
+                ", or give --any-volume to bake it as it is");
+  }
+  return ok();
+}
+
 /// run_bake_command without the catch of Cancelled.
 Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& progress,
                                   std::vector<std::string>& notes) {
@@ -171,6 +190,8 @@ Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& pr
     if (!got) return fail(got.error());
     lungs = std::move(*got);
     if (cmd.labelmap.empty()) source = cmd.meshes.front();
+    if (cmd.meshes.size() > 1) source += " and " + cmd.meshes.back();
+    if (Status volumes = check_lung_volumes(cmd, source, lungs); !volumes) return fail(volumes.error());
   }
   Result<BakeOutput> baked = bake_lungs(std::move(lungs), cmd.options, progress);
   if (!baked) return fail(source + ": " + baked.error());

@@ -16,6 +16,11 @@ namespace lungar::sim {
 /// Vertices of a pair baked from a label map when --nodes is not given: the paper's model size.
 inline constexpr std::uint32_t kDefaultLabelMapNodes = 400000;
 
+/// The volume one imported lung may enclose, mL: from a newborn's lung (some 50 mL at rest, less collapsed) to
+/// beyond an adult's at total lung capacity (a tall man's pair holds 7-8 L). Outside it the units are wrong (a
+/// mesh in mm read with --units m is 10^9 times too large) or the surface is not a lung; --any-volume bakes it.
+inline constexpr double kMinLungVolumeMl = 30.0, kMaxLungVolumeMl = 8000.0;
+
 struct BakeCommand {
   bool procedural = false;
   /// Vertices in all, shared between the lungs by surface area; 0: the input's default (procedural pair and
@@ -28,6 +33,7 @@ struct BakeCommand {
   std::string units = "mm";
   std::string out;                   ///< the .lungbake path
   std::string report_json;           ///< "" for none
+  bool any_volume = false;           ///< --any-volume: bake lungs outside kMinLungVolumeMl..kMaxLungVolumeMl
   BakeOptions options;
 };
 

@@ -11,6 +11,7 @@
 #include <vector>
 #include <unistd.h>
 
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
@@ -108,6 +109,9 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
       ->check(CLI::Range(1u, 8u))->capture_default_str();
   app.add_option("--units", cmd.units, "units of the mesh files")->check(CLI::IsMember({"mm", "cm", "m"}))
       ->capture_default_str();
+  app.add_flag("--any-volume", cmd.any_volume,
+               "bake lungs enclosing less than 30 mL or more than 8000 mL each (refused otherwise: the units are "
+               "likely wrong)");
   add_enum_option(app, "--model", cmd.options.model, lungar::sim::kMotionModelNames,
                   "how the surface moves (sliding: driven by the diaphragm, sliding along the chest wall, held at the "
                   "mediastinum; paper: every vertex along its normal, the paper's)");
@@ -208,13 +212,8 @@ int main(int argc, char** argv) {
     if (!cmd.procedural && cmd.meshes.empty() && cmd.labelmap.empty())
       throw CLI::RequiredError("--procedural, --mesh FILE or --labelmap FILE");
     if (cmd.out.empty()) throw CLI::RequiredError("--out");
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "lungar-bake: %s (see --help)\n", e.what());
-    return 2;
+    return lungar::exit_on_parse_error(app, e, "lungar-bake");
   }
 
   cmd.options.cancel = &g_interrupted;

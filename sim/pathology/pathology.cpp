@@ -266,6 +266,50 @@ Result<Pathology> parse_pathology(std::string_view spec) {
   return p;
 }
 
+bool same_pathology(const Pathology& a, const Pathology& b) {
+  if (a.kind != b.kind) return false;
+  switch (a.kind) {
+    case PathologyKind::Pneumothorax:
+      return a.side == b.side;
+    case PathologyKind::Consolidation:
+      return a.side == b.side && a.region == b.region;
+    case PathologyKind::Emphysema:
+      return a.side.empty() || b.side.empty() || a.side == b.side;
+    case PathologyKind::Ards:
+      return true;
+  }
+  return false;
+}
+
+Status check_pathologies(const std::vector<std::string>& specs) {
+  std::vector<Pathology> seen;
+  for (const std::string& spec : specs) {
+    Result<Pathology> p = parse_pathology(spec);
+    if (!p) return p.with_context("");
+    for (const Pathology& before : seen) {
+      if (!same_pathology(before, *p)) continue;
+      const char* expected = "";
+      switch (p->kind) {
+        case PathologyKind::Pneumothorax:
+          expected = "one pneumothorax a lung (give its size once; a second one would collapse the lung again)";
+          break;
+        case PathologyKind::Consolidation:
+          expected = "each third of a lung consolidated once";
+          break;
+        case PathologyKind::Emphysema:
+          expected = "one emphysema a lung (emphysema:SEVERITY without SIDE is both lungs')";
+          break;
+        case PathologyKind::Ards:
+          expected = "one ARDS (it is given twice: give its severity once)";
+          break;
+      }
+      return bad(spec, "repeats '" + before.spec + "': expected " + expected);
+    }
+    seen.push_back(p.take());
+  }
+  return {};
+}
+
 Status apply_pathology(BakedAsset& asset, const Pathology& p) {
   if (p.kind == PathologyKind::Ards) return collapse_dependent(asset, p.severity, p.spec);
   if (p.kind == PathologyKind::Emphysema) {
@@ -297,6 +341,7 @@ bool has_emphysema(const std::vector<std::string>& specs) {
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {
   if (specs.empty()) return {};
   BakedAsset changed = asset;
+  if (Status distinct = check_pathologies(specs); !distinct) return distinct;
   std::vector<Pathology> parsed;
   for (const std::string& spec : specs) {
     Result<Pathology> p = parse_pathology(spec);

@@ -82,14 +82,23 @@ struct Pathology {
 /// saying what was expected.
 Result<Pathology> parse_pathology(std::string_view spec);
 
+/// Whether `a` and `b` change the same thing, so that applying both would compound it (two pneumothoraces of a
+/// lung collapse it twice): two pneumothoraces of one lung, two consolidations of one third of one lung, two
+/// emphysemas of one lung (an emphysema without SIDE is both lungs'), two ARDS.
+bool same_pathology(const Pathology& a, const Pathology& b);
+
+/// Every spec parses and none is the same pathology as one before it (same_pathology); the error names both specs
+/// and what was expected.
+Status check_pathologies(const std::vector<std::string>& specs);
+
 /// Applies `p` to `asset`; an error (asset untouched) when the asset has no lung on that side.
 Status apply_pathology(BakedAsset& asset, const Pathology& p);
 
 /// Whether any of `specs` is an emphysema (whose recoil is the breathing's: the runtime's preset).
 bool has_emphysema(const std::vector<std::string>& specs);
 
-/// Parses and applies each spec in order (ARDS last); the error names the spec. All or nothing: on an error
-/// `asset` is unchanged.
+/// Parses and applies each spec in order (ARDS last); the error names the spec (a repeated one, check_pathologies,
+/// too). All or nothing: on an error `asset` is unchanged.
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs);
 
 }  // namespace lungar::sim

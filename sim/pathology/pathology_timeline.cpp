@@ -11,8 +11,7 @@
 namespace lungar::sim {
 
 Status check_timeline(const PathologyTimeline& timeline) {
-  for (const std::string& spec : timeline.start)
-    if (Result<Pathology> p = parse_pathology(spec); !p) return p.with_context("pathology at the start: ");
+  if (Status s = check_pathologies(timeline.start); !s) return s.with_context("pathology at the start: ");
   double previous_s = 0;
   for (std::size_t k = 0; k < timeline.events.size(); ++k) {
     const PathologyEvent& e = timeline.events[k];
@@ -24,9 +23,12 @@ Status check_timeline(const PathologyTimeline& timeline) {
     previous_s = e.at_s;
     if (!e.add.empty()) {
       if (Result<Pathology> p = parse_pathology(e.add); !p) return p.with_context(where + "add: ");
+      std::vector<std::string> then = present_after(timeline, k);  // at most 64 events: quadratic is fine
+      then.push_back(e.add);
+      if (Status s = check_pathologies(then); !s) return s.with_context(where + "add: ");
       continue;
     }
-    const std::vector<std::string> present = present_after(timeline, k);  // at most 64 events: quadratic is fine
+    const std::vector<std::string> present = present_after(timeline, k);
     if (std::find(present.begin(), present.end(), e.remove) == present.end())
       return fail(where + "remove: '" + e.remove + "' is not present then (the start and the events before it add "
                   "what can be removed)");

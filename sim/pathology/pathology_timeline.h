@@ -30,7 +30,8 @@ struct PathologyTimeline {
 };
 
 /// Every spec parses, each event adds or removes one and lasts a real, positive time, the events are in time
-/// order, and each removal takes away what the start and the events before it put there. The error names the
+/// order, each removal takes away what the start and the events before it put there, and nothing added is there
+/// already (check_pathologies: a second pneumothorax of a lung would compound the first). The error names the
 /// event (from 1) and what was expected.
 Status check_timeline(const PathologyTimeline& timeline);
 

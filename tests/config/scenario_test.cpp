@@ -5,7 +5,10 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "config/scenario_load.h"
 
@@ -247,4 +250,63 @@ TEST(BadScenario, SyntaxErrorAndMissingFile) {
   EXPECT_EQ(error_of("[[event]\n").rfind("bad.toml:1:", 0), 0u);
   EXPECT_EQ(load_scenario("/nonexistent/s.toml").error(),
             "/nonexistent/s.toml: cannot read the scenario: expected a TOML file, got no such file");
+}
+
+// An empty scenario was accepted, and the log still said it breathes and turns the patient: it is refused in one
+// line naming the file; a scenario with only a start, only a pathology or only an event is one.
+TEST(Scenario, AnEmptyScenarioIsRefusedNamingTheFile) {
+  for (const std::string toml : {"", "name = \"nothing\"\nduration_s = 30.0\n", "# only comments\n"}) {
+    const std::string e = error_of(toml);
+    EXPECT_EQ(e.rfind("bad.toml: ", 0), 0u) << e;
+    EXPECT_NE(e.find("expected a scenario: at least one [[event]], a [start] table or a pathology list"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  }
+  ok("[start]\n");
+  ok("pathology = [\"ards:0.6\"]\n");
+  ok("[[event]]\nat_s = 1.0\nkind = \"sigh\"\n");
+}
+
+// The README's ARDS-proning command stopped at 10 s (lungar's default), before the turn at 20 s: every command
+// that runs a shipped scenario, in the README or in a scenario's own comments, gives --seconds for the whole of it.
+TEST(Scenario, EveryDocumentedCommandRunsTheWholeScenario) {
+  const std::string root = std::string(LUNGAR_SOURCE_DIR) + "/";
+  std::vector<std::string> files = {root + "README.md"};
+  for (const auto& entry : std::filesystem::directory_iterator(kScenarios)) files.push_back(entry.path().string());
+  int commands = 0;
+  for (const std::string& file : files) {
+    std::ifstream in(file);
+    int line_no = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++line_no;
+      // The commands of a line: its `code` spans, else the whole line (an indented block, a comment).
+      std::vector<std::string> spans;
+      for (std::size_t open = line.find('`'); open != std::string::npos; open = line.find('`', open)) {
+        const std::size_t close = line.find('`', open + 1);
+        if (close == std::string::npos) break;
+        spans.push_back(line.substr(open + 1, close - open - 1));
+        open = close + 1;
+      }
+      if (spans.empty()) spans.push_back(line);
+      for (const std::string& span : spans) {
+        std::istringstream words(span);
+        std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+        std::string scenario;
+        double seconds = 10.0;  // lungar's default run
+        for (std::size_t k = 0; k + 1 < w.size(); ++k) {
+          if (w[k] == "--scenario") scenario = w[k + 1];
+          if (w[k] == "--seconds" && std::isdigit(static_cast<unsigned char>(w[k + 1][0])))
+            seconds = std::stod(w[k + 1]);  // "--seconds S" in a synopsis is no command
+        }
+        if (scenario.empty() || !std::filesystem::exists(root + scenario)) continue;  // "--scenario FILE"
+        ++commands;
+        const auto sc = load_scenario(root + scenario);
+        ASSERT_TRUE(sc) << sc.error();
+        EXPECT_GE(seconds, sc->duration_s) << file << ":" << line_no << ": `" << span << "` stops at " << seconds
+                                           << " s, the scenario lasts " << sc->duration_s << " s";
+      }
+    }
+  }
+  EXPECT_GE(commands, 4) << "the README's and the scenarios' own commands";
 }

@@ -82,6 +82,7 @@ TrackerConfig every_key_changed() {
   t.replay_file = "logs/a \"quoted\" \\ back\tslash.trk";
   t.replay_realtime = false;
   t.replay_loop = true;
+  t.replay_truncated = true;
   t.stale_ms = 123.456;
   t.reopen_backoff_ms = 500.0;
   t.quat_norm_tolerance = 1e-3;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -108,10 +109,26 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   t.stale_ms = 50;
   TrackerOptions o = quiet();
   o.record_path = rec;
+  struct Logged {
+    std::mutex mutex;
+    std::vector<std::string> lines;
+  };
+  auto logged = std::make_shared<Logged>();
+  o.log = [logged](const std::string& line) {
+    const std::lock_guard<std::mutex> lock(logged->mutex);
+    logged->lines.push_back(line);
+  };
   auto made = make_tracker(t, o);
   ASSERT_TRUE(made) << made.error();
   Tracker& tr = **made;
   EXPECT_EQ(tr.describe(), "mock upright_to_supine");
+  // --record says where it writes (it did not: a bare --record's file was found only in the folder).
+  {
+    const std::lock_guard<std::mutex> lock(logged->mutex);
+    EXPECT_TRUE(std::any_of(logged->lines.begin(), logged->lines.end(), [&](const std::string& line) {
+      return line.find("recording the tracker's reports into " + rec) != std::string::npos;
+    })) << "no line names " << rec;
+  }
   ASSERT_TRUE(eventually([&] { return tr.stats().accepted >= 100; }));
   EXPECT_EQ(tr.state(), TrackerState::Streaming);
   const PoseSample head = tr.latest(Role::Head, monotonic_ns());
@@ -140,6 +157,29 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   EXPECT_EQ(log->header.field("source"), "mock");
   EXPECT_FALSE(log->header.layout_toml.empty());
   EXPECT_EQ(log->records.front().source, TrkSource::Mock);
+}
+
+// A truncated .trk (a recording cut short) replayed without a word, though lungar-trk info knew: it is refused in
+// one line naming the file and the way to replay it anyway, which then replays the records it holds.
+TEST(Tracker, ATruncatedLogIsRefusedUnlessReplayTruncatedIsGiven) {
+  const std::filesystem::path cut =
+      std::filesystem::temp_directory_path() / ("lungar_truncated_" + std::to_string(::getpid()) + ".trk");
+  std::filesystem::copy_file(lungar::testing::tracker_data("upright_to_supine.trk"), cut,
+                             std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(cut, std::filesystem::file_size(cut) - 7);
+  TrackerConfig t;
+  t.source = TrackerSource::Replay;
+  t.replay_file = cut.string();
+  t.replay_realtime = false;
+  const auto refused = make_tracker(t, quiet());
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().rfind(cut.string() + ": the log is truncated", 0), 0u) << refused.error();
+  EXPECT_NE(refused.error().find("--replay-truncated"), std::string::npos) << refused.error();
+  EXPECT_EQ(refused.error().find('\n'), std::string::npos);
+  t.replay_truncated = true;
+  const auto replayed = make_tracker(t, quiet());
+  EXPECT_TRUE(replayed) << replayed.error();
+  std::filesystem::remove(cut);
 }
 
 TEST(Tracker, BadSettingsAreOneLineErrors) {

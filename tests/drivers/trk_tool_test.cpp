@@ -50,6 +50,12 @@ TEST(TrkTool, SynthInfoDumpCut) {
   r = run("info " + a);
   ASSERT_EQ(r.rc, 0) << r.out;
   EXPECT_NE(r.out.find("records: 200"), std::string::npos) << r.out;  // 2 sensors x 100 ticks
+  // The rate is each sensor's, as the header's rate_hz=100 (it was the records', twice that).
+  const std::size_t rate = r.out.find("\nrate_hz: ");
+  ASSERT_NE(rate, std::string::npos) << r.out;
+  EXPECT_NEAR(std::stod(r.out.substr(rate + 10)), 100.0, 1.5) << r.out;
+  EXPECT_NE(r.out.find("each sensor's reports per second: head "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("records_per_s: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("trajectory=head_orbit"), std::string::npos) << r.out;
   r = run("dump " + a + " --format csv");
   ASSERT_EQ(r.rc, 0) << r.out;

@@ -113,6 +113,32 @@ TEST(ClassroomKeys, BadRequestsAreRefusedAndLeaveNothing) {
   EXPECT_EQ(file_text(d.path / "taken" / "mine.txt"), "keep me");
 }
 
+// The README's own command ends --out with a slash (as a shell completes a folder): that names the folder. A run
+// that fails leaves none of the folders it made, so that a retry is not refused by the leftovers.
+TEST(ClassroomKeys, ATrailingSlashNamesTheFolderAndAFailureLeavesNoFolderMade) {
+  Dir d;
+  ClassroomKeysOptions o;
+  o.classroom = "ward-9";
+  o.stations = {"teacher", "hmd-1"};
+  o.out_dir = (d.path / "keys").string() + "/";
+  auto made = make_classroom_keys(o);
+  ASSERT_TRUE(made) << made.error();
+  EXPECT_TRUE(fs::exists(d.path / "keys" / "hmd-1" / "identity_cert.pem"));
+  EXPECT_TRUE(fs::exists(d.path / "keys" / "ca" / "ca_key.pem"));
+  for (const auto& e : fs::directory_iterator(d.path))
+    EXPECT_EQ(e.path().filename(), "keys") << "left behind: " << e.path();
+
+  ClassroomKeysOptions bad = o;
+  bad.openssl = "/nonexistent/openssl";
+  bad.out_dir = (d.path / "new" / "deeper" / "keys").string() + "/";
+  ASSERT_FALSE(make_classroom_keys(bad));
+  EXPECT_FALSE(fs::exists(d.path / "new")) << "the folders this run made stay behind";
+  o.out_dir = bad.out_dir;
+  made = make_classroom_keys(o);
+  ASSERT_TRUE(made) << "a retry after a failure: " << made.error();
+  EXPECT_TRUE(fs::exists(d.path / "new" / "deeper" / "keys" / "teacher" / "identity_key.pem"));
+}
+
 TEST(ClassroomKeys, AnAuthorityIsReusedForANewStation) {
   Dir d;
   ClassroomKeysOptions o;

@@ -234,4 +234,15 @@ TEST_F(Doctor, ReplayTrackerCheckParsesTheLog) {
   const Check c = check_tracker(t, env);
   EXPECT_EQ(c.verdict, Verdict::Fail);
   EXPECT_TRUE(contains(c.detail, "missing.trk")) << c.detail;
+
+  const fs::path cut = root / "cut.trk";  // a recording cut short: the runtime refuses it unless told
+  fs::copy_file(kData + "upright_to_supine.trk", cut);
+  fs::resize_file(cut, fs::file_size(cut) - 7);
+  t.replay_file = cut.string();
+  const Check truncated = check_tracker(t, env);
+  EXPECT_EQ(truncated.verdict, Verdict::Fail) << format_check(truncated);
+  EXPECT_TRUE(contains(truncated.detail, "truncated") && contains(truncated.fix, "--replay-truncated"))
+      << format_check(truncated);
+  t.replay_truncated = true;
+  EXPECT_EQ(check_tracker(t, env).verdict, Verdict::Pass);
 }

@@ -87,6 +87,8 @@ TEST(PathologyCourse, WhatCannotComeOrGoIsRefusedNamingTheEvent) {
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"ards:0.5\"\nover_s = 5.0\n", {},
           "an ARDS cannot come or go during a run");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"pneumothorax:centre:20\"\nover_s = 5.0\n", {}, "SIDE");
+  refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"pneumothorax:right:40:tension\"\nover_s = 5.0\n",
+          {"pneumothorax:right:20"}, "repeats 'pneumothorax:right:20'");
 }
 
 TEST(PathologyCourse, StartsFromLungsDrawnOtherwiseAndTakesAnArdsFromTheStart) {

@@ -36,6 +36,7 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
   ASSERT_TRUE(apply_overrides(o, s).ok());
   EXPECT_EQ(s.trackers.source, lungar::drivers::TrackerSource::Replay);
   EXPECT_EQ(s.trackers.replay_file, "logs/turn.trk");
+  EXPECT_FALSE(s.trackers.replay_truncated) << "a truncated log is refused unless asked";
   EXPECT_EQ(s.hmd.view, lungar::platform::View::Mono);
   EXPECT_EQ(s.render.mode, lungar::render::DrawMode::Mesh);
   EXPECT_EQ(s.render.deform, lungar::platform::Deform::Cpu1);
@@ -120,4 +121,26 @@ TEST(RuntimeOptions, BadValuesAreNamed) {
   o = {};
   o.frames = 0;
   EXPECT_EQ(apply_overrides(o, s).error(), "--frames: expected a positive number of frames, got 0");
+}
+
+TEST(RuntimeOptions, TheSamePathologyGivenTwiceIsRefusedNamingBoth) {
+  lungar::platform::Settings s;
+  RuntimeOptions o;
+  o.pathologies = {"pneumothorax:right:30", "pneumothorax:right:30"};
+  const lungar::Status twice = apply_overrides(o, s);
+  ASSERT_FALSE(twice);
+  EXPECT_EQ(twice.error().rfind("--pathology: pathology 'pneumothorax:right:30': repeats 'pneumothorax:right:30'", 0),
+            0u)
+      << twice.error();
+  EXPECT_TRUE(s.sim.pathologies.empty()) << "nothing taken";
+  o.pathologies = {"pneumothorax:right:30", "pneumothorax:left:30"};
+  EXPECT_TRUE(apply_overrides(o, s));
+}
+
+TEST(RuntimeOptions, ReplayTruncatedAsksForATruncatedLogToBeReplayed) {
+  RuntimeOptions o;
+  ASSERT_EQ(parse({"--tracker", "replay:cut.trk", "--replay-truncated"}, o), "");
+  lungar::platform::Settings s;
+  ASSERT_TRUE(apply_overrides(o, s));
+  EXPECT_TRUE(s.trackers.replay_truncated);
 }

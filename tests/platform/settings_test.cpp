@@ -7,6 +7,7 @@
 #include <cctype>
 #include <string>
 
+#include "config/scenario_load.h"
 #include "platform/app/settings_load.h"
 
 using lungar::platform::load_settings;
@@ -77,6 +78,18 @@ TEST(Settings, EveryKeyOfTheShippedProfileIsDocumentedWithAComment) {
   EXPECT_GT(keys, 40);
 }
 
+// An empty sim.asset draws the demo's CT lungs (platform/app/demo_asset.h); the profile said the procedural pair.
+TEST(Settings, TheShippedProfileSaysWhatAnEmptyAssetDraws) {
+  std::ifstream in(kDefaultToml);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("asset = ", 0) != 0) {
+  }
+  ASSERT_EQ(line.rfind("asset = \"\"", 0), 0u) << "no empty [sim] asset in " << kDefaultToml;
+  const std::string comment = line.substr(line.find('#'));
+  EXPECT_NE(comment.find("\"\" = the demo's CT lungs"), std::string::npos) << comment;
+  EXPECT_EQ(comment.find("\"\" = the cached procedural pair"), std::string::npos) << comment;
+}
+
 TEST(Settings, OverlayChangesOnlyTheKeysGiven) {
   auto r = load_settings_from_string("[render]\npoint_size_px = 3\n[hmd]\nview = \"mono\"\n", "x.toml");
   ASSERT_TRUE(r) << r.error();
@@ -97,6 +110,9 @@ TEST(Settings, PathologiesAreReadAndABadOneNamesTheFileTheFieldAndTheSpec) {
   EXPECT_NE(e.find("pathology"), std::string::npos) << e;
   EXPECT_NE(e.find("'pneumothorax:right:300'"), std::string::npos) << e;
   EXPECT_NE(e.find("PERCENT"), std::string::npos) << e;
+  const std::string twice = error_of("[sim]\npathology = [\"emphysema:0.4\", \"emphysema:0.6:left\"]\n");
+  EXPECT_NE(twice.find("bad.toml"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("'emphysema:0.6:left': repeats 'emphysema:0.4'"), std::string::npos) << twice;
 }
 
 TEST(Settings, OpenXrOutputAndItsHead) {
@@ -292,4 +308,17 @@ TEST(Settings, EveryShippedTrackerProfileLoadsAsAWholeConfig) {
     ++n;
   }
   EXPECT_GE(n, 3);
+}
+
+// The log line named the settings' breathing (12/min, 500 mL) while the ARDS scenario breathed 20/min, 420 mL.
+TEST(Settings, TheSummaryNamesTheBreathingOfTheScenarioThatRuns) {
+  const lungar::platform::Settings s;
+  const auto scenario =
+      lungar::config::load_scenario(std::string(LUNGAR_SOURCE_DIR) + "/config/scenarios/ards-proning.toml", s.breathing);
+  ASSERT_TRUE(scenario) << scenario.error();
+  const std::string line = lungar::platform::summarize(s, &*scenario);
+  EXPECT_NE(line.find("breathing normal 20/min V_T 420 mL (the scenario ards proning's start)"), std::string::npos)
+      << line;
+  EXPECT_NE(lungar::platform::summarize(s).find("breathing normal 12/min V_T 500 mL, tracker"), std::string::npos)
+      << lungar::platform::summarize(s);
 }

@@ -228,6 +228,34 @@ TEST(MeshImport, RealRightLungBakesUnderOnePercentWithoutFolds) {
   EXPECT_LT(std::abs(r.tidal_volume_rel_error), 0.02);
 }
 
+// A mesh in mm baked with --units m became a 2.4e12 mL lung without a word: a lung outside 30-8000 mL is refused
+// in one line naming the file, the volume, what was expected and --any-volume, which bakes it anyway.
+TEST(MeshImport, ALungVolumeNoHumanLungHasIsRefusedUnlessAnyVolume) {
+  TempDir dir;
+  const auto lung = corners(small_lung());
+  write_binary_stl(dir.file("lung.stl"), lung, static_cast<std::uint32_t>(lung.size()));
+  BakeCommand c = import_command(dir.file("lung.stl"), dir.file("out.lungbake"), 0);
+  std::vector<std::string> notes;
+  ASSERT_TRUE(run_bake_command(c, nullptr, notes)) << "in mm, as written: a lung's volume";
+  std::filesystem::remove(dir.file("out.lungbake"));
+  for (const char* units : {"m", "cm"}) {
+    c.units = units;
+    const Result<BakeReport> r = run_bake_command(c, nullptr, notes);
+    test::expect_refused_cleanly(r, dir, "out.lungbake");
+    if (r) continue;
+    const std::string& e = r.error();
+    EXPECT_EQ(e.rfind(dir.file("lung.stl") + ": lung '", 0), 0u) << e;
+    EXPECT_NE(e.find(" mL; expected 30 to 8000 mL a lung"), std::string::npos) << e;
+    EXPECT_NE(e.find(std::string("check --units (the mesh was read in ") + units + ")"), std::string::npos) << e;
+    EXPECT_NE(e.find("--any-volume"), std::string::npos) << e;
+  }
+  c.units = "cm";
+  c.any_volume = true;
+  const Result<BakeReport> anyway = run_bake_command(c, nullptr, notes);
+  ASSERT_TRUE(anyway) << anyway.error();
+  EXPECT_GT(anyway->per_lung[0].volume_ml, 8000.0);
+}
+
 TEST(MeshImport, NodesSimplifiesALargerSurfaceAndMeasuresHowFarItMoved) {
   TempDir dir;
   const auto lung = corners(procedural_lungs(12000, 5)[0].mesh);

@@ -20,6 +20,7 @@
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
+#include "config/base/command_line.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/app/run.h"
@@ -120,7 +121,11 @@ int main(int argc, char** argv) {
   app.add_option("--asset", o.asset, "baked asset (default: the demo lungs)");
   app.add_option("--out", o.out, "folder for stats.json, soak.json and the snapshot")->capture_default_str();
   app.add_option("--min-reconnects", o.min_reconnects, "exit 3 when the runtime reconnected fewer times (tests)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return lungar::exit_on_parse_error(app, e, "lungar-soak");
+  }
   if (!testing::UmockdevTracker::available()) {
     std::fprintf(stderr, "lungar-soak: expected to run under umockdev-wrapper (tests/drivers/umockdev_run.sh)\n");
     return 2;

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "config/base/command_line.h"
 #include "lungar/version.h"
 #include "platform/app/bench/bench_run.h"
 
@@ -51,7 +52,11 @@ int main(int argc, char** argv) {
   std::string all;
   for (const auto& s : kSections) all += (all.empty() ? "" : ",") + s;
   app.add_option("--sections", sections, "comma-separated subset of " + all + " (default: all)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return lungar::exit_on_parse_error(app, e, "lungar-bench");
+  }
 
   std::stringstream list(sections);
   for (std::string s; std::getline(list, s, ',');) {

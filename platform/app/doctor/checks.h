@@ -23,8 +23,9 @@ Check check_openxr_runtime(const DoctorEnv& env);
 /// The configured tracker: for HID, the device node present and readable by this user; a missing udev rule gives
 /// the command that installs one.
 Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env);
-/// The configured asset loads (or the demo asset's cache is usable or can be made).
-Check check_asset(const Settings& s, const DoctorEnv& env);
+/// The configured asset loads (or the demo asset's cache is usable or can be made; `procedural`: the procedural
+/// pair's, as --procedural draws it).
+Check check_asset(const Settings& s, const DoctorEnv& env, bool procedural = false);
 /// The classroom: not in one, open (a warning: anyone on the network can join), or secure with a complete station
 /// folder (sync.security) and Cyclone's security plugins installed.
 Check check_classroom(const Settings& s);

@@ -55,7 +55,7 @@ Check check_config(const config::ConfigChoice& choice, const Result<Settings>& l
   return passed("config", where + " (" + choice.reason + ")");
 }
 
-Check check_asset(const Settings& s, const DoctorEnv& env) {
+Check check_asset(const Settings& s, const DoctorEnv& env, bool procedural) {
   if (!s.sim.asset.empty()) {
     auto asset = sim::load_asset(s.sim.asset);
     if (!asset) {
@@ -66,6 +66,7 @@ Check check_asset(const Settings& s, const DoctorEnv& env) {
     return passed("asset", s.sim.asset + ": " + asset_summary(*asset));
   }
   DemoAssetOptions demo;
+  demo.procedural = procedural;
   demo.cache_dir = config::cache_dir(env.xdg);
   const std::string cached = demo_cache_path(demo);
   std::error_code ec;

@@ -132,7 +132,12 @@ Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env) {
         return failed("tracker", "trackers.replay_file: " + log.error(),
                       "point trackers.replay_file at a .trk log (`lungar-trk info FILE` checks one)");
       }
-      return passed("tracker", "replay of " + t.replay_file + " (" + std::to_string(log->records.size()) + " reports)");
+      if (log->truncated_tail && !t.replay_truncated) {
+        return failed("tracker", t.replay_file + ": the log is truncated (its last record stops partway)",
+                      "record it again, or replay what it holds with --replay-truncated");
+      }
+      return passed("tracker", "replay of " + t.replay_file + " (" + std::to_string(log->records.size()) + " reports" +
+                                   (log->truncated_tail ? ", truncated" : "") + ")");
     }
     case drivers::TrackerSource::Hid:
       return hid_node_check(t.hid, env);

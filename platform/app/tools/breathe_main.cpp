@@ -18,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include "config/base/clock.h"
+#include "config/base/command_line.h"
 #include "lungar/version.h"
 #include "platform/app/physiology_feed.h"
 #include "platform/app/scenario_adapter.h"
@@ -292,7 +293,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return lungar::exit_on_parse_error(app, e, "lungar-breathe");
   }
 
   platform::Settings settings;

@@ -15,6 +15,7 @@
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
+#include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "platform/sync/instructor.h"
 #include "platform/sync/sync_report_json.h"
@@ -104,7 +105,11 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "how long to run")->check(CLI::Range(0.1, 3600.0));
   app.add_option("--clock-skew-ms", skew_ms, "pretend this station's clock is off by this much (tests)");
   app.add_option("--report-json", report_path, "a trainee's report, as JSON");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return lungar::exit_on_parse_error(app, e, "lungar-sync-probe");
+  }
   if (o.role == SyncRole::Off) {
     log_line("lungar-sync-probe", "--role: expected instructor or trainee, got off");
     return 2;

@@ -124,6 +124,8 @@ def line_mutants(path, number, code, original):
         op = m.group(1)
         if op in ("<", ">") and re.search(r"\b(template|static_cast|reinterpret_cast|const_cast)\b", code):
             continue  # angle brackets of templates that happen to have spaces
+        if op in ("+", "-") and (code[:m.start(1)].rstrip().endswith('"') or code[m.end(1):].lstrip().startswith('"')):
+            continue  # a string being joined: `-` would not compile
         for new in _SWAPS[op]:
             add(m.start(1), op, new, _KINDS.get(op, "arithmetic"))
     for m in _UNARY_MINUS.finditer(code):

@@ -53,6 +53,7 @@ def mutants_are_found_only_in_code():
     check("src/calc.cpp:4: * → / (col 32)" in keys, "an arithmetic operator swapped")
     check(not file_mutants("a.cpp", "std::array<double, 3> a{};\nchar line[200];\n"), "template arguments and buffer sizes kept")
     check(mask('x = "a\\"b" + 1;') == 'x = "    " + 1;', "string literals masked, escapes and all")
+    check(not file_mutants("a.cpp", 'f(path + ":" + why);\n'), "no - where a string is joined (it would not compile)")
     swapped = [m for m in file_mutants("a.cpp", "  if (a && !b) return true;\n")]
     check({m.desc for m in swapped} >= {"&& → || (col 9)", "a && !b → !(a && !b) (col 7)", "true → false (col 23)"},
           "&& swapped, the condition negated, the returned boolean flipped")

@@ -4,6 +4,7 @@
 ///        types, refused in one line when wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <string>
@@ -119,6 +120,40 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
   }
 }
 
+// The region's border is a ramp, not a step (pathology.h): a vertex up to kConsolidationRamp of the lung's height
+// outside the third keeps a response between the region's and the healthy one, linear in its distance, so that the
+// surface does not tear where the region ends. A step passed every other test (issue 42).
+TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset sick = with({"consolidation:right:middle"});
+  const BakedLung& lung = healthy.lungs[index_of(healthy, "right")];
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    lo = std::min(lo, double{healthy.positions[3 * i + 2]});
+    hi = std::max(hi, double{healthy.positions[3 * i + 2]});
+  }
+  const double h = hi - lo, ramp = kConsolidationRamp * h, bottom = lo + h / 3, top = lo + 2 * h / 3;
+  const std::uint32_t c = healthy.coefficients();
+  int below = 0, above = 0, wrong = 0;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    double before = 0, after = 0;
+    for (std::uint32_t k = 0; k < c; ++k) {
+      before += std::abs(healthy.sh_coeffs[i * c + k]);
+      after += std::abs(sick.sh_coeffs[i * c + k]);
+    }
+    if (before < 1e-6) continue;
+    const double z = healthy.positions[3 * i + 2], outside = std::max({0.0, bottom - z, z - top});
+    const double expected = 1.0 - (1.0 - kConsolidatedResponse) * std::clamp(1.0 - outside / ramp, 0.0, 1.0);
+    if (std::abs(after / before - expected) > 1e-4 && wrong++ == 0)
+      ADD_FAILURE() << "vertex " << i << " " << outside << " mm outside the third keeps " << after / before
+                    << " of its response, expected " << expected;
+    if (outside > 0.1 * ramp && outside < 0.9 * ramp) ++(z < bottom ? below : above);
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(below, 5) << "vertices on the ramp under the region";
+  EXPECT_GT(above, 5) << "vertices on the ramp over the region";
+}
+
 TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath) {
   const BakedAsset healthy = test::sliding_bake().asset;
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
@@ -128,6 +163,20 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
     EXPECT_NEAR(both.rest_ml[l] / before.rest_ml[l], 1.0 + kEmphysemaFrcGain * 0.75, 0.005) << l;
   }
   EXPECT_NEAR(both.change_ml[right] + both.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
+  // Each lung's centre moves with its vertices: the scaling about the hilum scales every vector between them alike.
+  const BakedAsset larger = with({"emphysema:0.75"});
+  const double scale = std::cbrt(1.0 + kEmphysemaFrcGain * 0.75);
+  for (std::size_t l : {right, left}) {
+    const auto point = [](const BakedAsset& a, std::size_t i) {
+      return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
+    };
+    const auto centre = [](const BakedLung& lung) {
+      return Eigen::Vector3d(lung.centre[0], lung.centre[1], lung.centre[2]);
+    };
+    const std::size_t i = healthy.lungs[l].first_vertex;
+    const Eigen::Vector3d before_to_centre = centre(healthy.lungs[l]) - point(healthy, i);
+    EXPECT_LT((centre(larger.lungs[l]) - point(larger, i) - scale * before_to_centre).norm(), 0.01) << l;
+  }
   const Breath one = breathe(with({"emphysema:1:left"}), 500);
   EXPECT_NEAR(one.rest_ml[left] / before.rest_ml[left], 1.0 + kEmphysemaFrcGain, 0.005);
   EXPECT_NEAR(one.rest_ml[right], before.rest_ml[right], 1e-9) << "SIDE: the other lung keeps its shape";

@@ -89,6 +89,18 @@ TEST(DisplayCalibration, TooFewOrFlatAlignmentsAreRefused) {
   EXPECT_NE(coplanar.error().find("near a plane"), std::string::npos) << coplanar.error();
 }
 
+// The refusal says how flat the points are: the smallest spread over the largest. The corners of a 400 x 200 x 4 mm
+// box spread 200, 100 and 2 mm about their centre, so 0.01 (over the middle spread it would read 0.02).
+TEST(DisplayCalibration, AFlatSetIsRefusedWithItsSpreadRatio) {
+  std::vector<Alignment> box;
+  for (double x : {-200.0, 200.0})
+    for (double y : {-100.0, 100.0})
+      for (double z : {598.0, 602.0}) box.push_back({Eigen::Vector3d(x, y, z), Eigen::Vector2d(640 + x, 360 + y)});
+  auto flat = calibrate_eye(box);
+  ASSERT_FALSE(flat);
+  EXPECT_NE(flat.error().find("(spread 0.01 of their largest)"), std::string::npos) << flat.error();
+}
+
 TEST(DisplayCalibration, AlignmentFileErrorsNameTheLine) {
   const auto dir = std::filesystem::temp_directory_path() / "lungar_spaam_test";
   std::filesystem::create_directories(dir);

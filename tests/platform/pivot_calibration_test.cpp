@@ -64,4 +64,24 @@ TEST(PivotCalibration, FindsTheTipFromAConeSweptAllRound) {
   EXPECT_GT(fit->rms_mm, 0.05) << "the noise put in shows in the residual";
 }
 
+// The fewest poses it takes, noise-free: eight around a cone give the tip exactly, with no residual.
+TEST(PivotCalibration, EightExactPosesGiveTheTipWithNoResidual) {
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < lungar::platform::kMinPivotPoses; ++i) {
+    const double around = 2 * M_PI * i / lungar::platform::kMinPivotPoses;
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d(std::cos(around), std::sin(around), 0.0))
+            .toRotationMatrix();
+    Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+    p.linear() = turn;
+    p.translation() = kPivot - turn * kTip;
+    poses.push_back(p);
+  }
+  const auto fit = lungar::platform::fit_pivot(poses);
+  ASSERT_TRUE(fit) << fit.error();
+  EXPECT_LT((fit->tip_mm - kTip).norm(), 1e-6) << fit->tip_mm.transpose();
+  EXPECT_LT(fit->rms_mm, 1e-6);
+  EXPECT_LT(fit->max_mm, 1e-6);
+}
+
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/motion_figures.h"
+#include "sim/motion/surface_regions.h"
 #include "sim/pathology/pathology.h"
 #include "sim_test_support.h"
 
@@ -183,6 +184,38 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
   EXPECT_EQ(with({"emphysema:0"}).positions, healthy.positions) << "severity 0 changes nothing";
   EXPECT_TRUE(has_emphysema({"pneumothorax:right:30", "emphysema:0.5"}));
   EXPECT_FALSE(has_emphysema({"pneumothorax:right:30"}));
+}
+
+// Emphysema scales each lung about its hilum (pathology.h): the map's fixed point is the area-weighted centre of
+// the lung's medial face (normals within 60 degrees of the midline) in the middle third of its height.
+TEST(Pathology, EmphysemaScalesEachLungAboutItsHilum) {
+  const BakedAsset healthy = test::sliding_bake().asset, larger = with({"emphysema:1"});
+  const double s = std::cbrt(1.0 + kEmphysemaFrcGain);
+  const auto point = [](const BakedAsset& a, std::size_t i) {
+    return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
+  };
+  for (const BakedLung& lung : healthy.lungs) {
+    const std::size_t first = lung.first_vertex, end = first + lung.vertex_count;
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = first; i < end; ++i) {
+      lo = std::min(lo, point(healthy, i).z());
+      hi = std::max(hi, point(healthy, i).z());
+    }
+    const Eigen::Vector3d medial = medial_direction(lung.name, lung.centre[0], 0.0);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double area = 0;
+    for (std::size_t i = first; i < end; ++i) {
+      const Eigen::Vector3d n(healthy.normals[3 * i], healthy.normals[3 * i + 1], healthy.normals[3 * i + 2]);
+      const double z = point(healthy, i).z();
+      if (z < lo + (hi - lo) / 3 || z > hi - (hi - lo) / 3 || n.dot(medial) < 0.5) continue;
+      sum += healthy.areas[i] * point(healthy, i);
+      area += healthy.areas[i];
+    }
+    ASSERT_GT(area, 0.0) << lung.name;
+    const Eigen::Vector3d hilum = sum / area;
+    for (std::size_t i : {first, first + lung.vertex_count / 2, end - 1})
+      EXPECT_LT((point(larger, i) - (hilum + s * (point(healthy, i) - hilum))).norm(), 0.01) << lung.name << " " << i;
+  }
 }
 
 TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {

@@ -7,12 +7,33 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
 #include "config/base/atomic_file.h"
 #include "config/toml_writer.h"
 
 namespace lungar::platform {
+namespace {
+
+/// How far the stylus direction u that turned least moved: sqrt(min over unit u of the mean |R_i u - R̄ u|²), in
+/// degrees. Eliminating the pivot q leaves Σ (R_i - R̄)ᵀ(R_i - R̄) as the normal matrix of the tip, so this is
+/// also how well the poses pin the tip down along its worst direction; 0 when every turn is about one axis u.
+double least_turn_deg(const std::vector<Eigen::Isometry3d>& poses) {
+  Eigen::Matrix3d mean = Eigen::Matrix3d::Zero();
+  for (const Eigen::Isometry3d& p : poses) mean += p.rotation();
+  mean /= static_cast<double>(poses.size());
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  for (const Eigen::Isometry3d& p : poses) {
+    const Eigen::Matrix3d d = p.rotation() - mean;
+    normal += d.transpose() * d;
+  }
+  normal /= static_cast<double>(poses.size());
+  const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  return std::sqrt(std::max(least, 0.0)) * 180.0 / M_PI;
+}
+
+}  // namespace
 
 Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& poses) {
   const auto n = static_cast<Eigen::Index>(poses.size());
@@ -31,6 +52,15 @@ Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& poses) {
                   "pivot: the stylus turned at most %.1f degrees, expected at least %.0f (pivot it about its tip in a "
                   "dimple, sweeping a cone)",
                   fit.spread_deg, kMinPivotSpreadDeg);
+    return fail(line);
+  }
+  fit.least_turn_deg = least_turn_deg(poses);
+  if (fit.least_turn_deg < kMinPivotLeastTurnDeg) {
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "pivot: the stylus turned about one axis only (its least-turned direction moved %.2f degrees, "
+                  "expected at least %.1f), which leaves the tip anywhere along that axis; sweep a cone about the tip",
+                  fit.least_turn_deg, kMinPivotLeastTurnDeg);
     return fail(line);
   }
   Eigen::MatrixXd a(3 * n, 6);

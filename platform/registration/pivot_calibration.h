@@ -18,17 +18,23 @@ namespace lungar::platform {
 /// Fewer poses, or a cone narrower than this, leave the tip undetermined along the stylus's axis.
 inline constexpr int kMinPivotPoses = 8;
 inline constexpr double kMinPivotSpreadDeg = 15.0;
+/// Poses turned about one axis only (a hinge, not a cone) fit every tip along that axis: the stylus direction that
+/// turned least must have moved this much (RMS about its mean, degrees). A cone swept all round, 15 degrees across,
+/// moves it about 5; a hinge with a tracker's orientation noise, a few tenths.
+inline constexpr double kMinPivotLeastTurnDeg = 1.5;
 
 struct PivotFit {
   Eigen::Vector3d tip_mm = Eigen::Vector3d::Zero();    ///< t: the tip in the stylus sensor's frame
   Eigen::Vector3d pivot_mm = Eigen::Vector3d::Zero();  ///< q: the fixed point, in the poses' frame
   double rms_mm = 0;                                   ///< RMS of |R_i t + p_i - q|
   double max_mm = 0;
-  double spread_deg = 0;  ///< the largest angle between any pose's orientation and the first's
+  double spread_deg = 0;      ///< the largest angle between any pose's orientation and the first's
+  double least_turn_deg = 0;  ///< how far the stylus direction that turned least moved (RMS, degrees)
   int poses = 0;
 };
 
-/// The least-squares pivot; an error (one line) with too few poses or too little rotation to find the tip.
+/// The least-squares pivot; an error (one line) with too few poses, too little rotation or rotation about one axis
+/// only, any of which leaves the tip undetermined.
 Result<PivotFit> fit_pivot(const std::vector<Eigen::Isometry3d>& stylus_poses);
 
 /// Writes "[trackers.stylus] tip_offset_mm = [...]" with a comment giving the fit's error, whole or not at all.

@@ -344,6 +344,18 @@ TEST(Decode, LayoutErrorsNameTheKey) {
   EXPECT_EQ(make_layout(t).error(), "trackers.patient.station: expected a station different from trackers.head's");
   t.report.station_offset = -1;  // without a station byte the values do not matter
   EXPECT_TRUE(make_layout(t));
+  for (int length : {0, 1025}) {
+    t = {};
+    t.report.length = length;
+    EXPECT_EQ(make_layout(t).error(), "trackers.report.length: expected 1 to 1024 bytes") << length;
+  }
+  t = {};
+  t.report.report_id = 0;  // a report id, even 0, takes the first byte: no field may sit on it
+  t.report.station_offset = 0;
+  EXPECT_EQ(make_layout(t).error(), "trackers.report.station_offset: expected a byte inside the report");
+  FieldFormat none;
+  none.type = FieldType::None;
+  EXPECT_EQ(none.bytes(), 0) << "a position of type none takes no bytes";
 }
 
 // The hole the issue found: with "w,-x,-y,-z" the device sends the conjugate, and the decoder must undo each
@@ -441,9 +453,14 @@ TEST(Decode, WorkspaceBoundsBothWays) {
   t.workspace_min_mm = {-100, -100, 500};
   t.workspace_max_mm = {100, 100, 1500};
   const ReportLayout l = layout_of(t);
-  for (const auto& [p, inside] : std::vector<std::pair<Eigen::Vector3d, bool>>{
-           {{0, 0, 1000}, true}, {{0, 0, 499}, false}, {{0, 0, 1501}, false}, {{-101, 0, 1000}, false},
-           {{0, 101, 1000}, false}}) {
+  // The last two: the bounds themselves are inside.
+  for (const auto& [p, inside] : std::vector<std::pair<Eigen::Vector3d, bool>>{{{0, 0, 1000}, true},
+                                                                               {{0, 0, 499}, false},
+                                                                               {{0, 0, 1501}, false},
+                                                                               {{-101, 0, 1000}, false},
+                                                                               {{0, 101, 1000}, false},
+                                                                               {{-100, -100, 500}, true},
+                                                                               {{100, 100, 1500}, true}}) {
     SCOPED_TRACE(p.transpose());
     Bytes r = head_report();
     for (int k = 0; k < 3; ++k) r.u32(6 + 4 * k, static_cast<std::uint32_t>(std::lround(p[k] * 100)), false);

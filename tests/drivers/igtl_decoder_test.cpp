@@ -183,4 +183,12 @@ TEST(IgtlDecode, LayoutErrorsNameTheKey) {
   t = {};
   t.axis_remap = "x,y";
   EXPECT_EQ(make_igtl_layout(t).error(), "trackers.axis_remap: expected a signed permutation of x,y,z");
+  for (double scale : {0.0, 1e7}) {  // each end of the range is outside it
+    t = {};
+    t.igtl.scale = scale;
+    EXPECT_EQ(make_igtl_layout(t).error(), "trackers.igtl.scale: expected a positive scale") << scale;
+  }
+  t = {};
+  t.igtl.rigid_tolerance = 0.0;
+  EXPECT_EQ(make_igtl_layout(t).error(), "trackers.igtl.rigid_tolerance: expected a positive tolerance");
 }

@@ -200,6 +200,26 @@ TEST(IgtlSource, MalformedMessagesAreCountedByReasonAndNeverApplied) {
   ASSERT_TRUE(eventually([&] { return c.size() == 2; }));
 }
 
+// A known type whose header announces a body too short for it: the body is read with the header and the whole
+// refused for its length (not the header alone, as an unknown type's), and the stream goes on.
+TEST(IgtlSource, AKnownTypeWithATooShortBodyIsReadWholeAndRefusedForItsLength) {
+  TestServer server;
+  Collector c;
+  auto made = make_tracker(igtl_settings(server.listener.port()), collecting(c));
+  ASSERT_TRUE(made) << made.error();
+  Tracker& t = **made;
+  ASSERT_TRUE(server.wait_for_client());
+  std::vector<std::uint8_t> short_one = igtl_transform_message("PatientToTracker", pose_at(1, 1), {});
+  short_one.resize(kIgtlHeaderBytes + 1);
+  for (int k = 0; k < 8; ++k) short_one[42 + k] = k == 7 ? 1 : 0;  // the header's body_size (big-endian): 1 byte
+  ASSERT_TRUE(server.send(short_one));
+  ASSERT_TRUE(server.send(igtl_transform_message("PatientToTracker", pose_at(2, 1), {})));
+  ASSERT_TRUE(eventually([&] { return t.stats().reports == 2; })) << t.stats().reports;
+  const TrackerStats s = t.stats();
+  EXPECT_EQ(s.malformed_by_reason[static_cast<int>(DecodeError::WrongLength)], 1u);
+  EXPECT_EQ(s.accepted, 1u);
+}
+
 TEST(IgtlSource, ARecordingReplaysToBitIdenticalPoses) {
   const auto dir = std::filesystem::temp_directory_path() / ("lungar_igtl_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

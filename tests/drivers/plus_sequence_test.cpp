@@ -118,9 +118,11 @@ TEST(PlusSequence, ReplaysAsATrackerSkippingInvalidFramesWithNoMalformedOnes) {
   (*tracker)->stop();
   EXPECT_EQ((*tracker)->stats().malformed, 0u);
   int stylus = 0, patient = 0;
+  std::vector<std::int64_t> stylus_ns;
   for (const PoseSample& s : got.copy()) {
     if (s.role == Role::Stylus) {
       ++stylus;
+      stylus_ns.push_back(s.t_device_ns);
       EXPECT_NE(s.position().x(), 20.0) << "frame 2's INVALID stylus is never applied";
       EXPECT_NEAR(s.position().y(), -5.0, 1e-3);
     }
@@ -128,6 +130,9 @@ TEST(PlusSequence, ReplaysAsATrackerSkippingInvalidFramesWithNoMalformedOnes) {
   }
   EXPECT_EQ(stylus, 4);
   EXPECT_EQ(patient, 5);
+  ASSERT_EQ(stylus_ns.size(), 4u);
+  EXPECT_NEAR(static_cast<double>(stylus_ns.back() - stylus_ns.front()), 0.2e9, 1e3)
+      << "the device clock is the frames' timestamps: frames 0 to 4, 50 ms apart";
   // A tool that feeds no role is refused as a whole sequence, in one line.
   std::string other = sequence_text();
   for (const char* tool : {"Reference", "Stylus"}) {
@@ -138,6 +143,36 @@ TEST(PlusSequence, ReplaysAsATrackerSkippingInvalidFramesWithNoMalformedOnes) {
   auto none = make_tracker(t, testing::quiet());
   ASSERT_FALSE(none);
   EXPECT_NE(none.error().find("expected transforms of Reference"), std::string::npos) << none.error();
+}
+
+// Only tools given relative to the Reference get the identity patient: a stylus relative to the tracker, with no
+// patient tool, is replayed alone.
+TEST(PlusSequence, NoPatientIsMadeUpForAToolRelativeToTheTracker) {
+  std::string stylus_only = sequence_text();
+  for (std::size_t at = stylus_only.find("_ReferenceToTracker"); at != std::string::npos;
+       at = stylus_only.find("_ReferenceToTracker")) {
+    const std::size_t start = stylus_only.rfind('\n', at) + 1;
+    stylus_only.erase(start, stylus_only.find('\n', at) + 1 - start);
+  }
+  TempFile f(stylus_only);
+  auto seq = read_plus_sequence(f.path.string());
+  ASSERT_TRUE(seq) << seq.error();
+  auto replay = plus_replay(*seq, TrackerConfig{}, "stylus.igs.mha");
+  ASSERT_TRUE(replay) << replay.error();
+  EXPECT_EQ(replay->log.records.size(), 4u) << "the four valid stylus transforms, and no patient";
+}
+
+// A transform's name splits at the first "To" after the tool's first letter: a one-letter tool is a tool.
+TEST(PlusSequence, AOneLetterToolSplitsAfterItsLetter) {
+  std::string text = sequence_text();
+  for (std::size_t at = text.find("Stylus"); at != std::string::npos; at = text.find("Stylus"))
+    text.replace(at, 6, "X");
+  TempFile f(text);
+  auto seq = read_plus_sequence(f.path.string());
+  ASSERT_TRUE(seq) << seq.error();
+  const PlusTransform* x = seq->frames[3].find("X");
+  ASSERT_NE(x, nullptr);
+  EXPECT_EQ(x->frame, "Tracker");
 }
 
 // [trackers.plus] renames the tools: a phantom's marker called "Phantom" and a pointer called "Pointer" feed the

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -12,6 +13,7 @@
 #include <Eigen/Geometry>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 #include "platform/app/settings_load.h"
 #include "platform/egl/egl_context.h"
@@ -87,6 +89,40 @@ TEST(DisplayCalibration, TooFewOrFlatAlignmentsAreRefused) {
   auto coplanar = calibrate_eye(flat);
   ASSERT_FALSE(coplanar);
   EXPECT_NE(coplanar.error().find("near a plane"), std::string::npos) << coplanar.error();
+}
+
+// The refusal says how flat the points are: the smallest spread over the largest. The corners of a 400 x 200 x 4 mm
+// box spread 200, 100 and 2 mm about their centre, so 0.01 (over the middle spread it would read 0.02).
+TEST(DisplayCalibration, AFlatSetIsRefusedWithItsSpreadRatio) {
+  std::vector<Alignment> box;
+  for (double x : {-200.0, 200.0})
+    for (double y : {-100.0, 100.0})
+      for (double z : {598.0, 602.0}) box.push_back({Eigen::Vector3d(x, y, z), Eigen::Vector2d(640 + x, 360 + y)});
+  auto flat = calibrate_eye(box);
+  ASSERT_FALSE(flat);
+  EXPECT_NE(flat.error().find("(spread 0.01 of their largest)"), std::string::npos) << flat.error();
+}
+
+// The JSON report gives each eye's focal lengths and principal point as K holds them (a skew in K, so that an
+// entry read from the wrong place shows).
+TEST(DisplayCalibration, TheJsonReportGivesEachEyesFocalLengthsAndPrincipalPoint) {
+  std::array<EyeCalibration, 2> eyes{};
+  for (int e = 0; e < 2; ++e) {
+    eyes[e].projection.setZero();
+    eyes[e].rotation.setIdentity();
+    eyes[e].centre_mm.setZero();
+    eyes[e].intrinsics << 900.0 + e, 0.5, 630.0 + e, 0.0, 905.0 + e, 372.0 + e, 0.0, 0.0, 1.0;
+  }
+  const auto path = std::filesystem::temp_directory_path() / "lungar_display_calibration_report.json";
+  const Status written = write_display_calibration_json(path.string(), eyes);
+  ASSERT_TRUE(written) << written.error();
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["left"]["focal_px"], nlohmann::json({900.0, 905.0}));
+  EXPECT_EQ(j["left"]["principal_point_px"], nlohmann::json({630.0, 372.0}));
+  EXPECT_EQ(j["right"]["focal_px"], nlohmann::json({901.0, 906.0}));
+  EXPECT_EQ(j["right"]["principal_point_px"], nlohmann::json({631.0, 373.0}));
+  std::filesystem::remove(path);
 }
 
 TEST(DisplayCalibration, AlignmentFileErrorsNameTheLine) {

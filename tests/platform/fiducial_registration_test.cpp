@@ -50,6 +50,16 @@ TEST(FiducialRegistration, RecoversAnExactTransform) {
   EXPECT_EQ(r.fiducials, 6);
 }
 
+// Three points not on a line fix a rigid transform: the fewest the registration takes.
+TEST(FiducialRegistration, ThreeExactPointsAreEnough) {
+  const Synthetic s = make(3, 0.0, 2);
+  auto fitted = lungar::platform::register_fiducials(s.model, s.tracked);
+  ASSERT_TRUE(fitted) << fitted.error();
+  EXPECT_LT(fitted->rotation.angularDistance(s.q), 1e-9);
+  EXPECT_LT((fitted->translation_mm - s.t).norm(), 1e-8);
+  EXPECT_EQ(fitted->fiducials, 3);
+}
+
 TEST(FiducialRegistration, NoisyFiducialsGiveTheExpectedErrorAndAClosedTransform) {
   // Fitzpatrick et al. 1998: E[FRE^2] = (1 - 2/N) E[FLE^2] for a rigid fit in 3-D; FLE^2 = 3 sigma^2.
   const double sigma = 0.5;

@@ -4,12 +4,14 @@
 ///        types, refused in one line when wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <string>
 
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/motion_figures.h"
+#include "sim/motion/surface_regions.h"
 #include "sim/pathology/pathology.h"
 #include "sim_test_support.h"
 
@@ -119,6 +121,40 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
   }
 }
 
+// The region's border is a ramp, not a step (pathology.h): a vertex up to kConsolidationRamp of the lung's height
+// outside the third keeps a response between the region's and the healthy one, linear in its distance, so that the
+// surface does not tear where the region ends. A step passed every other test (issue 42).
+TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
+  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset sick = with({"consolidation:right:middle"});
+  const BakedLung& lung = healthy.lungs[index_of(healthy, "right")];
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    lo = std::min(lo, double{healthy.positions[3 * i + 2]});
+    hi = std::max(hi, double{healthy.positions[3 * i + 2]});
+  }
+  const double h = hi - lo, ramp = kConsolidationRamp * h, bottom = lo + h / 3, top = lo + 2 * h / 3;
+  const std::uint32_t c = healthy.coefficients();
+  int below = 0, above = 0, wrong = 0;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    double before = 0, after = 0;
+    for (std::uint32_t k = 0; k < c; ++k) {
+      before += std::abs(healthy.sh_coeffs[i * c + k]);
+      after += std::abs(sick.sh_coeffs[i * c + k]);
+    }
+    if (before < 1e-6) continue;
+    const double z = healthy.positions[3 * i + 2], outside = std::max({0.0, bottom - z, z - top});
+    const double expected = 1.0 - (1.0 - kConsolidatedResponse) * std::clamp(1.0 - outside / ramp, 0.0, 1.0);
+    if (std::abs(after / before - expected) > 1e-4 && wrong++ == 0)
+      ADD_FAILURE() << "vertex " << i << " " << outside << " mm outside the third keeps " << after / before
+                    << " of its response, expected " << expected;
+    if (outside > 0.1 * ramp && outside < 0.9 * ramp) ++(z < bottom ? below : above);
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(below, 5) << "vertices on the ramp under the region";
+  EXPECT_GT(above, 5) << "vertices on the ramp over the region";
+}
+
 TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath) {
   const BakedAsset healthy = test::sliding_bake().asset;
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
@@ -128,12 +164,58 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
     EXPECT_NEAR(both.rest_ml[l] / before.rest_ml[l], 1.0 + kEmphysemaFrcGain * 0.75, 0.005) << l;
   }
   EXPECT_NEAR(both.change_ml[right] + both.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
+  // Each lung's centre moves with its vertices: the scaling about the hilum scales every vector between them alike.
+  const BakedAsset larger = with({"emphysema:0.75"});
+  const double scale = std::cbrt(1.0 + kEmphysemaFrcGain * 0.75);
+  for (std::size_t l : {right, left}) {
+    const auto point = [](const BakedAsset& a, std::size_t i) {
+      return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
+    };
+    const auto centre = [](const BakedLung& lung) {
+      return Eigen::Vector3d(lung.centre[0], lung.centre[1], lung.centre[2]);
+    };
+    const std::size_t i = healthy.lungs[l].first_vertex;
+    const Eigen::Vector3d before_to_centre = centre(healthy.lungs[l]) - point(healthy, i);
+    EXPECT_LT((centre(larger.lungs[l]) - point(larger, i) - scale * before_to_centre).norm(), 0.01) << l;
+  }
   const Breath one = breathe(with({"emphysema:1:left"}), 500);
   EXPECT_NEAR(one.rest_ml[left] / before.rest_ml[left], 1.0 + kEmphysemaFrcGain, 0.005);
   EXPECT_NEAR(one.rest_ml[right], before.rest_ml[right], 1e-9) << "SIDE: the other lung keeps its shape";
   EXPECT_EQ(with({"emphysema:0"}).positions, healthy.positions) << "severity 0 changes nothing";
   EXPECT_TRUE(has_emphysema({"pneumothorax:right:30", "emphysema:0.5"}));
   EXPECT_FALSE(has_emphysema({"pneumothorax:right:30"}));
+}
+
+// Emphysema scales each lung about its hilum (pathology.h): the map's fixed point is the area-weighted centre of
+// the lung's medial face (normals within 60 degrees of the midline) in the middle third of its height.
+TEST(Pathology, EmphysemaScalesEachLungAboutItsHilum) {
+  const BakedAsset healthy = test::sliding_bake().asset, larger = with({"emphysema:1"});
+  const double s = std::cbrt(1.0 + kEmphysemaFrcGain);
+  const auto point = [](const BakedAsset& a, std::size_t i) {
+    return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
+  };
+  for (const BakedLung& lung : healthy.lungs) {
+    const std::size_t first = lung.first_vertex, end = first + lung.vertex_count;
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = first; i < end; ++i) {
+      lo = std::min(lo, point(healthy, i).z());
+      hi = std::max(hi, point(healthy, i).z());
+    }
+    const Eigen::Vector3d medial = medial_direction(lung.name, lung.centre[0], 0.0);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double area = 0;
+    for (std::size_t i = first; i < end; ++i) {
+      const Eigen::Vector3d n(healthy.normals[3 * i], healthy.normals[3 * i + 1], healthy.normals[3 * i + 2]);
+      const double z = point(healthy, i).z();
+      if (z < lo + (hi - lo) / 3 || z > hi - (hi - lo) / 3 || n.dot(medial) < 0.5) continue;
+      sum += healthy.areas[i] * point(healthy, i);
+      area += healthy.areas[i];
+    }
+    ASSERT_GT(area, 0.0) << lung.name;
+    const Eigen::Vector3d hilum = sum / area;
+    for (std::size_t i : {first, first + lung.vertex_count / 2, end - 1})
+      EXPECT_LT((point(larger, i) - (hilum + s * (point(healthy, i) - hilum))).norm(), 0.01) << lung.name << " " << i;
+  }
 }
 
 TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {

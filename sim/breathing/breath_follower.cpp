@@ -52,6 +52,7 @@ void BreathFollower::add(double t_s, double value) {
   }
   last_t_ = t_s;
   last_value_ = value;
+  bin(t_s, value);
   newest_[newest_next_] = {t_s, value};
   newest_next_ = (newest_next_ + 1) % newest_.size();
   newest_count_ = std::min(newest_count_ + 1, newest_.size());
@@ -140,12 +141,41 @@ double BreathFollower::rate_per_min() const {
   return span > 0 ? 60.0 * static_cast<double>(n - 1) / span : 0.0;
 }
 
+void BreathFollower::bin(double t_s, double value) {
+  const long index = static_cast<long>(std::floor(t_s / kLevelBinS));
+  if (index != bin_index_ && bin_n_ > 0) {  // bins a loss skipped stay unfilled: the window is of what was seen
+    bins_[bins_next_] = bin_sum_ / bin_n_;
+    bins_next_ = (bins_next_ + 1) % kLevelBins;
+    bins_count_ = std::min(bins_count_ + 1, kLevelBins);
+    bin_sum_ = 0;
+    bin_n_ = 0;
+  }
+  bin_index_ = index;
+  bin_sum_ += value;
+  ++bin_n_;
+}
+
+double BreathFollower::window_level() const {
+  if (bins_count_ < 16) return std::nan("");
+  std::array<double, kLevelBins> b = bins_;
+  const auto n = static_cast<std::ptrdiff_t>(bins_count_);
+  const auto q = static_cast<std::ptrdiff_t>(kLevelQuantile * static_cast<double>(n - 1) + 0.5);
+  std::nth_element(b.begin(), b.begin() + q, b.begin() + n);
+  return b[static_cast<std::size_t>(q)];
+}
+
 double BreathFollower::baseline() const {
   if (end_exhales_.count == 0) return has_low_ ? low_.value : lo_;
   std::array<double, kMaxMedianOf> e = end_exhales_.v;
   const std::size_t n = end_exhales_.count;
   std::sort(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
-  return n % 2 == 1 ? e[n / 2] : 0.5 * (e[n / 2 - 1] + e[n / 2]);
+  const double med = n % 2 == 1 ? e[n / 2] : 0.5 * (e[n / 2 - 1] + e[n / 2]);
+  // A quiet breath's end-exhale lies inside the band (a sinusoidal one's, a quarter of a depth below the window's
+  // level; one with an end-expiratory pause, closer): the band acts only when the chest has settled elsewhere.
+  // A volume source's end-exhale is its own.
+  const double w = window_level();
+  if (p_.in_ml || !std::isfinite(w) || amplitudes_.count == 0) return med;
+  return std::clamp(med, w - kLevelBelow * amplitude(), w);
 }
 
 double BreathFollower::max_ml() const { return p_.max_ml > 0 ? p_.max_ml : 3.0 * p_.tidal_volume_ml; }

@@ -11,9 +11,13 @@
 ///   flagged `irregular`, but they do not rescale the next minute or move the end-exhale level.
 /// - The end-exhale level (the baseline) is the median of the last kBaselineOf breaths' end-exhales (the lowest
 ///   point since the breath before): a step, a drift or one deep exhale moves it by one breath's worth at most,
-///   and it is never extrapolated, so a marker that shifts on the table cannot drag dV away without bound.
-/// - Amplitude drives geometry: dV = k (s - baseline), with k = V_T / the median amplitude of the last breaths,
-///   so a deeper breath gives a bigger dV and one irregular breath does not rescale the rest; a volume source
+///   and it is never extrapolated, so a marker that shifts on the table cannot drag dV away without bound. It is
+///   kept within kLevelBelow depths below the level the chest keeps coming back to (a low quantile of the last
+///   8 s): talking counts no breath for many seconds while the chest settles higher or lower, and a level that
+///   waited for breaths would turn that into a litre-sized dV (a real talking recording: dV pinned at its bound).
+/// - Amplitude drives geometry: dV = k (s - baseline), with k = V_T / the median amplitude of the last breaths
+///   (up to kMaxMedianOf, about two minutes), so a deeper breath gives a bigger dV and neither one irregular
+///   breath nor a stretch of talking, whose turns can pass for deep breaths, rescales the rest; a volume source
 ///   (FollowerParams::in_ml) gives litres directly, k = 1.
 /// - dV stays what a respiratory system can do: never more than V_T/2 below the end-exhale level (the expiratory
 ///   reserve a quiet breath does not reach) and never above max_ml (the inspiratory capacity). Inside
@@ -50,11 +54,20 @@ inline constexpr double kHandoverMlPerS = 500.0;
 /// Prediction: the slope is fitted over the newest samples, and dV extrapolated along it, at most so far.
 inline constexpr double kSlopeWindowS = 0.15;  ///< how much of the newest samples the slope is fitted over
 inline constexpr double kMaxPredictS = 0.3;    ///< the furthest dV is extrapolated past the newest sample
-/// The most breaths the amplitude's median and the rate are taken over.
-inline constexpr int kMaxMedianOf = 9;
+/// The most breaths the amplitude's median is taken over: about two minutes, so that a stretch of talking or
+/// coughing, whose turns can pass for deep breaths, cannot rescale the breath.
+inline constexpr int kMaxMedianOf = 31;
+/// The breaths the rate and the irregular period are taken over.
+inline constexpr int kRateOf = 9;
 /// The breaths whose end-exhales the end-exhale level is the median of: one odd one is outvoted.
 inline constexpr int kBaselineOf = 3;
-
+/// The level the chest keeps coming back to: a low quantile of the surrogate over its last 8 s (64 bins of
+/// 125 ms). The end-exhale level stays between it and kLevelBelow typical depths below it, so that when the chest
+/// settles elsewhere with no breath counted (talking shifts it for many seconds) the level goes with it.
+inline constexpr double kLevelBinS = 0.125;
+inline constexpr std::size_t kLevelBins = 64;
+inline constexpr double kLevelQuantile = 0.35;
+inline constexpr double kLevelBelow = 0.35;
 struct FollowerParams {
   double tidal_volume_ml = 500.0;  ///< V_T: what the median breath of the surrogate maps to
   double lost_after_s = 0.5;       ///< no sample for this long: the signal is lost
@@ -88,6 +101,7 @@ class BreathFollower {
   explicit BreathFollower(FollowerParams p = {}) : p_(p) {
     amplitudes_.capacity = static_cast<std::size_t>(std::clamp(p_.median_of, 1, kMaxMedianOf));
     end_exhales_.capacity = kBaselineOf;
+    peak_times_.capacity = kRateOf;
   }
 
   /// One surrogate sample (inhale up); times must not decrease. A non-finite value is dropped and counted.
@@ -132,6 +146,10 @@ class BreathFollower {
   bool irregular(double a, double t_s) const;
   double amplitude() const;
   double baseline() const;
+  /// The kLevelQuantile of the last kLevelBins bins' means; NaN before 2 s of them.
+  double window_level() const;
+  /// Adds a sample to the bin of its time, closing the last bin when its time is past.
+  void bin(double t_s, double value);
   /// dV within the respiratory system's range, compressed smoothly near its ends.
   double bounded(double raw_ml) const;
 
@@ -148,6 +166,11 @@ class BreathFollower {
   double last_turn_s_ = -1;        ///< the last peak found, breath or not: the chest moved
   std::array<Turn, 16> newest_{};  ///< the newest samples, a ring: what the slope is fitted to
   std::size_t newest_next_ = 0, newest_count_ = 0;
+  std::array<double, kLevelBins> bins_{};  ///< the last kLevelBins bins' means, a ring
+  std::size_t bins_next_ = 0, bins_count_ = 0;
+  long bin_index_ = -1;  ///< the bin being filled: floor(t / kLevelBinS)
+  double bin_sum_ = 0;
+  int bin_n_ = 0;
   int breaths_ = 0, dropped_ = 0;
   bool irregular_ = false, in_apnoea_ = false;
   int irregular_breaths_ = 0, apnoeas_ = 0;

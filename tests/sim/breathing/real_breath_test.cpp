@@ -20,12 +20,6 @@ namespace {
 
 const std::string kData = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/breath/extmarker/";
 
-/// The one file the follower does not yet meet in full: the upper-chest marker of the `LT` session, whose chest
-/// moves six breaths' depth at once (120-137 s), beyond what dV may show (3 V_T): judged on its bounds and on
-/// |corr| >= kKnownShortCorr, so that it cannot get worse unnoticed.
-const std::string kKnownShort = "201205101536-UCC-1-LT-142-6.csv";
-constexpr double kKnownShortCorr = 0.78;
-
 struct Followed {
   std::vector<double> t, dv;
   long bounded = 0;
@@ -74,16 +68,12 @@ TEST(RealBreath, EveryExtMarkerRecordingMeetsTheFiguresOfBreathCheck) {
       met += bounded ? 1 : 0;
       continue;
     }
-    if (name == kKnownShort) {
-      EXPECT_GE(f.corr, kKnownShortCorr);
-      continue;
-    }
     EXPECT_GE(f.corr, 0.9);
     EXPECT_GE(f.median_swing_ml, 425.0);
     EXPECT_LE(f.median_swing_ml, 575.0);
     met += bounded && f.corr >= 0.9 && f.median_swing_ml >= 425.0 && f.median_swing_ml <= 575.0 ? 1 : 0;
   }
-  EXPECT_EQ(met, 14) << "all but " << kKnownShort;
+  EXPECT_EQ(met, 15);
 }
 
 TEST(RealBreath, TalkingIsFollowedAndFlaggedWithoutRescalingTheBreath) {
@@ -101,7 +91,7 @@ TEST(RealBreath, TalkingIsFollowedAndFlaggedWithoutRescalingTheBreath) {
 
 TEST(RealBreath, TheBoundsActAndAreCountedWhereTheChestMovesBeyondABreath) {
   // The `LT` upper-chest marker moves six breaths' depth at once: the bound holds dV and counts it.
-  auto trace = read_breath_trace(kData + kKnownShort);
+  auto trace = read_breath_trace(kData + "201205101536-UCC-1-LT-142-6.csv");
   ASSERT_TRUE(trace) << trace.error();
   EXPECT_EQ(trace->skipped, 1) << "one garbled timestamp in the published file";
   const Followed run = follow(*trace, 140.0);

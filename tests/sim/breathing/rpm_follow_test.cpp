@@ -121,6 +121,8 @@ TEST(RpmFollow, TheFlaggedDriftingTraceIsFollowedBreathForBreath) {
   std::nth_element(end_exhale.begin(), end_exhale.begin() + static_cast<std::ptrdiff_t>(end_exhale.size() / 2),
                    end_exhale.end());
   EXPECT_LE(end_exhale[end_exhale.size() / 2], 75.0) << "the median end-exhale |dV|, mL";
+  RecordProperty("peaks_on_time", std::to_string(on_time) + " of " + std::to_string(counted));
+  RecordProperty("median_end_exhale_abs_dv_ml", std::to_string(end_exhale[end_exhale.size() / 2]));
   // The trace less its drift, as breath-check takes it: both less their 8 s running median, after 20 s.
   std::vector<double> t, trace, followed;
   for (std::size_t i = 0; i < run.t.size(); i += 4) {  // the trace's own 25 Hz
@@ -129,7 +131,9 @@ TEST(RpmFollow, TheFlaggedDriftingTraceIsFollowedBreathForBreath) {
     trace.push_back(RpmRecording::drift_mm(run.t[i]) + r.breathing_mm(run.t[i]));
     followed.push_back(run.dv[i]);
   }
-  EXPECT_GE(testing::correlation(testing::detrended(t, trace, 8.0), testing::detrended(t, followed, 8.0)), 0.9);
+  const double corr = testing::correlation(testing::detrended(t, trace, 8.0), testing::detrended(t, followed, 8.0));
+  EXPECT_GE(corr, 0.9);
+  RecordProperty("corr_with_the_trace_less_its_drift", std::to_string(corr));
   EXPECT_GE(*std::min_element(run.dv.begin(), run.dv.end()), -250.0);
   EXPECT_LE(*std::max_element(run.dv.begin(), run.dv.end()), 1500.0);
 }

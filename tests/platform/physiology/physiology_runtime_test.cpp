@@ -42,8 +42,10 @@ void use_loopback_fast_dds() {
     setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":new_delete_type_mismatch=0").c_str(), 1);
 }
 
-/// lungar following `breath_source` for 20 s, the publisher of `kind` started once lungar listens and publishing
+/// lungar following `breath_source` for 24 s, the publisher of `kind` started once lungar listens and publishing
 /// for 14 s: lungar follows once it has seen two breaths, and hands back to its model when the publisher stops.
+/// The 10 s to spare cover the publisher's start and discovery on a loaded machine: with 6, lungar once stopped
+/// before the last bad sample arrived, and the count of dropped samples came one short.
 PhysiologyRun run_with_publisher(const std::string& breath_source, const std::string& kind, const std::string& tag) {
   use_loopback_fast_dds();
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / test_classroom("physiology-" + tag);
@@ -52,7 +54,7 @@ PhysiologyRun run_with_publisher(const std::string& breath_source, const std::st
   StationProcess lungar(
       kLungar,
       {"--config", kConfig, "--asset", kAsset, "--tracker", "mock", "--breath", breath_source + "@" + domain,
-       "--seconds", "20", "--stats-json", (dir / "stats.json").string(), "--snapshot", (dir / "snapshot.png").string()},
+       "--seconds", "24", "--stats-json", (dir / "stats.json").string(), "--snapshot", (dir / "snapshot.png").string()},
       dir / "lungar");
   EXPECT_TRUE(lungar.wait_for("breathing: following", 60.0)) << lungar.err();
   StationProcess publisher(LUNGAR_FASTDDS_PUBLISHER, {kind, domain, "14", "bad"}, dir / "publisher");

@@ -58,6 +58,7 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == Deform::Cpu1;
   demo.procedural = procedural;
+  demo.stop = &g_stop_requested;  // Ctrl-C during a first run's bake
   Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
   if (!drawn) return drawn.with_context("");
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");

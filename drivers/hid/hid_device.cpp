@@ -2,7 +2,11 @@
 /// @brief The HID reader thread: disconnected -> opening -> streaming <-> stale, with back-off on reopen.
 #include <hidapi/hidapi.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +14,7 @@
 
 #include "drivers/hid/hid_hotplug.h"
 #include "drivers/hid/hid_interface.h"
+#include "drivers/hid/hid_open_failure.h"
 #include "drivers/tracker/reopen_backoff.h"
 #include "drivers/tracker/tracker_core.h"
 #include "drivers/tracker/tracker_device.h"
@@ -104,12 +109,10 @@ class HidDevice final : public TrackerDevice {
 
   bool open(TrackerCore& core) {
     auto found = hid_probe(hid_);
-    if (!found) return false;
+    if (!found) return say_once(core, hid_no_match(hid_));
     dev_ = hid_open_path(found->path.c_str());
-    if (!dev_) {
-      core.log(-1, "hid: cannot open %s (permissions? see scripts/99-lungar.rules)", found->path.c_str());
-      return false;
-    }
+    if (!dev_) return say_once(core, hid_cannot_open(*found, open_errno(found->path)));
+    said_.clear();  // a later outage says its reason again
     found_ = *found;
     core.log(-1, "hid: opened %s (%04x:%04x %s %s, serial %s)", found_.path.c_str(), found_.vendor_id,
              found_.product_id, found_.manufacturer.c_str(), found_.product.c_str(), found_.serial.c_str());
@@ -135,6 +138,26 @@ class HidDevice final : public TrackerDevice {
     return true;
   }
 
+  /// Logs why the open failed when the reason is new: an absent tracker retried every few seconds says so once,
+  /// not on every try. Always false (not opened).
+  bool say_once(TrackerCore& core, const HidOpenFailure& failure) {
+    if (failure.reason == said_) return false;
+    said_ = failure.reason;
+    core.log(-1, "%s", failure.line.c_str());
+    return false;
+  }
+
+  /// What open() says of `path` as hidapi opens it (hidapi keeps no errno): EACCES for a node this user may not
+  /// read.
+  static int open_errno(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
+    if (fd >= 0) {
+      ::close(fd);
+      return EIO;  // it opens now: whatever hidapi met was passing
+    }
+    return errno;
+  }
+
   void lose(TrackerCore& core) {
     close();
     core.set_state(TrackerState::Disconnected);
@@ -151,6 +174,7 @@ class HidDevice final : public TrackerDevice {
   int read_timeout_ms_;
   hid_device* dev_ = nullptr;
   HidFound found_;
+  std::string said_;  ///< the reason of the open failure last logged ("": none since the last open)
   UsbHotplug hotplug_;
 };
 

@@ -48,6 +48,11 @@ class ClassroomCourse final : public LungCourse {
   const std::vector<sim::LungShape>& at(std::int64_t now_ns) override;
   /// `pathologies` (the instructor's when followed) and `sync_lungs` ("instructor" or "own").
   void add_stats(nlohmann::json& stats) const override;
+  /// The instructor's pathologies once followed, else the station's own.
+  const std::string* pathologies_now() const override {
+    if (followed_) return followed_->pathologies_now();
+    return own_ ? own_->pathologies_now() : nullptr;
+  }
 
  private:
   /// A new timeline from the instructor: builds its course unless it is the one drawn (or the builder is busy:

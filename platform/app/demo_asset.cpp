@@ -1,25 +1,30 @@
 /// @file demo_asset.cpp
-/// @brief Finds the demo's label map and lungar-bake, runs the bake once as a child process, caches the asset;
-///        the procedural pair is baked in-process.
+/// @brief Finds the demo's label map and lungar-bake, runs the bake once as a child process (the procedural pair's
+///        too, in-process only when no lungar-bake is found), caches the asset.
 #include "platform/app/demo_asset.h"
 
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <thread>
 #include <vector>
 
+#include "config/base/clock.h"
 #include "config/base/crc32.h"
 #include "config/config_paths.h"
 #include "sim/asset/asset_io.h"
+#include "sim/parallel/parallel_for.h"
 
 extern char** environ;
 
@@ -81,8 +86,46 @@ std::string ct_asset_path(const DemoAssetOptions& o, const fs::path& map) {
   return (fs::path(cache_dir(o)) / name).string();
 }
 
-/// Runs `argv` (argv[0] a path) with the runtime's stdout and stderr, and waits for it.
-Status run_child(const std::vector<std::string>& argv) {
+/// How long a bake asked to stop (SIGTERM: it stops at its next step) may take before it is killed.
+constexpr std::int64_t kStopGraceNs = 500'000'000;
+
+/// Removes `path` and the partial files an atomic write of it leaves beside it ("<path>.partial-XXXXXX").
+void remove_with_partials(const fs::path& path) {
+  std::error_code ec;
+  fs::remove(path, ec);
+  const std::string prefix = path.filename().string() + ".partial-";
+  for (const auto& entry : fs::directory_iterator(path.parent_path(), ec)) {
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) fs::remove(entry.path(), ec);
+  }
+}
+
+/// Waits for `pid`; once `*stop` is set, asks it to stop and, still running half a second later, kills it.
+/// Whether it was stopped so.
+bool wait_or_stop(pid_t pid, int& status, const std::atomic<bool>* stop) {
+  std::int64_t asked_ns = 0;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) return asked_ns != 0;
+    if (done < 0 && errno != EINTR) return asked_ns != 0;
+    if (stop != nullptr && stop->load()) {
+      if (asked_ns == 0) {
+        asked_ns = monotonic_ns();
+        ::kill(pid, SIGTERM);
+      } else if (monotonic_ns() - asked_ns > kStopGraceNs) {
+        ::kill(pid, SIGKILL);
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+/// Runs the bake `argv` (argv[0] a path) with the runtime's stdout and stderr, writing `out`, and waits for it.
+/// It writes to a name of this process's own beside `out`, renamed into place when it succeeds, so that a stop
+/// (Ctrl-C) removes everything it wrote, partial files included, and nothing half-baked is ever cached.
+Status run_bake(std::vector<std::string> argv, const fs::path& out, const std::atomic<bool>* stop) {
+  const fs::path own = out.string() + ".baking-" + std::to_string(::getpid());
+  argv.push_back("--out");
+  argv.push_back(own.string());
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -90,11 +133,18 @@ Status run_child(const std::vector<std::string>& argv) {
   if (const int e = posix_spawn(&pid, args[0], nullptr, nullptr, args.data(), environ); e != 0)
     return fail(argv[0] + ": cannot start it: " + std::strerror(e));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return fail(argv[0] + ": cannot wait for it: " + std::strerror(errno));
+  const bool stopped = wait_or_stop(pid, status, stop);
+  if (stopped || !WIFEXITED(status) || WEXITSTATUS(status) != 0) remove_with_partials(own);
+  if (stopped) return fail(argv[0] + ": stopped before the bake finished; nothing was cached");
   if (WIFSIGNALED(status)) return fail(argv[0] + ": stopped by signal " + std::to_string(WTERMSIG(status)));
   if (WEXITSTATUS(status) != 0)
     return fail(argv[0] + ": failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+  std::error_code ec;
+  fs::rename(own, out, ec);
+  if (ec) {
+    remove_with_partials(own);
+    return fail(out.string() + ": cannot move the baked asset into place: " + ec.message());
+  }
   return ok();
 }
 
@@ -123,14 +173,46 @@ Result<DrawnAsset> ct_asset(const DemoAssetOptions& o, const fs::path& map, cons
                                    std::to_string(o.nodes),
                                    "--bands",
                                    std::to_string(o.bands),
-                                   "--no-evaluate",
-                                   "--out",
-                                   path};
+                                   "--no-evaluate"};
   if (!o.transfer_rows) argv.push_back("--no-transfer-rows");
-  if (Status s = run_child(argv); !s) return fail("demo asset: " + s.error());
+  if (Status s = run_bake(argv, path, o.stop); !s) return fail("demo asset: " + s.error());
   auto loaded = sim::load_asset(path);
   if (!loaded) return fail("demo asset: " + loaded.error());
   return DrawnAsset{loaded.take(), name, true};
+}
+
+/// The procedural pair baked here (no lungar-bake found), stopped at its next step once `o.stop` is set. The log
+/// names each stage as it starts, and a stage's share done only where the bake knows one (no "0 %" that sits).
+Result<sim::BakedAsset> bake_in_process(const DemoAssetOptions& o, const std::string& path,
+                                        const std::function<void(const std::string&)>& log) {
+  sim::BakeOptions bake;
+  bake.bands = o.bands;
+  bake.transfer_rows = o.transfer_rows;
+  bake.evaluate = false;
+  bake.cancel = o.stop;
+  int last_percent = -1;
+  std::string last_stage;
+  Result<sim::BakeOutput> baked = fail("not baked");
+  try {
+    baked = sim::bake_procedural(o.nodes, o.seed, bake, [&](std::string_view stage, double fraction) {
+      const int percent = static_cast<int>(fraction * 100.0);
+      if (stage != last_stage) {
+        last_stage = std::string(stage);
+        last_percent = percent;
+        log("  bake: " + last_stage + (percent > 0 ? " " + std::to_string(percent) + " %" : std::string()));
+      } else if (percent / 25 != last_percent / 25) {
+        last_percent = percent;
+        log("  bake: " + last_stage + " " + std::to_string(percent) + " %");
+      }
+    });
+  } catch (const sim::Cancelled&) {
+    return fail("procedural demo asset: stopped before the bake finished; nothing was cached");
+  }
+  if (!baked) return fail("procedural demo asset: " + baked.error());
+  if (auto written = sim::write_asset(baked->asset, path); !written) {
+    log("could not cache the demo asset (" + written.error() + "); going on without the cache");
+  }
+  return std::move(baked->asset);
 }
 
 }  // namespace
@@ -194,27 +276,21 @@ Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
     if (loaded) return loaded;
     log("cached demo asset unusable (" + loaded.error() + "); baking it again");
   }
-  log("baking the procedural demo lungs (" + std::to_string(o.nodes) + " nodes, once; cached at " + path + ")");
-  sim::BakeOptions bake;
-  bake.bands = o.bands;
-  bake.transfer_rows = o.transfer_rows;
-  bake.evaluate = false;
-  int last_percent = -1;
-  std::string last_stage;
-  auto baked = sim::bake_procedural(o.nodes, o.seed, bake, [&](std::string_view stage, double fraction) {
-    const int percent = static_cast<int>(fraction * 100.0);
-    if (stage != last_stage || percent / 25 != last_percent / 25) {
-      last_stage = std::string(stage);
-      last_percent = percent;
-      log("  bake: " + last_stage + " " + std::to_string(percent) + " %");
-    }
-  });
-  if (!baked) return fail("procedural demo asset: " + baked.error());
+  log("baking the procedural demo lungs (" + std::to_string(o.nodes) + " nodes, once; cached at " + path +
+      "; Ctrl-C stops it)");
   fs::create_directories(fs::path(path).parent_path(), ec);
-  if (auto written = sim::write_asset(baked->asset, path); !written) {
-    log("could not cache the demo asset (" + written.error() + "); going on without the cache");
+  // In a child, as the CT lungs: a Ctrl-C stops it within a second, not at the end of a long factorisation.
+  if (const fs::path tool = find_bake_tool(o); !tool.empty()) {
+    std::vector<std::string> argv = {tool.string(),        "--procedural", "--nodes", std::to_string(o.nodes),
+                                     "--seed",             std::to_string(o.seed),  "--bands",
+                                     std::to_string(o.bands), "--no-evaluate"};
+    if (!o.transfer_rows) argv.push_back("--no-transfer-rows");
+    if (Status s = run_bake(argv, path, o.stop); !s) return fail("procedural demo asset: " + s.error());
+    auto loaded = sim::load_asset(path);
+    if (!loaded) return fail("procedural demo asset: " + loaded.error());
+    return loaded;
   }
-  return std::move(baked->asset);
+  return bake_in_process(o, path, log);
 }
 
 }  // namespace lungar::platform

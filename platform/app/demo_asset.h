@@ -11,6 +11,7 @@
 /// names carry the asset format version and sim's bake revision, so a changed bake bakes again.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -34,6 +35,8 @@ struct DemoAssetOptions {
   std::string cache_dir;  ///< empty: config::cache_dir() ($LUNGAR_CACHE_DIR, $XDG_CACHE_HOME/lungar, ~/.cache/lungar)
   std::string data_dir;   ///< empty: the search above; else where lungs/<kDemoLabelMap> is
   std::string bake_tool;  ///< empty: the search above; else the lungar-bake to run
+  /// Set (Ctrl-C) while a bake runs: it stops within a second and leaves nothing in the cache; null: never.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 /// What the runtime draws, and its name for the stats JSON's `asset` (the file, or the cache file's name).

@@ -33,6 +33,18 @@ Result<std::vector<sim::LungShape>> state_of(const sim::BakedAsset& healthy, con
   return shapes;
 }
 
+/// "a, b" ("none" for no pathology), with " (coming)" after `coming` and " (going)" after `going`.
+std::string label_of(std::vector<std::string> present, const std::string& coming, const std::string& going) {
+  if (!coming.empty()) present.push_back(coming);
+  std::string out;
+  for (const std::string& spec : present) {
+    out += (out.empty() ? "" : ", ") + spec;
+    if (!coming.empty() && spec == coming) out += " (coming)";
+    if (!going.empty() && spec == going) out += " (going)";
+  }
+  return out.empty() ? "none" : out;
+}
+
 }  // namespace
 
 sim::PathologyTimeline timeline_of(const std::vector<std::string>& start, const config::Scenario* scenario) {
@@ -65,9 +77,12 @@ Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(const sim::Bake
     }
     auto to = state_of(healthy, drawn, sim::present_after(timeline, k + 1), where);
     if (!to) return to.with_context("");
-    course->steps_.push_back({e.at_s, e.over_s, to.take()});
+    const std::vector<std::string> before = sim::present_after(timeline, k);
+    course->steps_.push_back({e.at_s, e.over_s, to.take(), e.add.empty() ? e.remove : e.add,
+                              label_of(before, e.add, e.remove), label_of(sim::present_after(timeline, k + 1), "", "")});
   }
   course->now_ = course->start_;
+  course->start_label_ = label_of(timeline.start, "", "");
   return course;
 }
 
@@ -78,6 +93,7 @@ const std::vector<sim::LungShape>& PathologyCourse::at(std::int64_t now_ns) {
 const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
   const std::vector<sim::LungShape>* done = &start_;
   done_ = 0;
+  under_way_ = false;
   for (const Step& step : steps_) {
     if (t_s >= step.at_s + step.over_s) {
       done = &step.to;
@@ -85,6 +101,7 @@ const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
       continue;
     }
     if (t_s > step.at_s) {  // under way: from where the steps before left the lungs
+      under_way_ = true;
       now_ = sim::blend(*done, step.to, ease((t_s - step.at_s) / step.over_s));
       return now_;
     }
@@ -94,8 +111,20 @@ const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
   return now_;
 }
 
+const std::string& PathologyCourse::label_now() const {
+  if (under_way_) return steps_[done_].label_under_way;
+  return done_ == 0 ? start_label_ : steps_[done_ - 1].label_done;
+}
+
 void PathologyCourse::add_stats(nlohmann::json& stats) const {
-  stats["pathologies"] = sim::present_after(timeline_, done_);
+  std::vector<std::string> present = sim::present_after(timeline_, done_);
+  std::vector<std::string> changing;
+  if (under_way_) {
+    changing.push_back(steps_[done_].changing);
+    if (!timeline_.events[done_].add.empty()) present.push_back(steps_[done_].changing);  // it shows already
+  }
+  stats["pathologies"] = present;
+  stats["pathologies_changing"] = changing;
 }
 
 }  // namespace lungar::platform

@@ -38,7 +38,11 @@ class PathologyCourse : public LungCourse {
   /// The scenario's time zero (monotonic ns), when the breathing starts.
   void start_at(std::int64_t t0_ns) { t0_ns_ = t0_ns; }
   const std::vector<sim::LungShape>& at(std::int64_t now_ns) override;
+  /// `pathologies`: those in force at the last at(), one coming or going counted as present while it changes (a
+  /// tension pneumothorax shows from its onset); `pathologies_changing`: the one under way (empty: none).
   void add_stats(nlohmann::json& stats) const override;
+  /// "pneumothorax:right:30:tension (coming)", "none"...: the pathologies in force at the last at().
+  const std::string* pathologies_now() const override { return &label_now(); }
   /// The same at scenario time t_s (for tests, plots and a classroom's shared time).
   const std::vector<sim::LungShape>& at_seconds(double t_s);
   const sim::PathologyTimeline& timeline() const { return timeline_; }
@@ -47,9 +51,14 @@ class PathologyCourse : public LungCourse {
   struct Step {
     double at_s = 0, over_s = 0;
     std::vector<sim::LungShape> to;
+    std::string changing;     ///< the spec that comes or goes
+    std::string label_under_way, label_done;  ///< pathologies_now() while it changes, and after
   };
+  const std::string& label_now() const;
   sim::PathologyTimeline timeline_;
-  std::size_t done_ = 0;  ///< events done at the last at(): what the stats JSON's `pathologies` lists
+  std::size_t done_ = 0;       ///< events done at the last at(): what the stats JSON's `pathologies` lists
+  bool under_way_ = false;     ///< the event after those done was changing the lungs at the last at()
+  std::string start_label_;
   std::vector<sim::LungShape> start_;
   std::vector<Step> steps_;
   std::vector<sim::LungShape> now_;

@@ -20,6 +20,7 @@
 #include "platform/app/pathology_course.h"
 #include "platform/app/physiology_feed.h"
 #include "platform/app/plus_recording.h"
+#include "platform/app/run_limit.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
@@ -37,7 +38,6 @@ std::atomic<bool> g_stop_requested{false};
 
 namespace {
 
-constexpr double kDemoSeconds = 10.0;
 const char* const kDefaultSnapshot = "out/snapshot.png";
 const char* const kDefaultStats = "out/stats.json";
 
@@ -58,6 +58,7 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   DemoAssetOptions demo;
   demo.transfer_rows = s.render.deform == Deform::Cpu1;
   demo.procedural = procedural;
+  demo.stop = &g_stop_requested;  // Ctrl-C during a first run's bake
   Result<DrawnAsset> drawn = load_drawn_asset(s.sim.asset, demo, log_line);
   if (!drawn) return drawn.with_context("");
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
@@ -190,20 +191,6 @@ Status open_output_and_scene(Settings& s, bool procedural, const std::optional<c
   return ok();
 }
 
-void log_limit(const RuntimeOptions& o, double limit_s) {
-  char limit[96];
-  if (o.frames && limit_s > 0) {
-    std::snprintf(limit, sizeof limit, "%ld frames or %.1f s", *o.frames, limit_s);
-  } else if (o.frames) {
-    std::snprintf(limit, sizeof limit, "%ld frames", *o.frames);
-  } else if (limit_s > 0) {
-    std::snprintf(limit, sizeof limit, "%.1f s", limit_s);
-  } else {
-    std::snprintf(limit, sizeof limit, "until stopped");
-  }
-  log_line(std::string("running ") + limit + " (Ctrl-C stops)");
-}
-
 /// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
 Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
                   const sync::ClassroomStation& classroom) {
@@ -294,7 +281,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   }
   breathe_as_the_pathologies_do(s);
   log_line(summarize(s, scenario ? &*scenario : nullptr));
-  const double limit_s = o.seconds ? *o.seconds : (o.frames ? 0.0 : kDemoSeconds);
+  const double limit_s = run_limit_s(o, scenario ? &*scenario : nullptr);
   RuntimeParts parts;
   std::shared_ptr<PathologyCourse> course;
   LoadedLungs lungs;
@@ -318,7 +305,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     log_line("error: " + runtime.error());
     return 1;
   }
-  log_limit(o, limit_s);
+  log_line(describe_limit(o, scenario ? &*scenario : nullptr));
   const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
   if (!frames) log_line("error: " + frames.error());
   int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok(), s.sim.pathologies);

@@ -28,6 +28,9 @@ RuntimeConfig runtime_config(const Settings& s) {
   c.point_size_px = static_cast<float>(r.point_size_px);
   c.level_of_detail = r.lod;
   c.hud = r.hud;
+  c.pathologies.clear();
+  for (const std::string& spec : s.sim.pathologies) c.pathologies += (c.pathologies.empty() ? "" : ", ") + spec;
+  if (c.pathologies.empty()) c.pathologies = "none";
   c.ventilation_map = r.ventilation_map;
   c.ventilation_full_scale_mm = static_cast<float>(r.ventilation_full_scale_mm);
   c.color_left = to_glm(r.color_left);

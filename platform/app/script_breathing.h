@@ -22,6 +22,9 @@ class ScriptBreathing final : public BreathingClock {
   sim::BreathingSample at(std::int64_t now_ns) const override {
     return script_->driver.at(seconds_between(t0_ns_, now_ns));
   }
+  const sim::Pattern* pattern_at(std::int64_t now_ns) const override {
+    return &script_->driver.pattern_at(seconds_between(t0_ns_, now_ns));
+  }
   /// The preset the script starts with (a pathology may have chosen it), and its time constant R C.
   void add_stats(nlohmann::json& stats) const override {
     stats["breathing_preset"] = std::string(sim::to_string(script_->start.preset));

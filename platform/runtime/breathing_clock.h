@@ -17,6 +17,12 @@ class BreathingClock {
   virtual ~BreathingClock() = default;
   /// The breathing state (P, V, dV, phase) at monotonic time `now_ns`. Allocates nothing.
   virtual sim::BreathingSample at(std::int64_t now_ns) const = 0;
+  /// The modelled pattern in force at `now_ns` (rate, tidal volume, mode, a hold or an apnoea), for the status line
+  /// and the log; null when the breath comes from elsewhere (an instructor's). Allocates nothing.
+  virtual const sim::Pattern* pattern_at(std::int64_t now_ns) const {
+    (void)now_ns;
+    return nullptr;
+  }
   /// Adds the clock's keys to the stats JSON.
   virtual void add_stats(nlohmann::json& stats) const { (void)stats; }
 };

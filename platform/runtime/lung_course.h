@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -19,6 +20,9 @@ class LungCourse {
   virtual ~LungCourse() = default;
   /// Every lung's shape at `now_ns` (monotonic), in the asset's order.
   virtual const std::vector<sim::LungShape>& at(std::int64_t now_ns) = 0;
+  /// The pathologies in force at the last at(), for the status line and the log ("pneumothorax:right:30:tension
+  /// (coming)"); null: the course does not know them (the run's own, RuntimeConfig::pathologies, are shown).
+  virtual const std::string* pathologies_now() const { return nullptr; }
   /// Its keys in the stats JSON (`pathologies`: those present at the last frame).
   virtual void add_stats(nlohmann::json& stats) const { (void)stats; }
 };

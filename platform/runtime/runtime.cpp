@@ -14,6 +14,7 @@
 #include "config/base/log_line.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
+#include "sim/breathing/pv_curve.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/breath_share.h"
 #include "sim/force/gravity.h"
@@ -86,7 +87,10 @@ Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, Ru
   std::vector<std::string> names;
   for (const sim::BakedLung& lung : asset.lungs) names.push_back(lung.name);
   r->stats_.name_lungs(names);
-  if (config.hud) r->hud_.emplace();
+  if (config.hud) {
+    r->hud_.emplace();
+    r->lesson_hud_.emplace();
+  }
   r->last_patient_ = config.initial_patient;
   r->last_head_ = config.initial_head;
   r->previous_submit_ns_ = r->parts_.clock();
@@ -222,22 +226,52 @@ Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& view
   return parts_.output->finish_scene(views);
 }
 
-/// The on-screen line: frame rate, pose age, source state, dV; re-rasterised four times a second.
+/// The on-screen lines: frame rate, pose age, source state, dV; under them the breathing and the pathologies in
+/// force. Re-rasterised four times a second.
 void Runtime::draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views) {
-  if (!hud_) return;
   if (now_ns - hud_updated_ns_ >= kStatusLinePeriodNs) {
     hud_updated_ns_ = now_ns;
-    const double age_ms = measured_head_.valid() ? ms_between(measured_head_.t_arrival_ns, now_ns) : -1.0;
+    follow_lesson(now_ns);
     char text[render::HudLine::kMaxChars + 1];
-    std::snprintf(text, sizeof text, "%.0f FPS  POSE AGE %.0f MS  TRACKER %s%s  DV %.0f ML",
-                  frame_estimate_ms_ > 0 ? 1000.0 / frame_estimate_ms_ : 0.0, age_ms, parts_.poses->state(),
-                  measured_head_.stale() ? " (STALE POSE)" : "", dv_ml);
-    hud_->set_text(text);
+    const double fps = frame_estimate_ms_ > 0 ? 1000.0 / frame_estimate_ms_ : 0.0;
+    if (measured_head_.valid()) {
+      std::snprintf(text, sizeof text, "%.0f FPS  POSE AGE %.0f MS  TRACKER %s%s  DV %.0f ML", fps,
+                    ms_between(measured_head_.t_arrival_ns, now_ns), parts_.poses->state(),
+                    measured_head_.stale() ? " (STALE POSE)" : "", dv_ml);
+    } else {  // no pose has come yet: there is no age to give
+      std::snprintf(text, sizeof text, "%.0f FPS  NO POSE YET  TRACKER %s  DV %.0f ML", fps, parts_.poses->state(),
+                    dv_ml);
+    }
+    if (hud_) hud_->set_text(text);
   }
+  if (!hud_) return;
   for (std::size_t i = 0; i < views.count; ++i) {
     if (!views.shared_target) parts_.output->bind_target(i);
     hud_->draw(views.eyes[i].viewport);
+    lesson_hud_->draw_at(views.eyes[i].viewport, 4, views.eyes[i].viewport.height - 4 - 2 * render::HudLine::kCellH);
   }
+}
+
+/// What the lesson has in force now, from the breathing clock's pattern and the lungs' course (or the run's own
+/// pathologies); said in the log each time it changes (a scenario's event), so a trainer reading the log later
+/// sees when each change came. Allocates only on a change.
+void Runtime::follow_lesson(std::int64_t now_ns) {
+  char text[320];
+  const std::string* course = parts_.course ? parts_.course->pathologies_now() : nullptr;
+  const char* pathologies = course ? course->c_str() : config_.pathologies.c_str();
+  if (const sim::Pattern* p = parts_.breathing->pattern_at(now_ns)) {
+    const std::string_view preset = sim::to_string(p->params.preset);
+    std::snprintf(text, sizeof text, "breathing %.*s %.0f/min %.0f mL%s%s, pathologies %s",
+                  static_cast<int>(preset.size()), preset.data(), p->params.rate_bpm, p->params.tidal_volume_ml,
+                  p->params.mode == sim::Mode::Ventilator ? " on the ventilator" : "",
+                  p->apnoea ? " (apnoea)" : (p->held ? " (hold)" : ""), pathologies);
+  } else {
+    std::snprintf(text, sizeof text, "breathing followed, pathologies %s", pathologies);
+  }
+  if (lesson_ == text) return;
+  lesson_ = text;
+  log_line("lungar", "in force: " + lesson_);
+  if (lesson_hud_) lesson_hud_->set_text(lesson_);
 }
 
 /// The ventilation map's legend in each view's bottom-left corner, while the map is shown.

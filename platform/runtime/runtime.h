@@ -68,6 +68,9 @@ class Runtime {
   std::string summary(double wall_s) const;
 
   long frames() const { return frames_; }
+  /// The breathing and the pathologies in force at the last status update, as the status line's second line shows
+  /// them and the log says each time they change ("breathing normal 20/min 420 mL, pathologies none").
+  const std::string& lesson() const { return lesson_; }
   FrameOutput& output() { return *parts_.output; }
   PoseSource& poses() { return *parts_.poses; }
   const FrameStats& frame_stats() const { return stats_; }
@@ -90,6 +93,7 @@ class Runtime {
   render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
   Status draw_views(const render::FrameInputs& in, const FrameViews& views);
   void draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views);
+  void follow_lesson(std::int64_t now_ns);
   void draw_legend(const FrameViews& views);
   void take_keys();
 
@@ -107,6 +111,8 @@ class Runtime {
   render::PositionSource source_ = render::PositionSource::Shader;
 
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene
+  std::optional<render::HudLine> lesson_hud_;  ///< under it, the breathing and the pathologies in force
+  std::string lesson_;
   bool ventilation_ = false;            ///< the ventilation map is shown (config, then the V key)
   std::optional<render::VentilationLegend> legend_;  ///< made when the map is first shown
   BreathSwing swing_;                   ///< the last breath's dV swing, for the map

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 
 #include <Eigen/Geometry>
 #include <glm/vec3.hpp>
@@ -34,6 +35,9 @@ struct RuntimeConfig {
   float point_size_px = 5.0f;
   bool level_of_detail = true;
   bool hud = true;  ///< the status line
+  /// The run's pathologies for the status line ("none", or "pneumothorax:right:30, ..."), when no course of them
+  /// says what is in force.
+  std::string pathologies = "none";
   /// The ventilation map from the first frame (the V key toggles it), with this sweep at the ramp's top.
   bool ventilation_map = false;
   float ventilation_full_scale_mm = 20.0f;

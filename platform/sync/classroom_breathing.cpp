@@ -17,6 +17,10 @@ sim::BreathingSample ClassroomBreathing::at(std::int64_t now_ns) const {
   return drawn;
 }
 
+const sim::Pattern* ClassroomBreathing::pattern_at(std::int64_t now_ns) const {
+  return station_->trainee() == nullptr ? own_->pattern_at(now_ns) : nullptr;
+}
+
 void ClassroomBreathing::add_stats(nlohmann::json& stats) const {
   own_->add_stats(stats);
   add_sync_keys(station_->report(), stats);

@@ -18,6 +18,8 @@ class ClassroomBreathing final : public BreathingClock {
       : own_(std::move(own)), station_(std::move(station)) {}
 
   sim::BreathingSample at(std::int64_t now_ns) const override;
+  /// The station's own pattern; null on a trainee, which draws its instructor's breath.
+  const sim::Pattern* pattern_at(std::int64_t now_ns) const override;
   void add_stats(nlohmann::json& stats) const override;
 
  private:

@@ -54,8 +54,13 @@ class ProgressBar {
     percent_ = percent;
     constexpr int kWidth = 30;
     const int filled = percent * kWidth / 100;
-    std::fprintf(stderr, "\r  %-14s [%s%s] %3d%%", stage_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(kWidth - filled, ' ').c_str(), percent);
+    if (percent == 0) {  // a stage that reports no share done (a factorisation): its start, not a bar stuck at 0 %
+      const double in_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      std::fprintf(stderr, "\r  %-14s running (began %.0f s into the bake)   ", stage_.c_str(), in_s);
+    } else {
+      std::fprintf(stderr, "\r  %-14s [%s%s] %3d%%                ", stage_.c_str(), std::string(filled, '#').c_str(),
+                   std::string(kWidth - filled, ' ').c_str(), percent);
+    }
     std::fflush(stderr);
     dirty_ = true;
   }
@@ -69,6 +74,7 @@ class ProgressBar {
   bool dirty_ = false;
   std::string stage_;
   int percent_ = -1;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 /// An option that takes one of `names` (in any case), its help like the other options': TEXT:{a,b}=default.

@@ -62,6 +62,8 @@ class BreathingDriver {
   /// The state at time t (s). Allocates nothing.
   BreathingSample at(double t_s) const;
 
+  /// The pattern in force at time t: the one a transition under way goes to.
+  const Pattern& pattern_at(double t_s) const { return segments_[segment_at(t_s)].pattern; }
   /// The parameters in force after every applied event.
   const BreathingParams& params() const { return segments_.back().pattern.params; }
   /// Time of the last applied event (0 when none).

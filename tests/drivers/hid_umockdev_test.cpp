@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -271,4 +272,34 @@ TEST(HidUmockdevRefusing, ARefusedInitReportIsOneErrorNamingItsIndexAndNoOpen) {
   });
   ASSERT_NE(it, lines.end());
   EXPECT_NE(it->find("(2 bytes, report id 0x02) was refused by /dev/hidraw"), std::string::npos) << *it;
+}
+
+TEST(HidUmockdevAbsent, NoDeviceMatchingTheProfileIsSaidOnceWithDoctorsFixThenRetriedQuietly) {
+  if (!UmockdevTracker::available()) GTEST_SKIP() << "not under umockdev-wrapper";
+  UmockdevTracker device;
+  lungar::testing::UmockdevTrackerSpec other;
+  other.product_id = 0x9999;  // plugged in, but not the profile's
+  ASSERT_TRUE(device.plug(other)) << device.error();
+  std::mutex m;
+  std::vector<std::string> lines;
+  TrackerOptions o;
+  o.log = [&](const std::string& line) {
+    std::lock_guard lock(m);
+    lines.push_back(line);
+  };
+  auto made = make_tracker(hid_settings(), o);
+  ASSERT_TRUE(made) << made.error();
+  // Tries at 0, 20, 60, 140 and 300 ms (the back-off doubles from 20 ms): five misses.
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  device.unplug();
+  ASSERT_TRUE(device.plug({})) << device.error();  // the profile's tracker comes: the quiet retries find it
+  ASSERT_TRUE(eventually([&] { return (*made)->stats().opens == 1; })) << "state " << to_string((*made)->state());
+  (*made)->stop();
+  std::lock_guard lock(m);
+  std::vector<std::string> said;
+  std::copy_if(lines.begin(), lines.end(), std::back_inserter(said),
+               [](const std::string& l) { return l.find("no HID device matches") != std::string::npos; });
+  ASSERT_EQ(said.size(), 1u) << "once, not on every try";
+  EXPECT_NE(said[0].find("vendor_id 0x1234, product_id 0x5678"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("lungar doctor"), std::string::npos) << said[0];
 }

@@ -1,11 +1,15 @@
 /// @file demo_asset_test.cpp
 /// @brief The demo's asset: the shipped CT label map baked by the lungar-bake executable (a child process: the
 ///        runtime links no ITK) into the cache once, then loaded from it; keyed by the bake revision; the
-///        procedural pair on --procedural or when no bake tool is found; a failed bake is one error and no cache.
+///        procedural pair on --procedural or when no bake tool is found; a failed bake is one error and no cache; a
+///        bake stopped (Ctrl-C) leaves nothing in the cache.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "platform/app/demo_asset.h"
 
@@ -85,6 +89,36 @@ TEST_F(DemoAsset, AFailedBakeIsOneErrorAndCachesNothing) {
   EXPECT_NE(r.error().find("demo asset: "), std::string::npos) << r.error();
   EXPECT_NE(r.error().find("lungar-bake: failed"), std::string::npos) << r.error();
   EXPECT_TRUE(cached().empty());
+}
+
+TEST_F(DemoAsset, AStoppedBakeEndsAtOnceAndLeavesNothingPartial) {
+  // A bake tool that has begun its output and would go on for 30 s, deaf to SIGTERM (a long factorisation): the stop
+  // must still end it and remove what it wrote, for the CT lungs and for the procedural pair alike.
+  fs::create_directories(dir_);
+  const fs::path tool = dir_ / "slow-lungar-bake";
+  std::ofstream(tool) << "#!/bin/sh\ntrap '' TERM INT\nwhile [ $# -gt 0 ]; do [ \"$1\" = --out ] && out=$2; shift; done\n"
+                         "echo half > \"$out.partial-abc123\"\nexec sleep 30\n";
+  fs::permissions(tool, fs::perms::owner_all);
+  options_.bake_tool = tool.string();
+  for (const bool procedural : {false, true}) {
+    SCOPED_TRACE(procedural ? "procedural" : "CT");
+    options_.procedural = procedural;
+    std::atomic<bool> stop{false};
+    options_.stop = &stop;
+    std::thread ctrl_c([&] {  // once the bake has written part of its output
+      while (!stop.load()) {
+        for (const std::string& name : cached())
+          if (name.find(".partial-") != std::string::npos) stop.store(true);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+    });
+    auto r = load_drawn_asset("", options_, log_to_);
+    stop.store(true);
+    ctrl_c.join();
+    ASSERT_FALSE(r);
+    EXPECT_NE(r.error().find("stopped before the bake finished; nothing was cached"), std::string::npos) << r.error();
+    EXPECT_TRUE(cached().empty()) << cached().front();
+  }
 }
 
 TEST_F(DemoAsset, AConfiguredAssetIsDrawnAsItIsAndNamed) {

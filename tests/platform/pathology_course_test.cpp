@@ -50,10 +50,30 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
     (*course)->add_stats(j);
     return j["pathologies"].get<std::vector<std::string>>();
   };
-  EXPECT_TRUE(present(15.0).empty()) << "coming, not yet there";
-  EXPECT_EQ(present(25.0), std::vector<std::string>{"pneumothorax:right:40:tension"});
-  EXPECT_EQ(present(45.0), std::vector<std::string>{"pneumothorax:right:40:tension"}) << "going";
+  const auto changing = [&](double t) {
+    (*course)->at_seconds(t);
+    nlohmann::json j;
+    (*course)->add_stats(j);
+    return j["pathologies_changing"].get<std::vector<std::string>>();
+  };
+  const auto shown = [&](double t) {
+    (*course)->at_seconds(t);
+    return *(*course)->pathologies_now();
+  };
+  const std::vector<std::string> ptx{"pneumothorax:right:40:tension"};
+  EXPECT_TRUE(present(5.0).empty()) << "not yet";
+  EXPECT_EQ(shown(5.0), "none");
+  EXPECT_EQ(present(15.0), ptx) << "coming: it shows from its onset";
+  EXPECT_EQ(changing(15.0), ptx);
+  EXPECT_EQ(shown(15.0), "pneumothorax:right:40:tension (coming)");
+  EXPECT_EQ(present(25.0), ptx);
+  EXPECT_TRUE(changing(25.0).empty());
+  EXPECT_EQ(shown(25.0), "pneumothorax:right:40:tension");
+  EXPECT_EQ(present(45.0), ptx) << "going";
+  EXPECT_EQ(changing(45.0), ptx);
+  EXPECT_EQ(shown(45.0), "pneumothorax:right:40:tension (going)");
   EXPECT_TRUE(present(55.0).empty()) << "gone";
+  EXPECT_EQ(shown(55.0), "none");
   const std::size_t right = right_of(healthy());
   sim::BakedAsset sick = healthy();
   ASSERT_TRUE(sim::apply_pathologies(sick, {"pneumothorax:right:40:tension"}));

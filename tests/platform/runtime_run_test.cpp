@@ -195,6 +195,41 @@ TEST_F(RuntimeRun, AScenariosArdsPatientTurnedProneBreathesIntoItsBackAgain) {
   EXPECT_NE(platform::run_runtime(settings, options), 0) << "an old asset refuses ARDS before the first frame";
 }
 
+TEST_F(RuntimeRun, AScenarioWithoutSecondsRunsForItsOwnLength) {
+  // A 1.5 s scenario: the run ends with it, not at the demo's 10 s.
+  lay_patient("supine", 1.0);
+  std::ofstream(settings.breathing.scenario, std::ios::trunc) << "duration_s = 1.5\n[start]\nrate_bpm = 30.0\n";
+  options.seconds.reset();
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const double wall_s = stats()["wall_s"].get<double>();
+  EXPECT_GE(wall_s, 1.5);
+  EXPECT_LT(wall_s, 8.0) << "ran past the scenario's end";
+}
+
+TEST_F(RuntimeRun, TheLogAndTheStatsSayTheBreathingAndAPneumothoraxWhileItComes) {
+  // The scenario breathes 20/min at 420 mL; a right tension pneumothorax starts coming at 0.5 s, over 20 s.
+  const std::string path = (dir / "coming.toml").string();
+  std::filesystem::create_directories(dir);
+  std::ofstream(path) << "duration_s = 30.0\n[start]\nrate_bpm = 20.0\ntidal_volume_ml = 420.0\npose = \"supine\"\n"
+                         "[[event]]\nat_s = 0.5\nkind = \"pathology\"\nadd = \"pneumothorax:right:30:tension\"\n"
+                         "over_s = 20.0\n";
+  settings.breathing.scenario = path;
+  options.frames.reset();
+  options.seconds = 1.5;
+  ::testing::internal::CaptureStderr();
+  const int exit_code = platform::run_runtime(settings, options);
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(exit_code, 0) << log;
+  EXPECT_NE(log.find("in force: breathing normal 20/min 420 mL, pathologies none\n"), std::string::npos) << log;
+  EXPECT_NE(log.find("in force: breathing normal 20/min 420 mL, pathologies pneumothorax:right:30:tension (coming)"),
+            std::string::npos)
+      << log;
+  const auto j = stats();
+  const std::vector<std::string> ptx{"pneumothorax:right:30:tension"};
+  EXPECT_EQ(j["pathologies"], ptx) << "it shows from its onset: " << j.dump();
+  EXPECT_EQ(j["pathologies_changing"], ptx) << j.dump();
+}
+
 TEST_F(RuntimeRun, ANeedleDecompressionReExpandsTheLungDuringTheRun) {
   // A right tension pneumothorax from the start, breathing once a second; with the needle at 0.5 s the right lung
   // re-expands over 0.5 s and takes its share of the breaths after it, without it stays under a tenth.

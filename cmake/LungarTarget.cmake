@@ -37,10 +37,16 @@ if(LUNGAR_SANITIZE)
 endif()
 
 # lungar_library(NAME FOLDER DEPS...): one static library from every .cpp under FOLDER,
-# except *_main.cpp (tool entry points) and *_fuzz.cpp (fuzz targets).
+# except *_main.cpp (tool entry points), *_fuzz.cpp (fuzz targets) and the sub-folders with a CMakeLists.txt of
+# their own, which are libraries of their own (drivers/breath/).
 function(lungar_library name folder)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${folder}/*.cpp)
   list(FILTER sources EXCLUDE REGEX ".*_(main|fuzz)\\.cpp$")
+  file(GLOB_RECURSE own_lists CONFIGURE_DEPENDS ${folder}/*/CMakeLists.txt)
+  foreach(own_list ${own_lists})
+    get_filename_component(own_folder ${own_list} DIRECTORY)
+    list(FILTER sources EXCLUDE REGEX "^${own_folder}/")
+  endforeach()
   if(sources)
     add_library(${name} STATIC ${sources})
     target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/generated)

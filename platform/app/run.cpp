@@ -10,23 +10,21 @@
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
 #include "config/scenario_load.h"
+#include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
-#include "platform/app/followed_breathing.h"
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
-#include "platform/app/marker_feed.h"
 #include "platform/app/open_output.h"
 #include "platform/app/pathology_course.h"
-#include "platform/app/physiology_feed.h"
 #include "platform/app/plus_recording.h"
 #include "platform/app/run_limit.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scenario_patient.h"
-#include "platform/app/script_breathing.h"
 #include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
+#include "platform/physiology/physiology_feed.h"
 #include "platform/runtime/runtime.h"
 #include "platform/sync/classroom_station.h"
 #include "sim/asset/asset_io.h"
@@ -84,49 +82,19 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
 }
 
-/// `--breath marker:ROLE`: the live marker's feed (none for a trace file), or what was wrong with ROLE.
-Result<std::shared_ptr<MarkerFeed>> marker_of(const std::string& breath, std::int64_t t0) {
-  if (breath.rfind("marker:", 0) != 0) return std::shared_ptr<MarkerFeed>{};
-  const std::optional<drivers::Role> role = drivers::role_from_string(breath.substr(7));
-  if (!role || *role == drivers::Role::Patient) {
-    return fail(
-        "marker:ROLE: expected the tracker role carrying the chest marker, stylus or head (the patient's "
-        "pose is the frame it is read in), got '" +
-        breath.substr(7) + "'");
-  }
-  return std::make_shared<MarkerFeed>(*role, t0);
-}
-
-/// The followed breath's feed: the live marker's (made before the tracker, which calls it), a mannequin's or a
-/// ventilator's over DDS, or a recorded trace's; each says in the log what it follows.
-Result<std::shared_ptr<SurrogateFeed>> open_feed(const std::string& breath, std::shared_ptr<MarkerFeed> marker,
-                                                 const config::BreathingSettings& breathing,
-                                                 const sync::SyncSettings& network, std::int64_t t0) {
-  if (marker) {
-    log_line("breathing: following the " + breath.substr(7) + " marker live (its breathing axis from its first " +
-             std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then");
-    return std::shared_ptr<SurrogateFeed>(std::move(marker));
-  }
-  auto spec = parse_physiology_spec(breath);
-  if (!spec) return Error{spec.error()};
-  if (*spec) {
-    const std::string xml = network.cyclonedds_xml.empty() ? sync::default_cyclonedds_xml() : network.cyclonedds_xml;
-    auto dds = PhysiologyFeed::open(**spec, xml, t0);
-    if (!dds) return Error{dds.error()};
-    log_line("breathing: following " + (*dds)->describe() + ", the model until its first breaths");
-    return std::shared_ptr<SurrogateFeed>(dds.take());
-  }
-  auto trace = sim::read_breath_trace(breath);
-  if (!trace) return Error{trace.error()};
-  const bool skip = breathing.rpm_flagged == "skip" && trace->flagged > 0;
-  log_line("breathing: following " + breath + " (" + std::to_string(trace->samples.size()) + " samples" +
-           (trace->marker ? ", a marker read along its breathing axis" : "") +
-           (trace->flagged > 0 ? ", " + std::to_string(trace->flagged) + " flagged by the recorder, " +
-                                     (skip ? "skipped" : "followed")
-                               : std::string()) +
-           "), the model before and after");
-  if (skip) trace = sim::without_flagged(trace.take());
-  return std::shared_ptr<SurrogateFeed>(std::make_shared<TraceFeed>(trace.take(), breath));
+/// The breath source's options: the model, a trace's settings, the DDS sources' opener (their readers sit with the
+/// DDS layer in platform/physiology/).
+breath::BreathSourceOptions breath_options(const Settings& s, std::shared_ptr<const sim::BreathingScript> script,
+                                           std::int64_t t0) {
+  breath::BreathSourceOptions options;
+  options.script = std::move(script);
+  options.trace.skip_flagged = s.breathing.rpm_flagged == "skip";
+  options.open_dds = [configured = s.sync.cyclonedds_xml, t0](const std::string& source) {
+    const std::string xml = configured.empty() ? sync::default_cyclonedds_xml() : configured;
+    return physiology::open_physiology_breath(source, xml, t0, [](const std::string& line) { log_line(line); });
+  };
+  options.log = [](const std::string& line) { log_line(line); };
+  return options;
 }
 
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
@@ -142,9 +110,9 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   // --breath, else [breathing] source ("model": the script itself).
   const std::string breath = !o.breath_path.empty() ? o.breath_path : s.breathing.source == "model" ? "" : s.breathing.source;
   const std::string where = !o.breath_path.empty() ? "--breath: " : "breathing.source: ";
-  auto marker = marker_of(breath, t0);
-  if (!marker) return marker.with_context(where);
-  if (*marker) topts.on_sample = [feed = *marker](const drivers::PoseSample& sample) { feed->push(sample); };
+  auto chosen = breath::choose_breath_source(breath, t0);  // a live marker's feed exists before its tracker
+  if (!chosen) return chosen.with_context(where);
+  topts.on_sample = chosen->tracker_tap();
   auto made = drivers::make_tracker(s.trackers, topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
@@ -152,23 +120,19 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
-  if (breath.empty()) {
-    parts.breathing = std::make_unique<ScriptBreathing>(shared_script, t0);
-  } else {
-    if (s.sync.role == sync::SyncRole::Trainee) {
-      return fail(where +
-                  "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
-                  "--breath, and run the trainee without it (breathing.source = \"model\")");
-    }
-    auto feed = open_feed(breath, *marker, s.breathing, s.sync, t0);
-    if (!feed) return feed.with_context(where);
-    parts.breathing = std::make_unique<FollowedBreathing>(feed.take(), shared_script, t0);
+  if (chosen->followed() && s.sync.role == sync::SyncRole::Trainee) {
+    return fail(where +
+                "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
+                "--breath, and run the trainee without it (breathing.source = \"model\")");
   }
+  auto breathing = breath::make_breath_source(*chosen, breath_options(s, shared_script, t0), t0);
+  if (!breathing) return breathing.with_context(where);
+  parts.breathing = breathing.take();
   auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs,
                                      t0, parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");
   classroom = joined.take();
-  if (sync::Instructor* instructor = classroom ? classroom->instructor() : nullptr; instructor && !breath.empty()) {
+  if (sync::Instructor* instructor = classroom ? classroom->instructor() : nullptr; instructor && chosen->followed()) {
     instructor->share_followed_breath();
     log_line("classroom: sharing the followed breath: every frame's dV goes to the trainees");
   }

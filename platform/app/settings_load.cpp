@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "config/toml_section.h"
+#include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/tracker/tracker_config_toml.h"
-#include "platform/app/physiology_spec.h"
 #include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
@@ -19,9 +19,7 @@ namespace {
 /// `[breathing] source` names a trace file, relative to the config, unless it is the model, a live marker or a
 /// DDS source (even a malformed one, which --breath's check then names).
 bool names_a_file(const std::string& source) {
-  if (source == "model" || source.rfind("marker:", 0) == 0) return false;
-  auto dds = parse_physiology_spec(source);
-  return dds && !*dds;
+  return source != "model" && breath::breath_kind(source) == breath::BreathKind::Trace;
 }
 
 using config::TomlSection;

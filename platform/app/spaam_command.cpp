@@ -107,7 +107,7 @@ int run_spaam_calibration(const CalibrateDisplayOptions& o) {
   auto settings = spaam_settings(o);
   if (!settings) return calibrate_display_say(settings.error()), 2;
   drivers::TrackerOptions topts;
-  topts.log = [](const std::string& line) { log_line("tracker", line); };
+  topts.log = [](const std::string& line) { lungar::log_line("tracker", line); };
   auto tracker = drivers::make_tracker(settings->trackers, topts);
   if (!tracker) return calibrate_display_say("tracker: " + tracker.error()), 2;
   const auto& tip = settings->trackers.stylus.tip_offset_mm;

@@ -19,7 +19,7 @@
 
 #include "config/base/clock.h"
 #include "config/base/result.h"
-#include "platform/runtime/breathing_clock.h"
+#include "drivers/breath/source/breathing_clock.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/frame_output.h"
 #include "platform/runtime/frame_stats.h"
@@ -41,7 +41,7 @@ struct RuntimeParts {
   std::shared_ptr<LungScene> scene;                       ///< the baked lungs and their GPU buffers
   std::unique_ptr<FrameOutput> output;                    ///< where the views are drawn and presented
   std::unique_ptr<PoseSource> poses;                      ///< the head's and the patient's poses each frame
-  std::unique_ptr<BreathingClock> breathing;              ///< the breath's volume each frame
+  std::unique_ptr<breath::BreathingClock> breathing;      ///< the breath's volume each frame (drivers/breath/)
   std::vector<std::shared_ptr<FrameListener>> listeners;  ///< told of every frame (recorders, the classroom)
   /// The lungs' shapes changing during the run (none: as loaded).
   std::shared_ptr<LungCourse> course;

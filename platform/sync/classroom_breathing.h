@@ -7,14 +7,14 @@
 
 #include <memory>
 
-#include "platform/runtime/breathing_clock.h"
+#include "drivers/breath/source/breathing_clock.h"
 #include "platform/sync/classroom_station.h"
 
 namespace lungar::platform::sync {
 
-class ClassroomBreathing final : public BreathingClock {
+class ClassroomBreathing final : public breath::BreathingClock {
  public:
-  ClassroomBreathing(std::unique_ptr<BreathingClock> own, std::shared_ptr<ClassroomStation> station)
+  ClassroomBreathing(std::unique_ptr<breath::BreathingClock> own, std::shared_ptr<ClassroomStation> station)
       : own_(std::move(own)), station_(std::move(station)) {}
 
   sim::BreathingSample at(std::int64_t now_ns) const override;
@@ -23,7 +23,7 @@ class ClassroomBreathing final : public BreathingClock {
   void add_stats(nlohmann::json& stats) const override;
 
  private:
-  std::unique_ptr<BreathingClock> own_;
+  std::unique_ptr<breath::BreathingClock> own_;
   std::shared_ptr<ClassroomStation> station_;
 };
 

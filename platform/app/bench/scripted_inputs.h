@@ -9,7 +9,7 @@
 
 #include <Eigen/Geometry>
 
-#include "platform/runtime/breathing_clock.h"
+#include "drivers/breath/source/breathing_clock.h"
 #include "platform/runtime/pose_source.h"
 
 namespace lungar::platform::bench {
@@ -40,7 +40,7 @@ class ScriptedPoses final : public PoseSource {
   Eigen::Vector3d centre_;
 };
 
-class ScriptedBreathing final : public BreathingClock {
+class ScriptedBreathing final : public breath::BreathingClock {
  public:
   sim::BreathingSample at(std::int64_t now_ns) const override;
 };

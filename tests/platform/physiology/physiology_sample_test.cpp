@@ -6,14 +6,16 @@
 #include <cmath>
 #include <vector>
 
-#include "platform/app/physiology_spec.h"
 #include "platform/physiology/physiology_sample.h"
+#include "platform/physiology/physiology_spec.h"
 
 namespace lungar::platform {
 namespace {
 
 using physiology::Channel;
 using physiology::Drop;
+using physiology::parse_physiology_spec;
+using physiology::PhysiologySpec;
 using physiology::Quantity;
 using physiology::Sample;
 

@@ -11,7 +11,7 @@
 #include "../../sim/allocation_counter.h"
 #include "config/base/clock.h"
 #include "platform/app/scenario_adapter.h"
-#include "platform/app/script_breathing.h"
+#include "drivers/breath/model/script_breathing.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
 #include "platform/sync/classroom_breathing.h"
@@ -75,7 +75,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
       registration_isometry({10.0, -20.0, 5.0}, {0.9659258262890683, 0.0, 0.25881904510252074, 0.0});
   TraineePoses poses(std::make_unique<StillPoses>(), learner, registration);
   auto own = std::make_shared<const sim::BreathingScript>(script.take());
-  ClassroomBreathing breathing(std::make_unique<ScriptBreathing>(own, monotonic_ns()), learner);
+  ClassroomBreathing breathing(std::make_unique<breath::ScriptBreathing>(own, monotonic_ns()), learner);
   auto publisher = std::make_unique<InstructorPublisher>(teacher);
   FrameState frame;
   frame.lung_in_world = Eigen::Quaterniond(Eigen::AngleAxisd(-0.6, Eigen::Vector3d::UnitX()));

@@ -1,7 +1,8 @@
 /// @file breathing_clock.h
-/// @brief Where the frame's breathing comes from: this station's own breathing script run from its start, or a
-/// classroom's shared time base. The frame asks for the state at a time and never knows which clock answers.
-/// @ingroup platform
+/// @brief Where the frame's breathing comes from: this station's own breathing script run from its start, a
+/// followed surrogate (a trace, a live marker, a mannequin or a ventilator), or a classroom's shared time base. The
+/// frame asks for the state at a time and never knows which clock answers.
+/// @ingroup breath
 #pragma once
 
 #include <cstdint>
@@ -10,7 +11,7 @@
 
 #include "sim/breathing/driver.h"
 
-namespace lungar::platform {
+namespace lungar::breath {
 
 class BreathingClock {
  public:
@@ -27,4 +28,4 @@ class BreathingClock {
   virtual void add_stats(nlohmann::json& stats) const { (void)stats; }
 };
 
-}  // namespace lungar::platform
+}  // namespace lungar::breath

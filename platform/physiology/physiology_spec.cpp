@@ -1,12 +1,11 @@
 /// @file physiology_spec.cpp
 /// @brief Reading a DDS breath source's spec (physiology_spec.h).
-#include "platform/app/physiology_spec.h"
+#include "platform/physiology/physiology_spec.h"
 
 #include <cstdlib>
 
-namespace lungar::platform {
+namespace lungar::platform::physiology {
 
-using physiology::Quantity;
 
 namespace {
 
@@ -25,7 +24,7 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   else if (source == "openice") spec.source = PhysiologySpec::Source::OpenIce;
   else return std::optional<PhysiologySpec>{};
   if (colon != std::string::npos) {
-    const std::optional<Quantity> q = physiology::kQuantityNames.parse(head.substr(colon + 1));
+    const std::optional<Quantity> q = kQuantityNames.parse(head.substr(colon + 1));
     if (spec.source == PhysiologySpec::Source::Amm || !q) return fail("'" + breath + "': " + kSpecHelp);
     spec.quantity = *q;
   }
@@ -39,4 +38,4 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   return std::optional<PhysiologySpec>{spec};
 }
 
-}  // namespace lungar::platform
+}  // namespace lungar::platform::physiology

@@ -1,12 +1,13 @@
 /// @file marker_feed.cpp
 /// @brief A live marker's positions, in the patient's frame, along its own breathing axis (marker_feed.h).
-#include "platform/app/marker_feed.h"
+#include "drivers/breath/marker/marker_feed.h"
 
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "sim/breathing/breath_trace.h"
 
-namespace lungar::platform {
+namespace lungar::breath {
 
 namespace {
 /// The window's samples are kept in storage reserved up front: a marker at up to this rate fills it.
@@ -60,4 +61,22 @@ void MarkerFeed::add_stats(nlohmann::json& stats) const {
   stats["breath_invalid_samples"] = ring_.dropped();
 }
 
-}  // namespace lungar::platform
+Result<std::shared_ptr<MarkerFeed>> open_marker_feed(const std::string& source, std::int64_t t0_ns) {
+  const std::string role_text = source.substr(kMarkerPrefix.size());
+  const std::optional<drivers::Role> role = drivers::role_from_string(role_text);
+  if (!role || *role == drivers::Role::Patient) {
+    return fail(
+        "marker:ROLE: expected the tracker role carrying the chest marker, stylus or head (the patient's "
+        "pose is the frame it is read in), got '" +
+        role_text + "'");
+  }
+  return std::make_shared<MarkerFeed>(*role, t0_ns);
+}
+
+std::string marker_following(const std::string& source) {
+  return "breathing: following the " + source.substr(kMarkerPrefix.size()) +
+         " marker live (its breathing axis from its first " +
+         std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then";
+}
+
+}  // namespace lungar::breath

@@ -11,16 +11,16 @@
 #include "config/base/result.h"
 #include "platform/physiology/physiology_sample.h"
 
-namespace lungar::platform {
+namespace lungar::platform::physiology {
 
 struct PhysiologySpec {
   enum class Source { Amm, OpenIce };
   Source source = Source::Amm;
-  physiology::Quantity quantity = physiology::Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
+  Quantity quantity = Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
   std::uint32_t domain = 0;                                          ///< the DDS domain id, [0, 232]
 };
 
 /// The spec `breath` names, nullopt when it names no DDS source (a file, a marker), or what is wrong with it.
 Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& breath);
 
-}  // namespace lungar::platform
+}  // namespace lungar::platform::physiology

@@ -1,6 +1,6 @@
 /// @file followed_breathing.cpp
 /// @brief The follower behind the BreathingClock interface (followed_breathing.h).
-#include "platform/app/followed_breathing.h"
+#include "drivers/breath/source/followed_breathing.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,23 +11,7 @@
 #include "config/base/log_line.h"
 #include "sim/breathing/pv_curve.h"
 
-namespace lungar::platform {
-
-void TraceFeed::feed(double t_s, Followers& followers) {
-  for (; next_ < trace_.samples.size() && trace_.samples[next_].t_s <= t_s; ++next_)
-    followers.breath.add(trace_.samples[next_].t_s, trace_.samples[next_].value);
-}
-
-void TraceFeed::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = "trace";
-  stats["breath_file"] = path_;
-  stats["breath_format"] = trace_.format;
-  // Samples the recorder flagged (RPM's validflag) that this trace still holds: followed.
-  long flagged = 0;
-  for (const sim::TraceSample& s : trace_.samples) flagged += s.flagged ? 1 : 0;
-  stats["breath_flagged_samples"] = flagged;
-  stats["breath_invalid_samples"] = 0;
-}
+namespace lungar::breath {
 
 FollowedBreathing::FollowedBreathing(std::shared_ptr<SurrogateFeed> feed,
                                      std::shared_ptr<const sim::BreathingScript> model, std::int64_t t0_ns)
@@ -87,4 +71,4 @@ void FollowedBreathing::add_stats(nlohmann::json& stats) const {
   stats["breath_max_ml"] = followers_.breath.max_ml();
 }
 
-}  // namespace lungar::platform
+}  // namespace lungar::breath

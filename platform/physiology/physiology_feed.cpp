@@ -1,6 +1,6 @@
 /// @file physiology_feed.cpp
 /// @brief A mannequin's or a ventilator's breath over DDS to the follower (physiology_feed.h).
-#include "platform/app/physiology_feed.h"
+#include "platform/physiology/physiology_feed.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,8 @@
 
 #include "config/base/clock.h"
 
-namespace lungar::platform {
+namespace lungar::platform::physiology {
 
-using physiology::Channel;
-using physiology::Quantity;
 
 PhysiologyFeed::PhysiologyFeed(const PhysiologySpec& spec, std::int64_t t0_ns)
     : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::Amm ? "amm" : "openice") {}
@@ -21,11 +19,11 @@ Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpe
                                                              const std::string& cyclonedds_xml, std::int64_t t0_ns) {
   std::shared_ptr<PhysiologyFeed> f(new PhysiologyFeed(spec, t0_ns));
   if (spec.source == PhysiologySpec::Source::Amm) {
-    auto r = physiology::AmmReader::open(spec.domain, f->inbox_);
+    auto r = AmmReader::open(spec.domain, f->inbox_);
     if (!r) return Error{r.error()};
     f->amm_ = r.take();
   } else {
-    auto r = physiology::OpenIceReader::open(spec.domain, cyclonedds_xml, spec.quantity, f->inbox_);
+    auto r = OpenIceReader::open(spec.domain, cyclonedds_xml, spec.quantity, f->inbox_);
     if (!r) return Error{r.error()};
     f->openice_ = r.take();
   }
@@ -35,13 +33,13 @@ Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpe
 std::string PhysiologyFeed::describe() const {
   const std::string d = " on DDS domain " + std::to_string(spec_.domain);
   if (spec_.source == PhysiologySpec::Source::Amm)
-    return "the mannequin's lung volumes (AMM, topic '" + std::string(physiology::kAmmTopic) + "')" + d;
-  return std::string("the ventilator's ") + physiology::openice_metric(spec_.quantity) + " (OpenICE)" + d;
+    return "the mannequin's lung volumes (AMM, topic '" + std::string(kAmmTopic) + "')" + d;
+  return std::string("the ventilator's ") + openice_metric(spec_.quantity) + " (OpenICE)" + d;
 }
 
-void PhysiologyFeed::feed(double t_s, Followers& followers) {
+void PhysiologyFeed::feed(double t_s, breath::Followers& followers) {
   (void)t_s;  // every sample in the inbox came before now
-  inbox_.drain([&](const physiology::PhysiologyInbox::Item& item) {
+  inbox_.drain([&](const PhysiologyInbox::Item& item) {
     const double arrival = seconds_between(t0_ns_, item.arrival_ns);
     const double offset = arrival - item.sample.t_s;
     if (!offset_s_ || offset < *offset_s_) offset_s_ = offset;
@@ -49,7 +47,7 @@ void PhysiologyFeed::feed(double t_s, Followers& followers) {
   });
 }
 
-void PhysiologyFeed::give(const physiology::Sample& s, double t_s, Followers& followers) {
+void PhysiologyFeed::give(const Sample& s, double t_s, breath::Followers& followers) {
   const auto c = static_cast<std::size_t>(s.channel);
   t_s = std::max(t_s, last_t_[c]);  // a smaller offset found later must not move a channel back in time
   last_t_[c] = t_s;
@@ -74,13 +72,13 @@ void PhysiologyFeed::give(const physiology::Sample& s, double t_s, Followers& fo
 void PhysiologyFeed::add_stats(nlohmann::json& stats) const {
   stats["breath_source"] = spec_.source == PhysiologySpec::Source::Amm
                                ? std::string("amm")
-                               : std::string("openice:") + physiology::kQuantityNames.name(spec_.quantity);
+                               : std::string("openice:") + kQuantityNames.name(spec_.quantity);
   stats["breath_dds_domain"] = spec_.domain;
   stats["breath_dds_publishers"] = amm_ ? amm_->matched() : openice_->matched();
   stats["breath_dds_samples"] = fed_;
   nlohmann::json dropped = nlohmann::json::object();
   std::uint64_t invalid = inbox_.overflowed();
-  for (const auto& [why, name] : physiology::kDropNames.entries) {
+  for (const auto& [why, name] : kDropNames.entries) {
     dropped[name] = inbox_.dropped(why);
     invalid += inbox_.dropped(why);
   }
@@ -88,4 +86,16 @@ void PhysiologyFeed::add_stats(nlohmann::json& stats) const {
   stats["breath_invalid_samples"] = invalid;
 }
 
-}  // namespace lungar::platform
+Result<std::shared_ptr<breath::SurrogateFeed>> open_physiology_breath(
+    const std::string& source, const std::string& cyclonedds_xml, std::int64_t t0_ns,
+    const std::function<void(const std::string&)>& log) {
+  auto spec = parse_physiology_spec(source);
+  if (!spec) return Error{spec.error()};
+  if (!*spec) return fail("'" + source + "': not a breath source over DDS");  // breath_kind() said it was
+  auto dds = PhysiologyFeed::open(**spec, cyclonedds_xml, t0_ns);
+  if (!dds) return Error{dds.error()};
+  log("breathing: following " + (*dds)->describe() + ", the model until its first breaths");
+  return std::shared_ptr<breath::SurrogateFeed>(dds.take());
+}
+
+}  // namespace lungar::platform::physiology

@@ -1,7 +1,7 @@
 /// @file script_breathing.h
-/// @brief This station's own breathing: the breathing script (steady breathing, or a scenario's events) run from
-/// the run's start on the monotonic clock.
-/// @ingroup platform
+/// @brief The model (`[breathing] source = "model"`, no `--breath`): this station's own breathing script (steady
+/// breathing, or a scenario's events) run from the run's start on the monotonic clock.
+/// @ingroup breath
 #pragma once
 
 #include <cstdint>
@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
-#include "platform/runtime/breathing_clock.h"
+#include "drivers/breath/source/breathing_clock.h"
 #include "sim/breathing/script.h"
 
-namespace lungar::platform {
+namespace lungar::breath {
 
 class ScriptBreathing final : public BreathingClock {
  public:
@@ -35,4 +35,4 @@ class ScriptBreathing final : public BreathingClock {
   std::int64_t t0_ns_;
 };
 
-}  // namespace lungar::platform
+}  // namespace lungar::breath

@@ -4,19 +4,26 @@
 ///        taken in the patient's frame (so that turning the patient is not breathing), and reduced to their
 ///        excursion along the marker's main breathing axis, which it finds by itself over its first
 ///        kMarkerAxisWindowS (breathing_axis(): the principal axis, inhalation the shorter phase).
-/// @ingroup platform
+/// @ingroup breath
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "config/base/result.h"
 #include "config/base/spsc_ring.h"
+#include "drivers/breath/source/surrogate_feed.h"
 #include "drivers/pose/pose_sample.h"
-#include "platform/app/followed_breathing.h"
 
-namespace lungar::platform {
+namespace lungar::breath {
+
+/// How `--breath` and `[breathing] source` name a live marker: this, then the tracker role carrying it.
+inline constexpr std::string_view kMarkerPrefix = "marker:";
 
 /// The marker's breathing axis is found over this much of its first samples (two or three quiet breaths).
 inline constexpr double kMarkerAxisWindowS = 10.0;
@@ -55,4 +62,11 @@ class MarkerFeed final : public SurrogateFeed {
   std::uint64_t samples_ = 0;
 };
 
-}  // namespace lungar::platform
+/// `marker:ROLE`'s feed, made before the tracker that calls its push(); or what is wrong with ROLE (the patient's
+/// pose is the frame the marker is read in, so it cannot carry it).
+Result<std::shared_ptr<MarkerFeed>> open_marker_feed(const std::string& source, std::int64_t t0_ns);
+
+/// What the log says a run follows once the tracker runs: the marker, its axis window, the model until then.
+std::string marker_following(const std::string& source);
+
+}  // namespace lungar::breath

@@ -1,0 +1,68 @@
+/// @file breath_factory.cpp
+/// @brief Choosing a breath source by its name and building its clock (breath_factory.h).
+#include "drivers/breath/breath_factory/breath_factory.h"
+
+#include "drivers/breath/model/script_breathing.h"
+#include "drivers/breath/source/followed_breathing.h"
+
+namespace lungar::breath {
+
+BreathKind breath_kind(const std::string& source) {
+  if (source.empty()) return BreathKind::Model;
+  if (source.rfind(kMarkerPrefix, 0) == 0) return BreathKind::Marker;
+  // A DDS spec's name comes before its metric (':') and its domain ('@').
+  const std::string name = source.substr(0, source.find_first_of(":@"));
+  if (name == "amm" || name == "openice") return BreathKind::Dds;
+  return BreathKind::Trace;
+}
+
+std::function<void(const drivers::PoseSample&)> ChosenBreath::tracker_tap() const {
+  if (!marker) return {};
+  return [feed = marker](const drivers::PoseSample& sample) { feed->push(sample); };
+}
+
+Result<ChosenBreath> choose_breath_source(const std::string& source, std::int64_t t0_ns) {
+  ChosenBreath chosen{source, breath_kind(source), nullptr};
+  if (chosen.kind == BreathKind::Marker) {
+    auto feed = open_marker_feed(source, t0_ns);
+    if (!feed) return Error{feed.error()};
+    chosen.marker = feed.take();
+  }
+  return chosen;
+}
+
+namespace {
+
+/// The surrogate a followed source gives its samples through.
+Result<std::shared_ptr<SurrogateFeed>> open_feed(const ChosenBreath& chosen, const BreathSourceOptions& options) {
+  switch (chosen.kind) {
+    case BreathKind::Marker:
+      options.log(marker_following(chosen.source));
+      return std::shared_ptr<SurrogateFeed>(chosen.marker);
+    case BreathKind::Dds:
+      if (!options.open_dds) return fail("'" + chosen.source + "': no reader for breath sources over DDS here");
+      return options.open_dds(chosen.source);
+    case BreathKind::Trace: {
+      auto trace = open_trace_feed(chosen.source, options.trace, options.log);
+      if (!trace) return Error{trace.error()};
+      return std::shared_ptr<SurrogateFeed>(trace.take());
+    }
+    case BreathKind::Model:
+      break;
+  }
+  return fail("'" + chosen.source + "': not a followed breath source");
+}
+
+}  // namespace
+
+Result<std::unique_ptr<BreathingClock>> make_breath_source(const ChosenBreath& chosen,
+                                                           const BreathSourceOptions& options, std::int64_t t0_ns) {
+  if (!chosen.followed()) {
+    return std::unique_ptr<BreathingClock>(std::make_unique<ScriptBreathing>(options.script, t0_ns));
+  }
+  auto feed = open_feed(chosen, options);
+  if (!feed) return Error{feed.error()};
+  return std::unique_ptr<BreathingClock>(std::make_unique<FollowedBreathing>(feed.take(), options.script, t0_ns));
+}
+
+}  // namespace lungar::breath

@@ -11,6 +11,7 @@
 #include "config/base/clock.h"
 #include "config/scenario_load.h"
 #include "drivers/breath/breath_factory/breath_factory.h"
+#include "drivers/breath/trace/clearest_trace.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
 #include "platform/app/join_classroom.h"
@@ -97,6 +98,16 @@ breath::BreathSourceOptions breath_options(const Settings& s, std::shared_ptr<co
   return options;
 }
 
+/// What --breath names: the one source given, or of several recordings the clearest (said in the log); empty when
+/// it was not given.
+Result<std::string> given_breath(const RuntimeOptions& o) {
+  if (o.breath_paths.size() <= 1) return o.breath_paths.empty() ? std::string() : o.breath_paths.front();
+  std::string said;
+  auto best = breath::clearest_trace(o.breath_paths, said);
+  if (best) log_line("breathing: " + said);
+  return best;
+}
+
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
 Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, const LoadedLungs& lungs,
@@ -107,9 +118,11 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   drivers::TrackerOptions topts;
   topts.record_path = tracker_record_path(o.record_path);
   topts.log = [](const std::string& line) { log_line(line); };
-  // --breath, else [breathing] source ("model": the script itself).
-  const std::string breath = !o.breath_path.empty() ? o.breath_path : s.breathing.source == "model" ? "" : s.breathing.source;
-  const std::string where = !o.breath_path.empty() ? "--breath: " : "breathing.source: ";
+  // --breath (the clearest of several recordings), else [breathing] source ("model": the script itself).
+  auto given = given_breath(o);
+  if (!given) return given.with_context("--breath: ");
+  const std::string breath = !given->empty() ? *given : s.breathing.source == "model" ? "" : s.breathing.source;
+  const std::string where = !given->empty() ? "--breath: " : "breathing.source: ";
   auto chosen = breath::choose_breath_source(breath, t0);  // a live marker's feed exists before its tracker
   if (!chosen) return chosen.with_context(where);
   topts.on_sample = chosen->tracker_tap();

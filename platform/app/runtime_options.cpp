@@ -111,9 +111,11 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
                  "consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE left or right, PERCENT 1 "
                  "to 90, REGION upper, middle or lower, SEVERITY 0 to 1; default: sim.pathology)")
       ->allow_extra_args(false);
-  app.add_option("--breath", o.breath_path,
-                 "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, or a "
-                 "Varian RPM .vxp), the model taking over before calibration and when the trace ends; marker:ROLE: "
+  app.add_option("--breath", o.breath_paths,
+                 "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, a Varian "
+                 "RPM .vxp or an ExtMarker export), the model taking over before calibration and when the trace "
+                 "ends; given several times (the markers of one session), the one whose breathing is clearest; "
+                 "marker:ROLE: "
                  "with a chest marker tracked live as that role (stylus or head); amm[@DOMAIN]: with a mannequin's "
                  "lung volumes over DDS (AMM); openice[:volume|flow|pressure][@DOMAIN]: with a ventilator's "
                  "waveform over DDS (OpenICE)");

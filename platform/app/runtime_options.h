@@ -20,7 +20,9 @@ struct RuntimeOptions {
   bool procedural = false;    ///< draw the procedural pair, not the demo's CT lungs
   std::string scenario_path;  ///< breathing/orientation scenario TOML
   std::vector<std::string> pathologies;  ///< --pathology, repeatable: replaces sim.pathology when given
-  std::string breath_path;  ///< --breath: a recorded respiratory surrogate to follow instead of the model
+  /// --breath: a source to follow instead of the model (a recording, marker:ROLE, amm, openice); given several
+  /// times, recordings of one session, of which the clearest breathing is followed
+  std::vector<std::string> breath_paths;
   std::string tracker;        ///< "mock" | "hid" | "igtl[:HOST[:PORT]]" | "replay:FILE"; empty: from the config
   bool headless = false;
   bool fullscreen = false;        ///< display.output = "fullscreen" (the user unit's way to cover the HMD output)

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -276,6 +278,33 @@ TEST_F(RuntimeRun, TheVentilationMapIsTheShadersAndSaysSoInTheStats) {
 
 // --breath: the lungs breathe with a recorded trace (30 breaths a minute here, where the model breathes 12), then
 // hand over towards the model when the trace ends; a bad trace stops the run before it starts.
+TEST_F(RuntimeRun, OfSeveralRecordingsGivenTheClearestBreathingIsFollowed) {
+  // Two markers of one session: the chest breathing 15 a minute, and one that mostly sways twice a minute (a shift
+  // on the table), its breath a tenth of the sway. Given in either order, lungar follows the chest.
+  std::filesystem::create_directories(dir);
+  const std::string chest = (dir / "chest.csv").string(), sway = (dir / "sway.csv").string();
+  {
+    std::ofstream c(chest), w(sway);
+    c << "t_s,value\n";
+    w << "t_s,value\n";
+    for (int i = 0; i < 60 * 20; ++i) {
+      const double t = i / 20.0, breath = std::pow(std::sin(M_PI * t / 4.0), 2);
+      c << t << "," << 4.0 * breath << "\n";
+      w << t << "," << 4.0 * std::sin(2 * M_PI * t / 30.0) + 0.4 * breath << "\n";
+    }
+  }
+  options.frames.reset();
+  options.seconds = 1.0;
+  for (const auto& given : {std::vector<std::string>{sway, chest}, std::vector<std::string>{chest, sway}}) {
+    options.breath_paths = given;
+    ASSERT_EQ(platform::run_runtime(settings, options), 0);
+    EXPECT_EQ(stats()["breath_file"], chest);
+  }
+  // Several sources are compared only as recordings: a live one among them is one error, and no run.
+  options.breath_paths = {chest, "marker:stylus"};
+  EXPECT_NE(platform::run_runtime(settings, options), 0);
+}
+
 TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   std::filesystem::create_directories(dir);
   const std::string trace = (dir / "trace.csv").string();
@@ -284,7 +313,7 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
     o << "t_s,value\n";
     for (int i = 0; i < 7 * 40; ++i) o << i / 40.0 << "," << 6.0 * std::pow(std::sin(M_PI * i / 40.0 / 2.0), 2) << "\n";
   }
-  options.breath_path = trace;
+  options.breath_paths = {trace};
   options.frames.reset();
   options.seconds = 8.0;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
@@ -299,13 +328,13 @@ TEST_F(RuntimeRun, ARecordedTraceDrivesTheBreathThenTheModelTakesOver) {
   EXPECT_GT(j["breath_max_ml"].get<double>(), 1000.0) << "the normal preset's inspiratory capacity, at most 3 V_T";
   EXPECT_LE(j["breath_max_ml"].get<double>(), 1500.0);
   // The same trace named in the settings ([breathing] source) rather than on the command line.
-  options.breath_path.clear();
+  options.breath_paths.clear();
   settings.breathing.source = trace;
   options.seconds = 1.0;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   EXPECT_EQ(stats()["breath_source"], "trace");
   settings.breathing.source = "model";
-  options.breath_path = trace;
+  options.breath_paths = {trace};
   std::ofstream(trace) << "t_s,value\n0,1\n0,2\n";
   options.seconds = 1.0;
   EXPECT_NE(platform::run_runtime(settings, options), 0);
@@ -325,7 +354,7 @@ TEST_F(RuntimeRun, AnRpmTracesFlaggedBreathsAreFollowedUnlessTheSiteSkipsThem) {
       o << 2.0 + 0.6 * std::pow(std::sin(M_PI * i / 25.0 / 2.0), 2) << ",0," << 40 * i << ","
         << (i >= 6 * 25 && i < 9 * 25 ? -1 : 0) << ",0,,0\n";
   }
-  options.breath_path = trace;
+  options.breath_paths = {trace};
   options.frames.reset();
   options.seconds = 11.5;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
@@ -366,7 +395,7 @@ TEST_F(RuntimeRun, ALiveChestMarkerDrivesTheBreathAlongTheAxisItFinds) {
   settings.trackers.source = drivers::TrackerSource::Replay;
   settings.trackers.replay_file = path;
   settings.trackers.replay_realtime = true;  // the breath is followed on the run's clock
-  options.breath_path = "marker:stylus";
+  options.breath_paths = {"marker:stylus"};
   options.frames.reset();
   options.seconds = 17.0;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
@@ -377,7 +406,7 @@ TEST_F(RuntimeRun, ALiveChestMarkerDrivesTheBreathAlongTheAxisItFinds) {
   EXPECT_GT(found.dot(axis), 0.99) << "the axis in the patient's frame, inhalation its positive direction";
   EXPECT_EQ(j["breath_state"], "following");
   EXPECT_NEAR(j["breath_rate_per_min"].get<double>(), 30.0, 2.0);
-  options.breath_path = "marker:patient";
+  options.breath_paths = {"marker:patient"};
   options.seconds = 1.0;
   EXPECT_NE(platform::run_runtime(settings, options), 0) << "the patient's pose is the frame, not a marker";
 }

@@ -19,12 +19,12 @@
 
 #include "config/base/clock.h"
 #include "config/base/command_line.h"
+#include "drivers/breath/trace/clearest_trace.h"
 #include "lungar/version.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/settings_load.h"
 #include "platform/physiology/physiology_feed.h"
 #include "platform/sync/classroom_station.h"
-#include "sim/breathing/breath_clarity.h"
 #include "sim/breathing/breath_follower.h"
 #include "sim/breathing/breath_trace.h"
 #include "sim/breathing/exhale_path.h"
@@ -170,30 +170,6 @@ int print_followed_live(const sim::BreathingScript& script, const platform::phys
   return 0;
 }
 
-/// Several recordings given (--breath A --breath B ...): the one whose breathing is clearest (breath_clarity.h),
-/// each one's clarity said on stderr; or the one error that stops them being compared.
-Result<std::string> clearest_of(const std::vector<std::string>& paths) {
-  std::vector<sim::BreathTrace> traces;
-  for (const std::string& path : paths) {
-    auto trace = sim::read_breath_trace(path);
-    if (!trace) return Error{trace.error()};
-    traces.push_back(trace.take());
-  }
-  std::vector<double> clarity;
-  const std::size_t best = sim::clearest_breathing(traces, &clarity);
-  std::string others;
-  for (std::size_t i = 0; i < paths.size(); ++i) {
-    char share[32];
-    std::snprintf(share, sizeof share, "%.2f", clarity[i]);
-    if (i != best) others += (others.empty() ? "" : ", ") + paths[i] + " " + share;
-  }
-  std::fprintf(stderr,
-               "lungar-breathe: following %s, the clearest breathing of %zu (its share of power at 6-42/min over "
-               "the first 60 s: %.2f; %s)\n",
-               paths[best].c_str(), paths.size(), clarity[best], others.c_str());
-  return paths[best];
-}
-
 /// --breath: a recorded trace (the clearest of several), or a live source over DDS (amm, openice).
 int follow(const sim::BreathingScript& script, const std::vector<std::string>& breaths,
            const platform::Settings& settings, std::optional<double> seconds, double dt) {
@@ -205,8 +181,10 @@ int follow(const sim::BreathingScript& script, const std::vector<std::string>& b
       if (!live) return fail_with("--breath: " + live.error());
       if (*live) return fail_with("--breath: several sources are compared only as recordings, got '" + b + "'");
     }
-    auto best = clearest_of(breaths);
-    if (!best) return fail_with(best.error());
+    std::string said;
+    auto best = breath::clearest_trace(breaths, said);
+    if (!best) return fail_with("--breath: " + best.error());
+    std::fprintf(stderr, "lungar-breathe: %s\n", said.c_str());
     return print_followed(script, *best, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
   }
   auto live = platform::physiology::parse_physiology_spec(breath);

@@ -29,10 +29,9 @@ std::string profile_of(const HidConfig& hid) {
 }  // namespace
 
 HidOpenFailure hid_no_match(const HidConfig& hid) {
-  return {"no-match",
-          "hid: no HID device matches the profile (trackers.hid: " + profile_of(hid) +
-              "); plug the tracker in, or fix the ids: " + kDoctor +
-              " says which; retrying quietly until it appears"};
+  return {"no-match", "hid: no HID device matches the profile (trackers.hid: " + profile_of(hid) +
+                          "); plug the tracker in, or fix the ids: " + kDoctor +
+                          " says which; retrying quietly until it appears"};
 }
 
 HidOpenFailure hid_cannot_open(const HidFound& found, int err) {
@@ -41,8 +40,7 @@ HidOpenFailure hid_cannot_open(const HidFound& found, int err) {
   const std::string what = "hid: cannot open " + found.path + " (" + ids + "): " + std::strerror(err);
   if (err == EACCES || err == EPERM) {
     return {"permission " + found.path,
-            what + ": this user may not read it; " + kDoctor +
-                " gives the udev rule that grants it; retrying quietly"};
+            what + ": this user may not read it; " + kDoctor + " gives the udev rule that grants it; retrying quietly"};
   }
   return {"open " + found.path + " " + std::to_string(err),
           what + "; replug the tracker, and " + kDoctor + " checks it; retrying quietly"};

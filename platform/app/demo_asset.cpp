@@ -281,9 +281,9 @@ Result<sim::BakedAsset> load_or_bake_demo_asset(const DemoAssetOptions& o,
   fs::create_directories(fs::path(path).parent_path(), ec);
   // In a child, as the CT lungs: a Ctrl-C stops it within a second, not at the end of a long factorisation.
   if (const fs::path tool = find_bake_tool(o); !tool.empty()) {
-    std::vector<std::string> argv = {tool.string(),        "--procedural", "--nodes", std::to_string(o.nodes),
-                                     "--seed",             std::to_string(o.seed),  "--bands",
-                                     std::to_string(o.bands), "--no-evaluate"};
+    std::vector<std::string> argv = {tool.string(),  "--procedural",         "--nodes", std::to_string(o.nodes),
+                                     "--seed",       std::to_string(o.seed), "--bands", std::to_string(o.bands),
+                                     "--no-evaluate"};
     if (!o.transfer_rows) argv.push_back("--no-transfer-rows");
     if (Status s = run_bake(argv, path, o.stop); !s) return fail("procedural demo asset: " + s.error());
     auto loaded = sim::load_asset(path);

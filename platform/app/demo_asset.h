@@ -1,11 +1,12 @@
 /// @file demo_asset.h
 /// @brief The asset the runtime draws: the configured `.lungbake`; else the demo's real lungs, baked once from the
 ///        shipped CT label map by the `lungar-bake` executable and cached; or, with --procedural (or when no label
-///        map or bake tool can be found), the procedural pair baked in-process and cached.
+///        map can be found), the procedural pair, baked and cached the same way (in-process when no bake tool is
+///        found).
 ///
-/// The runtime links neither ITK nor the mesh library (docs/design.md, Decisions): label maps are read by `lungar-bake`, run here
-/// as a child process. It is looked for beside the running `lungar` (an installed layout: one bin/ folder), then
-/// at the build tree's path known when lungar was compiled. The label map is looked for in
+/// The runtime links neither ITK nor the mesh library (docs/design.md, Decisions): label maps are read by
+/// `lungar-bake`, run here as a child process. It is looked for beside the running `lungar` (an installed layout: one
+/// bin/ folder), then at the build tree's path known when lungar was compiled. The label map is looked for in
 /// $LUNGAR_DATA_DIR/lungs/, then <exe dir>/../share/lungar/lungs/ (the Debian package), then the source tree's
 /// sim/data/lungs/. The cache is $LUNGAR_CACHE_DIR, else $XDG_CACHE_HOME/lungar, else ~/.cache/lungar; its file
 /// names carry the asset format version and sim's bake revision, so a changed bake bakes again.

@@ -79,7 +79,8 @@ Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(const sim::Bake
     if (!to) return to.with_context("");
     const std::vector<std::string> before = sim::present_after(timeline, k);
     course->steps_.push_back({e.at_s, e.over_s, to.take(), e.add.empty() ? e.remove : e.add,
-                              label_of(before, e.add, e.remove), label_of(sim::present_after(timeline, k + 1), "", "")});
+                              label_of(before, e.add, e.remove),
+                              label_of(sim::present_after(timeline, k + 1), "", "")});
   }
   course->now_ = course->start_;
   course->start_label_ = label_of(timeline.start, "", "");

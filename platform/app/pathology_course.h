@@ -51,13 +51,13 @@ class PathologyCourse : public LungCourse {
   struct Step {
     double at_s = 0, over_s = 0;
     std::vector<sim::LungShape> to;
-    std::string changing;     ///< the spec that comes or goes
+    std::string changing;                     ///< the spec that comes or goes
     std::string label_under_way, label_done;  ///< pathologies_now() while it changes, and after
   };
   const std::string& label_now() const;
   sim::PathologyTimeline timeline_;
-  std::size_t done_ = 0;       ///< events done at the last at(): what the stats JSON's `pathologies` lists
-  bool under_way_ = false;     ///< the event after those done was changing the lungs at the last at()
+  std::size_t done_ = 0;    ///< events done at the last at(): what the stats JSON's `pathologies` lists
+  bool under_way_ = false;  ///< the event after those done was changing the lungs at the last at()
   std::string start_label_;
   std::vector<sim::LungShape> start_;
   std::vector<Step> steps_;

@@ -136,7 +136,8 @@ void add_output_options(CLI::App& app, RuntimeOptions& o) {
       ->check(CLI::IsMember(names_of(kOutputNames)));
   app.add_flag("--fullscreen", o.fullscreen, "full screen on display.x11_output (the HMD), as the user unit runs it");
   app.add_option("--frames", o.frames, "stop after N frames");
-  app.add_option("--seconds", o.seconds, "stop after S seconds (default: the scenario's length, else 10 unless --frames; 0: until stopped)");
+  app.add_option("--seconds", o.seconds,
+                 "stop after S seconds (default: the scenario's length, else 10 unless --frames; 0: until stopped)");
   app.add_option("--view", o.view,
                  "mono | stereo | ventilation, or a view and the map: stereo,ventilation (default: from the config; "
                  "ventilation colours each point by its ventilation over the last breath)")

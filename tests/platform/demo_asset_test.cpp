@@ -96,8 +96,9 @@ TEST_F(DemoAsset, AStoppedBakeEndsAtOnceAndLeavesNothingPartial) {
   // must still end it and remove what it wrote, for the CT lungs and for the procedural pair alike.
   fs::create_directories(dir_);
   const fs::path tool = dir_ / "slow-lungar-bake";
-  std::ofstream(tool) << "#!/bin/sh\ntrap '' TERM INT\nwhile [ $# -gt 0 ]; do [ \"$1\" = --out ] && out=$2; shift; done\n"
-                         "echo half > \"$out.partial-abc123\"\nexec sleep 30\n";
+  std::ofstream(tool)
+      << "#!/bin/sh\ntrap '' TERM INT\nwhile [ $# -gt 0 ]; do [ \"$1\" = --out ] && out=$2; shift; done\n"
+         "echo half > \"$out.partial-abc123\"\nexec sleep 30\n";
   fs::permissions(tool, fs::perms::owner_all);
   options_.bake_tool = tool.string();
   for (const bool procedural : {false, true}) {

@@ -106,6 +106,13 @@ class AtomicFile {
   std::string path_, partial_;
 };
 
+/// Whether `path` can be written as AtomicFile writes it (its folder made if missing, a partial file created and
+/// removed): long work (a bake of minutes) asks first, so that an output it could never write fails at once.
+inline Status check_writable(const std::string& path) {
+  AtomicFile probe;
+  return probe.open(path);  // the destructor removes the empty partial file
+}
+
 /// Writes `bytes` to `path` whole or not at all.
 inline Status write_file_atomically(const std::string& path, std::string_view bytes) {
   AtomicFile file;

@@ -180,6 +180,10 @@ Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& pr
   if (cmd.out.empty()) return fail("--out: expected the path of the .lungbake file to write");
   const int inputs = int{cmd.procedural} + int{!cmd.meshes.empty()} + int{!cmd.labelmap.empty()};
   if (inputs != 1) return fail("expected one of --procedural, --mesh FILE or --labelmap FILE");
+  // Minutes of baking for an output that cannot be written would be lost: ask the outputs' folders first.
+  if (Status s = check_writable(cmd.out); !s) return fail("--out: " + s.error());
+  if (!cmd.report_json.empty())
+    if (Status s = check_writable(cmd.report_json); !s) return fail("--report-json: " + s.error());
   std::vector<LungMesh> lungs;
   std::string source = cmd.procedural ? std::string("procedural lungs") : cmd.labelmap;
   if (cmd.procedural) {

@@ -118,6 +118,27 @@ TEST(BakeCli, MissingMeshIsOneCleanErrorAndNoFile) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.lungbake")));
 }
 
+// An output that can never be written is found before the bake, not after its minutes: and a report that cannot be
+// written does not leave the asset written beside a failed command.
+TEST(BakeCli, AnOutputThatCannotBeWrittenIsRefusedBeforeBaking) {
+  test::TempDir dir;
+  std::ofstream(dir.file("plain")) << "a file, not a folder\n";
+  const std::string bake = "--procedural --nodes 600 --no-evaluate --no-transfer-rows ";
+  EXPECT_EQ(run(bake + "--out " + dir.file("plain") + "/x.lungbake", dir.file("err")), 1);
+  std::string err = file_text(dir.file("err"));
+  EXPECT_NE(err.find("lungar-bake: --out: " + dir.file("plain") + "/x.lungbake: cannot open for writing"),
+            std::string::npos)
+      << err;
+
+  EXPECT_EQ(run(bake + "--out " + dir.file("x.lungbake") + " --report-json " + dir.file("plain") + "/r.json",
+                dir.file("err")),
+            1);
+  err = file_text(dir.file("err"));
+  EXPECT_NE(err.find("lungar-bake: --report-json: " + dir.file("plain") + "/r.json"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.lungbake"))) << "the asset of a command that failed";
+  EXPECT_EQ(dir.entries(), 2u) << "only the plain file and the captured stderr: no .partial file";
+}
+
 TEST(BakeCli, BadOptionsAreRefused) {
   test::TempDir dir;
   for (const std::string args : {"", "--procedural", "--procedural --out a.lungbake --bands 9",

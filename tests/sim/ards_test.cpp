@@ -146,6 +146,16 @@ TEST(Ards, TheEq1BaselineTakesTheSamePatternAtEachVertex) {
   }
 }
 
+TEST(Ards, ALungWithFewerVerticesThanTheFitHasUnknownsIsRefused) {
+  // The fit solves for L^2 SH coefficients and 4 linear weights: a lung needs that many samples at the least.
+  BakedAsset a = test::sliding_bake().asset;
+  const std::uint32_t unknowns = a.coefficients() + 4;
+  a.lungs[0].vertex_count = unknowns - 1;
+  const auto few = DependentCollapse::build(a, 0.6);
+  ASSERT_FALSE(few);
+  EXPECT_NE(few.error().find("'" + a.lungs[0].name + "' has too few vertices"), std::string::npos) << few.error();
+}
+
 TEST(Ards, AnAssetWithoutSpherePointsIsRefusedWithWhatToDo) {
   BakedAsset old = test::sliding_bake().asset;
   old.sphere_dirs.clear();

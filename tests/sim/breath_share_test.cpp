@@ -4,6 +4,7 @@
 ///        pair, measured as each lung's enclosed volume change.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -77,6 +78,40 @@ TEST(BreathShare, SharesSumToOneInEveryDirectionAndFallBackWithoutGravity) {
   one.lungs.resize(1);
   one.lungs[0].volume_share = 1.0;
   EXPECT_DOUBLE_EQ(breath_share(one, 0, kLeftSideDown), 1.0);
+}
+
+TEST(BreathShare, SharesThatSumToLessThanOneKeepTheirProportions) {
+  // The pair's centre is volume-weighted whatever the shares add up to (a file's rounded shares need not sum to 1):
+  // halving every share halves each lung's answer and leaves the posture's split as it was.
+  const BakedAsset a = demo_like_pair();
+  BakedAsset half = a;
+  for (BakedLung& l : half.lungs) l.volume_share *= 0.5;
+  for (const Eigen::Vector3d& g : {kLeftSideDown, kRightSideDown, Eigen::Vector3d(0.6, 0.3, -0.7)})
+    for (std::size_t l = 0; l < 2; ++l)
+      EXPECT_NEAR(breath_share(half, l, g), 0.5 * breath_share(a, l, g), 1e-12)
+          << "lung " << l << ", g " << g.transpose();
+}
+
+TEST(BreathShare, ALungWhosePathologyLeftItsResponseAsItWasTakesItsHealthyShareInEveryPosture) {
+  // V(g) = p0 v0 + gamma g.v for both lungs; the left lung's healthy volumes are recorded, unchanged: its
+  // V / V_healthy is 1 in every posture, with gravity along any axis, and the split is the healthy pair's.
+  BakedAsset healthy = demo_like_pair();
+  healthy.p0 = 10.0;
+  healthy.gamma_per_mm = 0.025;
+  for (BakedLung& l : healthy.lungs) {
+    l.volume_const = 2.0e5;
+    l.volume_grad = {3.0e6, -2.0e6, 4.0e6};
+  }
+  BakedAsset recorded = healthy;
+  BakedLung& left = recorded.lungs[0];
+  left.healthy_volumes =
+      std::array<double, 4>{left.volume_const, left.volume_grad[0], left.volume_grad[1], left.volume_grad[2]};
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Eigen::Vector3d g(i, j, k);
+        EXPECT_NEAR(breath_share(recorded, 0, g), breath_share(healthy, 0, g), 1e-12) << "g = " << g.transpose();
+      }
 }
 
 /// Each lung's enclosed volume change, mL, when the baked pair breathes 500 mL with gravity g.

@@ -237,6 +237,29 @@ TEST(BreathTrace, AnExtMarkerFileDropsAGarbledTimeAndRefusesMany) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(BreathTrace, AnExtMarkerRowThatRepeatsTheLastTimeIsDroppedAndCounted) {
+  // A repeated time is no new sample, as one gone back is not: two positions at one instant would give the
+  // excursion an infinite speed. The row is dropped and counted like a garbled one.
+  const auto dir = std::filesystem::temp_directory_path() / "lungar_extmarker_repeat_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "marker.csv").string();
+  {
+    std::ofstream o(path);
+    o << "\"Frame\";\"Timestamp\";\"x\";\"y\";\"z\"\n";
+    // 30 s at 10 Hz, as in the file above; row 30 (line 32) repeats row 29's time.
+    for (int i = 0; i < 300; ++i) {
+      const int ms = 100 * (i == 30 ? i - 1 : i);
+      o << 6 * i << ";" << ms << ";-290,2;" << (i % 40 < 13 ? i % 40 : 13 - (i % 40 - 13) / 2) << ",5;96,7\n";
+    }
+  }
+  auto r = read_breath_trace(path);
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->skipped, 1);
+  EXPECT_EQ(r->first_skipped_line, 32);
+  EXPECT_EQ(r->samples.size(), 299u);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BreathFollower, AVolumeSourceGivesItsOwnMillilitresNotTheTidalVolumesScale) {
   // A mannequin's lung volume: FRC 2300 mL, breaths of 400 mL at 15 a minute, then two of 700 mL.
   FollowerParams p;

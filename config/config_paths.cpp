@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "config/toml_layers.h"
 
 namespace lungar::config {
 
@@ -60,18 +61,22 @@ std::string state_dir(const XdgDirs& d) {
   return base.empty() ? (std::filesystem::temp_directory_path() / "lungar-state").string() : base + "/lungar";
 }
 
-std::string ConfigChoice::describe() const {
-  return "config: " + (path.empty() ? std::string("built-in defaults") : path) + " (" + reason + ")";
-}
+std::string ConfigChoice::files() const { return paths.empty() ? "built-in defaults" : join_paths(paths); }
+
+std::string ConfigChoice::describe() const { return "config: " + files() + " (" + reason + ")"; }
 
 ConfigChoice choose_config(const std::string& cli_path, const XdgDirs& d) {
-  if (!cli_path.empty()) return {cli_path, "--config"};
+  return choose_config(cli_path.empty() ? std::vector<std::string>{} : std::vector<std::string>{cli_path}, d);
+}
+
+ConfigChoice choose_config(const std::vector<std::string>& cli_paths, const XdgDirs& d) {
+  if (!cli_paths.empty()) return {cli_paths, "--config"};
   const std::string user = user_config_file(d);
   const std::string system = system_config_file(d);
-  if (is_file(user)) return {user, d.config_home.empty() ? "the user's, ~/.config" : "the user's, $XDG_CONFIG_HOME"};
+  if (is_file(user)) return {{user}, d.config_home.empty() ? "the user's, ~/.config" : "the user's, $XDG_CONFIG_HOME"};
   const std::string no_user = "no " + (user.empty() ? std::string("$HOME") : user);
-  if (is_file(system)) return {system, "the system's; " + no_user};
-  return {"", "no --config, " + no_user + ", no " + system};
+  if (is_file(system)) return {{system}, "the system's; " + no_user};
+  return {{}, "no --config, " + no_user + ", no " + system};
 }
 
 }  // namespace lungar::config

@@ -1,11 +1,13 @@
 /// @file config_paths.h
 /// @brief Where lungar looks for its settings and puts its files, as a Debian program does (XDG base directories):
-/// `--config` wins, then `$XDG_CONFIG_HOME/lungar/lungar.toml`, then `/etc/lungar/lungar.toml`, then the built-in
-/// defaults; baked assets in `$XDG_CACHE_HOME/lungar/`, snapshots, stats and recordings in `$XDG_STATE_HOME/lungar/`.
+/// `--config` wins (repeated: the files merged, later over earlier), then `$XDG_CONFIG_HOME/lungar/lungar.toml`, then
+/// `/etc/lungar/lungar.toml`, then the built-in defaults; baked assets in `$XDG_CACHE_HOME/lungar/`, snapshots, stats
+/// and recordings in `$XDG_STATE_HOME/lungar/`.
 /// @ingroup config
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "config/base/result.h"
 
@@ -32,16 +34,21 @@ std::string cache_dir(const XdgDirs& d);
 /// `$XDG_STATE_HOME/lungar`, else `~/.local/state/lungar`: snapshots, stats, recordings with no path given.
 std::string state_dir(const XdgDirs& d);
 
-/// Which settings file a run uses and why; `path` empty means the built-in defaults.
+/// Which settings files a run uses and why; none means the built-in defaults. Of several (`--config` repeated),
+/// a later file's keys win over an earlier one's.
 struct ConfigChoice {
-  std::string path;
+  std::vector<std::string> paths;
   std::string reason;  ///< e.g. "--config", "$XDG_CONFIG_HOME", "/etc/lungar", "none of ... exists"
+  /// The files joined ("a.toml + b.toml"), or "built-in defaults".
+  std::string files() const;
   /// The start-up log line: "config: /etc/lungar/lungar.toml (no ~/.config/lungar/lungar.toml)".
   std::string describe() const;
 };
 
-/// `--config` (when not empty) wins even when it does not exist (loading then names it); otherwise the first of the
-/// user's and the system's file that exists; otherwise the defaults.
+/// `--config` (when given, once or more) wins even when a file does not exist (loading then names it); otherwise
+/// the first of the user's and the system's file that exists; otherwise the defaults.
+ConfigChoice choose_config(const std::vector<std::string>& cli_paths, const XdgDirs& d);
+/// One `--config` (empty: none given).
 ConfigChoice choose_config(const std::string& cli_path, const XdgDirs& d);
 
 }  // namespace lungar::config

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/base/number_text.h"
+#include "config/toml_layers.h"
 
 namespace lungar::config {
 
@@ -70,15 +71,11 @@ std::string TomlSection::key_path(std::string_view key) const {
 }
 
 void TomlSection::fail(std::string_view key, const std::string& message) const {
-  std::uint32_t line = 0;
-  if (table_) {
-    if (const toml::node* node = table_->get(key)) {
-      line = node->source().begin.line;
-    } else {
-      line = table_->source().begin.line;
-    }
-  }
-  std::string where = file_;
+  // The node's own file: of several merged configs, the one that set the key.
+  const toml::node* node = table_ ? table_->get(key) : nullptr;
+  if (node == nullptr) node = table_;
+  std::string where = node ? source_file(*node, file_) : file_;
+  const std::uint32_t line = node ? node->source().begin.line : 0;
   if (line > 0) where += ":" + std::to_string(line);
   throw ConfigError(where + ": key '" + key_path(key) + "': " + message);
 }
@@ -218,8 +215,9 @@ void TomlSection::finish() const {
         if (!expected.empty()) expected += ", ";
         expected += name;
       }
-      std::string where = file_;
-      if (k.source().begin.line > 0) where += ":" + std::to_string(k.source().begin.line);
+      std::string where = source_file(v, file_);
+      const std::uint32_t line = v.source().begin.line > 0 ? v.source().begin.line : k.source().begin.line;
+      if (line > 0) where += ":" + std::to_string(line);
       throw ConfigError(where + ": unknown key '" + key_path(k.str()) + "'; expected one of: " + expected);
     }
   }

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "drivers/decode/decoder.h"
 #include "drivers/igtl/igtl_decoder.h"
@@ -34,8 +35,9 @@ int die(const std::string& line) {
 }
 
 /// Tracker settings from --config's [trackers] when given, else from the log's own header.
-Result<TrackerConfig> settings_for(const TrkLog& log, const std::string& file, const std::string& config_path) {
-  if (!config_path.empty()) return tracker_config_from_file(config_path);
+Result<TrackerConfig> settings_for(const TrkLog& log, const std::string& file,
+                                   const std::vector<std::string>& config_paths) {
+  if (!config_paths.empty()) return tracker_config_from_files(config_paths);
   if (log.header.layout_toml.empty()) {
     return fail(file + ": the log does not describe its report layout: expected --config FILE.toml");
   }
@@ -116,10 +118,10 @@ int info(const std::string& file) {
   return 0;
 }
 
-int dump(const std::string& file, const std::string& format, const std::string& config_path) {
+int dump(const std::string& file, const std::string& format, const std::vector<std::string>& config_paths) {
   auto r = load_trk(file);
   if (!r) return die(r.error());
-  auto settings = settings_for(*r, file, config_path);
+  auto settings = settings_for(*r, file, config_paths);
   if (!settings) return die(settings.error());
   auto layout = make_layout(*settings);
   if (!layout) return die(file + ": " + layout.error());
@@ -201,11 +203,11 @@ int cut(const std::string& file, const std::string& out, double from_s, double t
   return 0;
 }
 
-int synth(const std::string& out, const std::string& config_path, const std::string& trajectory, double seconds,
-          double rate_hz, double noise_mm, double dropout) {
+int synth(const std::string& out, const std::vector<std::string>& config_paths, const std::string& trajectory,
+          double seconds, double rate_hz, double noise_mm, double dropout) {
   TrackerConfig t;
-  if (!config_path.empty()) {
-    auto r = tracker_config_from_file(config_path);
+  if (!config_paths.empty()) {
+    auto r = tracker_config_from_files(config_paths);
     if (!r) return die(r.error());
     t = *r;
   }
@@ -261,7 +263,8 @@ int main(int argc, char** argv) {
   CLI::App app{"lungar-trk: inspect, dump, cut, convert and synthesise .trk tracker logs; serve OpenIGTLink poses"};
   app.set_version_flag("--version", std::string("lungar-trk ") + LUNGAR_VERSION);
   app.require_subcommand(1);
-  std::string file, out, format = "csv", config_path, trajectory = "upright_to_supine";
+  std::string file, out, format = "csv", trajectory = "upright_to_supine";
+  std::vector<std::string> config_paths;  // --config, repeatable
   double from_s = 0, to_s = 1e12, seconds = 6.0, rate_hz = 0, noise_mm = 0, dropout = 0;
 
   auto* info_cmd = app.add_subcommand("info", "header, record count, duration and rate of a log");
@@ -269,7 +272,10 @@ int main(int argc, char** argv) {
   auto* dump_cmd = app.add_subcommand("dump", "decode every record to CSV or JSON lines on stdout");
   dump_cmd->add_option("file", file, ".trk log")->required();
   dump_cmd->add_option("--format", format, "csv | jsonl")->check(CLI::IsMember({"csv", "jsonl"}));
-  dump_cmd->add_option("--config", config_path, "decode with this config's [trackers] layout, not the log's");
+  dump_cmd
+      ->add_option("--config", config_paths,
+                   "decode with this config's [trackers] layout, not the log's (repeatable: later over earlier)")
+      ->allow_extra_args(false);
   auto* cut_cmd = app.add_subcommand("cut", "copy the records between --from and --to seconds into a new log");
   cut_cmd->add_option("file", file, ".trk log")->required();
   cut_cmd->add_option("out", out, "new .trk log")->required();
@@ -280,7 +286,10 @@ int main(int argc, char** argv) {
   plus_cmd->add_option("out", out, "new .igs.mha")->required();
   auto* synth_cmd = app.add_subcommand("synth", "write a log of a mock trajectory through a report layout");
   synth_cmd->add_option("out", out, "new .trk log")->required();
-  synth_cmd->add_option("--config", config_path, "config TOML whose [trackers] layout to use (default: built-in)");
+  synth_cmd
+      ->add_option("--config", config_paths,
+                   "config TOML whose [trackers] layout to use, repeatable: later over earlier (default: built-in)")
+      ->allow_extra_args(false);
   synth_cmd->add_option("--trajectory", trajectory, kMockTrajectoriesExpected);
   synth_cmd->add_option("--seconds", seconds, "duration, s")->check(CLI::Range(0.01, 3600.0));
   synth_cmd->add_option("--rate-hz", rate_hz, "reports per sensor per second (default: the config's)")
@@ -308,9 +317,9 @@ int main(int argc, char** argv) {
   }
 
   if (info_cmd->parsed()) return info(file);
-  if (dump_cmd->parsed()) return dump(file, format, config_path);
+  if (dump_cmd->parsed()) return dump(file, format, config_paths);
   if (cut_cmd->parsed()) return cut(file, out, from_s, to_s);
   if (plus_cmd->parsed()) return to_plus(file, out);
   if (serve_cmd->parsed()) return serve(serve_opts);
-  return synth(out, config_path, trajectory, seconds, rate_hz, noise_mm, dropout);
+  return synth(out, config_paths, trajectory, seconds, rate_hz, noise_mm, dropout);
 }

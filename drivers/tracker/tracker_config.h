@@ -102,7 +102,7 @@ struct SensorConfig {
   /// With position_type = "none": the position this role reports, in the tracker's axes (before axis_remap), mm.
   std::array<double, 3> fixed_position_mm = {0.0, 0.0, 0.0};
   /// [trackers.stylus] only: the stylus's tip in the sensor's own frame, mm (`lungar calibrate pivot` finds it).
-  /// Registration reads the stylus at its tip; 0: the sensor's origin is the tip.
+  /// Registration reads the stylus at its tip; all 0: not found yet, which `lungar calibrate` refuses as missing.
   std::array<double, 3> tip_offset_mm = {0.0, 0.0, 0.0};
 
   bool operator==(const SensorConfig&) const = default;

@@ -31,6 +31,8 @@ namespace lungar::drivers {
 Result<TrackerConfig> tracker_config_from_toml(const std::string& text, const std::string& name);
 /// The same from a file.
 Result<TrackerConfig> tracker_config_from_file(const std::string& path);
+/// The same from several files read as one (config/toml_layers.h: a later file's keys over an earlier one's).
+Result<TrackerConfig> tracker_config_from_files(const std::vector<std::string>& paths);
 /// Every key of [trackers] and its tables, as a .trk header records the tracker it was made with.
 std::string tracker_config_to_toml(const TrackerConfig& t);
 

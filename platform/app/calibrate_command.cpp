@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "config/toml_layers.h"
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
 #include "drivers/plus/plus_replay.h"
@@ -20,10 +21,10 @@ namespace lungar::platform {
 
 namespace {
 
-/// The --config's trackers, read once (none without --config): its report layout and the stylus's tip.
-Result<std::optional<drivers::TrackerConfig>> config_trackers(const std::string& config_path) {
-  if (config_path.empty()) return std::optional<drivers::TrackerConfig>{};
-  auto s = load_settings(config_path);
+/// The --config files' trackers, read once (none without --config): the report layout and the stylus's tip.
+Result<std::optional<drivers::TrackerConfig>> config_trackers(const std::vector<std::string>& config_paths) {
+  if (config_paths.empty()) return std::optional<drivers::TrackerConfig>{};
+  auto s = load_settings(config_paths);
   if (!s) return s.with_context("");
   return std::optional<drivers::TrackerConfig>(s->trackers);
 }
@@ -33,14 +34,25 @@ Eigen::Vector3d tip_of(const drivers::TrackerConfig& t) {
   return Eigen::Vector3d(tip[0], tip[1], tip[2]);
 }
 
+/// A path as the shell takes it: as it is when it holds only plain characters, else in single quotes.
+std::string shell_word(const std::string& path) {
+  const bool plain = !path.empty() && path.find_first_not_of(
+                                          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                          "0123456789_./-+,=:@%") == std::string::npos;
+  if (plain) return path;
+  std::string quoted = "'";
+  for (char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 }  // namespace
 
 /// The stylus in the Reference's (the patient's) frame in each frame of a PLUS sequence where both are valid (or
 /// the stylus is given relative to the Reference); the tip from --config, else none.
-Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::string& config_path) {
+Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::vector<std::string>& config_paths) {
   auto seq = drivers::read_plus_sequence(path);
   if (!seq) return seq.with_context("");
-  auto config = config_trackers(config_path);
+  auto config = config_trackers(config_paths);
   if (!config) return config.with_context("");
   StylusLog out;
   if (*config) out.tip_offset_mm = tip_of(**config);
@@ -71,11 +83,11 @@ Result<StylusLog> stylus_poses_from_plus(const std::string& path, const std::str
   return out;
 }
 
-Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::string& config_path) {
-  if (drivers::is_plus_sequence_path(log_path)) return stylus_poses_from_plus(log_path, config_path);
+Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::vector<std::string>& config_paths) {
+  if (drivers::is_plus_sequence_path(log_path)) return stylus_poses_from_plus(log_path, config_paths);
   auto loaded = drivers::load_trk(log_path);
   if (!loaded) return loaded.with_context("");
-  auto config = config_trackers(config_path);
+  auto config = config_trackers(config_paths);
   if (!config) return config.with_context("");
   // The report layout the log was recorded with: its header's, else the config's, else the defaults.
   auto trackers = drivers::recorded_trackers(*loaded, log_path, *config ? **config : drivers::TrackerConfig{});
@@ -110,28 +122,46 @@ Result<StylusLog> stylus_poses_from_log(const std::string& log_path, const std::
   return out;
 }
 
-Result<std::vector<Dwell>> stylus_dwells_from_log(const std::string& log_path, const std::string& config_path,
+Result<std::vector<Dwell>> stylus_dwells_from_log(const std::string& log_path,
+                                                  const std::vector<std::string>& config_paths,
                                                   const std::optional<Eigen::Vector3d>& tip_mm) {
-  auto log = stylus_poses_from_log(log_path, config_path);
+  auto log = stylus_poses_from_log(log_path, config_paths);
   if (!log) return log.with_context("");
+  // A stylus is read at its tip, never at its sensor: an all-zero offset that nobody gave is a pivot calibration
+  // not done (or not passed on), which would otherwise surface as a landmark that no touch fits.
+  if (!tip_mm && log->tip_offset_mm.isZero()) {
+    return fail(log_path + ": the stylus tip offset is missing: [trackers.stylus] tip_offset_mm is [0, 0, 0] (" +
+                (config_paths.empty() ? std::string("no --config given") : "in " + config::join_paths(config_paths)) +
+                "); find it with `lungar calibrate pivot --stylus-log pivot.trk --out stylus.toml`, then add "
+                "`--config stylus.toml` here (or give --stylus-tip-mm x,y,z)");
+  }
   const Eigen::Vector3d tip = tip_mm ? *tip_mm : log->tip_offset_mm;
   std::vector<StylusSample> samples;
   for (std::size_t i = 0; i < log->poses.size(); ++i) samples.push_back({log->t_s[i], log->poses[i] * tip});
   return find_dwells(samples);
 }
 
-Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path, const std::string& config_path,
+Result<std::vector<Eigen::Vector3d>> stylus_points_from_log(const std::string& log_path,
+                                                            const std::vector<std::string>& config_paths,
                                                             const std::optional<Eigen::Vector3d>& tip_mm) {
-  auto dwells = stylus_dwells_from_log(log_path, config_path, tip_mm);
+  auto dwells = stylus_dwells_from_log(log_path, config_paths, tip_mm);
   if (!dwells) return dwells.with_context("");
   std::vector<Eigen::Vector3d> points;
   for (const Dwell& d : *dwells) points.push_back(d.position_mm);
   return points;
 }
 
+std::string config_flags(const std::vector<std::string>& given, const std::string& out_path) {
+  std::string flags;
+  for (const std::string& p : given) {
+    if (p != out_path) flags += "--config " + shell_word(p) + " ";  // a step re-run over its own output
+  }
+  return flags + "--config " + shell_word(out_path);
+}
+
 int run_pivot(const PivotOptions& o) {
   auto say = [](const std::string& message) { std::fprintf(stderr, "lungar calibrate pivot: %s\n", message.c_str()); };
-  auto log = stylus_poses_from_log(o.stylus_log, o.config_path);
+  auto log = stylus_poses_from_log(o.stylus_log, o.config_paths);
   if (!log) return say(log.error()), 2;
   auto fit = fit_pivot(log->poses);
   if (!fit) return say(fit.error() + " (" + o.stylus_log + ")"), 2;
@@ -141,7 +171,10 @@ int run_pivot(const PivotOptions& o) {
   std::printf("  tip_offset_mm = [%.3f, %.3f, %.3f] (stylus frame); pivot at [%.3f, %.3f, %.3f] (patient frame)\n",
               fit->tip_mm.x(), fit->tip_mm.y(), fit->tip_mm.z(), fit->pivot_mm.x(), fit->pivot_mm.y(),
               fit->pivot_mm.z());
-  std::printf("written to %s (include it with --config, or copy the section into your profile)\n", o.out_path.c_str());
+  std::printf(
+      "written to %s; the registration reads it: lungar calibrate --model MODEL.csv --stylus-log TOUCHES.trk %s "
+      "--out registration.toml\n",
+      o.out_path.c_str(), config_flags(o.config_paths, o.out_path).c_str());
   return 0;
 }
 
@@ -164,7 +197,7 @@ int run_calibrate(const CalibrateOptions& o) {
     if (!fitted) return say(fitted.error() + " (" + o.stylus_csv + ")"), 2;
     r = *fitted;
   } else {  // a session: dwells, repeats, rests; matched to the landmarks
-    auto dwells = stylus_dwells_from_log(o.stylus_log, o.config_path, o.stylus_tip_mm);
+    auto dwells = stylus_dwells_from_log(o.stylus_log, o.config_paths, o.stylus_tip_mm);
     if (!dwells) return say(dwells.error()), 2;
     auto matched = match_landmarks(*model, *dwells);
     if (!matched) return say(matched.error() + " (" + o.stylus_log + ")"), 2;
@@ -179,7 +212,8 @@ int run_calibrate(const CalibrateOptions& o) {
   std::printf("  translation_mm = [%.3f, %.3f, %.3f], rotation_wxyz = [%.6f, %.6f, %.6f, %.6f]\n", r.translation_mm.x(),
               r.translation_mm.y(), r.translation_mm.z(), r.rotation.w(), r.rotation.x(), r.rotation.y(),
               r.rotation.z());
-  std::printf("written to %s (include it with --config, or copy the section into your profile)\n", o.out_path.c_str());
+  std::printf("written to %s; the runtime reads it: lungar %s\n", o.out_path.c_str(),
+              config_flags(o.config_paths, o.out_path).c_str());
   return 0;
 }
 

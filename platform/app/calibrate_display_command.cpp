@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "platform/app/calibrate_command.h"
 #include "platform/app/spaam_command.h"
 
 namespace lungar::platform {
@@ -42,7 +43,8 @@ int fit_and_report(const std::array<std::vector<Alignment>, 2>& alignments, cons
         e == 0 ? "left" : "right", c.alignments, c.rms_px, c.max_px, c.centre_mm.x(), c.centre_mm.y(), c.centre_mm.z(),
         c.intrinsics(0, 0), c.intrinsics(1, 1), c.intrinsics(0, 2), c.intrinsics(1, 2));
   }
-  std::printf("written to %s (include it with --config, or copy the section into your profile)\n", o.out_path.c_str());
+  std::printf("written to %s; the runtime reads it: lungar %s\n", o.out_path.c_str(),
+              config_flags(o.config_paths, o.out_path).c_str());
   return 0;
 }
 

@@ -22,7 +22,8 @@ struct CalibrateDisplayOptions {
   std::string report_json;     ///< optional: each eye's figures
   // The interactive way only:
   std::string save_alignments;  ///< where the gathered alignments go; empty: beside out_path (saved_alignments_path)
-  std::string config_path;      ///< the settings with the tracker, the display and the HMD; empty: the chosen one
+  /// the settings with the tracker, the display and the HMD (repeatable, later over earlier); none: the chosen one
+  std::vector<std::string> config_paths;
   std::optional<Eigen::Vector3d> stylus_tip_mm;  ///< the tip in the stylus frame; unset: [trackers.stylus]'s
   std::optional<Eigen::Vector3d> fiducial_mm;    ///< align with this point on the patient tracker, not the stylus
   int grid = kSpaamGridSide;                     ///< grid x grid crosshair positions an eye

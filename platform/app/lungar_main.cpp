@@ -45,6 +45,19 @@ void add_point_mm(CLI::App& command, const std::string& name, std::vector<double
   command.add_option(name, into, help)->delimiter(',')->expected(3)->check(CLI::Range(-1000.0, 1000.0));
 }
 
+/// A subcommand's --config, repeatable as lungar's: each file's keys over the earlier ones'.
+void add_configs(CLI::App& command, std::vector<std::string>& into, const std::string& holding) {
+  command.add_option("--config", into, "settings TOML, repeatable (later over earlier), with " + holding)
+      ->allow_extra_args(false);
+}
+
+/// The --config files of a command line: those before the subcommand (lungar's own), then the subcommand's.
+std::vector<std::string> all_configs(const std::vector<std::string>& before, const std::vector<std::string>& own) {
+  std::vector<std::string> all = before;
+  all.insert(all.end(), own.begin(), own.end());
+  return all;
+}
+
 /// `lungar calibrate` and `lungar calibrate pivot`.
 void add_calibrate(CLI::App& app, Commands& m) {
   lungar::platform::CalibrateOptions& c = m.calibrate;
@@ -54,14 +67,16 @@ void add_calibrate(CLI::App& app, Commands& m) {
   calibrate->add_option("--stylus", c.stylus_csv, "touched fiducials, CSV of x, y, z in mm (patient-tracker frame)");
   calibrate->add_option("--stylus-log", c.stylus_log,
                         "tracker log (.trk) of the stylus touching each fiducial in order, held still >= 0.5 s");
-  calibrate->add_option("--config", c.config_path, "settings TOML with the tracker report layout of the log");
+  add_configs(*calibrate, c.config_paths,
+              "the tracker report layout of the log and [trackers.stylus] tip_offset_mm (what `calibrate pivot` "
+              "wrote)");
   calibrate->add_option("--out", c.out_path, "where to write the [registration] section (TOML); required");
   add_point_mm(*calibrate, "--stylus-tip-mm", m.stylus_tip,
                "x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] tip_offset_mm)");
   CLI::App* pivot = m.pivot_app = calibrate->add_subcommand(
       "pivot", "find the stylus tip from a log of the stylus pivoting about it in a dimple (least squares)");
   pivot->add_option("--stylus-log", m.pivot.stylus_log, "tracker log (.trk) of the stylus pivoting")->required();
-  pivot->add_option("--config", m.pivot.config_path, "settings TOML with the tracker report layout of the log");
+  add_configs(*pivot, m.pivot.config_paths, "the tracker report layout of the log");
   pivot->add_option("--out", m.pivot.out_path, "where to write [trackers.stylus] tip_offset_mm (TOML)")->required();
 }
 
@@ -78,8 +93,8 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   display->add_option("--save-alignments", m.display.save_alignments,
                       "interactive: where to write the alignments gathered (default: beside --out, "
                       "NAME-alignments.csv)");
-  display->add_option("--config", m.display.config_path,
-                      "interactive: settings TOML with the tracker, the display and the HMD (default: as lungar's)");
+  add_configs(*display, m.display.config_paths,
+              "interactive: the tracker, the display and the HMD (default: as lungar's)");
   add_point_mm(*display, "--stylus-tip-mm", m.display_tip,
                "interactive: x,y,z: the stylus tip in the stylus sensor's frame, mm (default: [trackers.stylus] "
                "tip_offset_mm)");
@@ -110,12 +125,14 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
 
 /// The chosen subcommand's exit code; none when the command line runs the runtime.
 std::optional<int> run_command(Commands& m, const lungar::platform::RuntimeOptions& o) {
-  const std::string& config_path = o.config_path;
-  if (*m.pivot_app) return lungar::platform::run_pivot(m.pivot);
+  if (*m.pivot_app) {
+    m.pivot.config_paths = all_configs(all_configs(o.config_paths, m.calibrate.config_paths), m.pivot.config_paths);
+    return lungar::platform::run_pivot(m.pivot);
+  }
   if (*m.display_app) {
     if (m.display_tip.size() == 3) m.display.stylus_tip_mm = Eigen::Vector3d(m.display_tip.data());
     if (m.display_fiducial.size() == 3) m.display.fiducial_mm = Eigen::Vector3d(m.display_fiducial.data());
-    if (m.display.config_path.empty()) m.display.config_path = config_path;
+    m.display.config_paths = all_configs(o.config_paths, m.display.config_paths);
     return lungar::platform::run_calibrate_display(m.display);
   }
   if (*m.keys_app) {
@@ -139,7 +156,10 @@ std::optional<int> run_command(Commands& m, const lungar::platform::RuntimeOptio
   if (m.stylus_tip.size() == 3) {
     m.calibrate.stylus_tip_mm = Eigen::Vector3d(m.stylus_tip[0], m.stylus_tip[1], m.stylus_tip[2]);
   }
-  if (*m.calibrate_app) return lungar::platform::run_calibrate(m.calibrate);
+  if (*m.calibrate_app) {
+    m.calibrate.config_paths = all_configs(o.config_paths, m.calibrate.config_paths);
+    return lungar::platform::run_calibrate(m.calibrate);
+  }
   // The runtime's options, before `doctor` or after it (it falls through): what the run would use is checked.
   if (*m.doctor) return lungar::platform::doctor::run_doctor(o);
   return std::nullopt;
@@ -171,7 +191,7 @@ int main(int argc, char** argv) {
   if (const std::optional<int> rc = run_command(commands, o)) return *rc;
 
   const auto dirs = lungar::config::XdgDirs::from_environment();
-  const auto chosen = lungar::config::choose_config(o.config_path, dirs);
+  const auto chosen = lungar::config::choose_config(o.config_paths, dirs);
   auto loaded = lungar::platform::load_chosen_settings(chosen);
   if (!loaded) {
     std::fprintf(stderr, "lungar: %s\n", loaded.error().c_str());

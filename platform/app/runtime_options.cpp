@@ -100,9 +100,11 @@ void grouped(CLI::App& app, const char* group, const Add& add) {
 
 /// What is drawn and what drives it: the settings, the lungs, their breath, the scenario, the tracker.
 void add_input_options(CLI::App& app, RuntimeOptions& o) {
-  app.add_option("--config", o.config_path,
-                 "settings TOML (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, else "
-                 "built-in; every key: default.toml)");
+  app.add_option("--config", o.config_paths,
+                 "settings TOML, repeatable: a later file's keys over an earlier one's (a profile, then what "
+                 "`calibrate` wrote) (default: $XDG_CONFIG_HOME/lungar/lungar.toml, else /etc/lungar/lungar.toml, "
+                 "else built-in; every key: default.toml)")
+      ->allow_extra_args(false);
   auto* asset = app.add_option("--asset", o.asset_path, "baked .lungbake asset (default: the demo's CT lungs, cached)");
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);

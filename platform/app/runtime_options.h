@@ -15,7 +15,7 @@
 namespace lungar::platform {
 
 struct RuntimeOptions {
-  std::string config_path;
+  std::vector<std::string> config_paths;  ///< --config, repeatable: later files' keys over earlier ones'
   std::string asset_path;
   bool procedural = false;    ///< draw the procedural pair, not the demo's CT lungs
   std::string scenario_path;  ///< breathing/orientation scenario TOML

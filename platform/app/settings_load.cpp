@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "config/toml_layers.h"
 #include "config/toml_section.h"
 #include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/tracker/tracker_config_toml.h"
@@ -70,13 +71,12 @@ void read_sim(TomlSection s, SimSettings& m) {
   s.finish();
 }
 
-Result<Settings> parse(const std::string& text, const std::string& name) {
-  auto parsed = config::parse_toml(text, name);
-  if (!parsed) return parsed.with_context("");
+/// The settings a (possibly merged) tree holds over the defaults; `name` is what errors call a value with no file.
+Result<Settings> read_tree(const toml::table& tree, const std::string& name) {
   Settings s;
   s.source = name;
   try {
-    TomlSection top(&*parsed, "", name);
+    TomlSection top(&tree, "", name);
     read_display_settings(top.section("display"), s.display);
     read_hmd_settings(top.section("hmd"), s.hmd);
     read_render(top.section("render"), s.render);
@@ -93,35 +93,43 @@ Result<Settings> parse(const std::string& text, const std::string& name) {
   return s;
 }
 
+/// A relative path inside a config is relative to the folder of the file that set it (of several, the last).
+void resolve_relative_paths(const toml::table& tree, Settings& s) {
+  auto resolve = [&](std::string_view key_path, std::string& p) {
+    const toml::node* node = tree.at_path(key_path).node();
+    if (node == nullptr || p.empty() || !std::filesystem::path(p).is_relative()) return;
+    const auto dir = std::filesystem::path(config::source_file(*node, "")).parent_path();
+    p = (dir / p).lexically_normal().string();
+  };
+  resolve("breathing.scenario", s.breathing.scenario);
+  if (names_a_file(s.breathing.source)) resolve("breathing.source", s.breathing.source);
+  resolve("trackers.replay_file", s.trackers.replay_file);
+  resolve("sim.asset", s.sim.asset);
+  resolve("sync.cyclonedds_xml", s.sync.cyclonedds_xml);
+  resolve("sync.security", s.sync.security);
+}
+
 }  // namespace
 
 Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name) {
-  return parse(toml_text, name);
+  auto parsed = config::parse_toml(toml_text, name);
+  if (!parsed) return parsed.with_context("");
+  return read_tree(*parsed, name);
 }
 
-Result<Settings> load_settings(const std::string& path) {
-  auto text = config::read_toml_file(path, "config");
-  if (!text) return text.with_context("");
-  auto r = parse(*text, path);
-  if (r) {
-    // Relative paths inside a config are relative to the config's folder.
-    const auto dir = std::filesystem::path(path).parent_path();
-    auto resolve = [&](std::string& p) {
-      if (!p.empty() && std::filesystem::path(p).is_relative()) p = (dir / p).lexically_normal().string();
-    };
-    resolve(r->breathing.scenario);
-    if (names_a_file(r->breathing.source)) resolve(r->breathing.source);
-    resolve(r->trackers.replay_file);
-    resolve(r->sim.asset);
-    resolve(r->sync.cyclonedds_xml);
-    resolve(r->sync.security);
-  }
+Result<Settings> load_settings(const std::vector<std::string>& paths) {
+  auto tree = config::parse_toml_files(paths, "config");
+  if (!tree) return tree.with_context("");
+  auto r = read_tree(*tree, config::join_paths(paths));
+  if (r) resolve_relative_paths(*tree, *r);
   return r;
 }
 
+Result<Settings> load_settings(const std::string& path) { return load_settings(std::vector<std::string>{path}); }
+
 Result<Settings> load_chosen_settings(const config::ConfigChoice& choice) {
-  if (choice.path.empty()) return Settings{};
-  return load_settings(choice.path);
+  if (choice.paths.empty()) return Settings{};
+  return load_settings(choice.paths);
 }
 
 std::string summarize(const Settings& s, const config::Scenario* scenario) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "config/base/result.h"
 #include "config/config_paths.h"
@@ -16,10 +17,14 @@ namespace lungar::platform {
 /// The defaults overlaid with `path`'s keys; relative paths inside are made relative to its folder.
 Result<Settings> load_settings(const std::string& path);
 
+/// The defaults overlaid with each file's keys in turn (a later file's key wins, tables merged key by key); a
+/// relative path is relative to the folder of the file that set it; an error names that file, its line and the key.
+Result<Settings> load_settings(const std::vector<std::string>& paths);
+
 /// The defaults overlaid with TOML text; `name` is what errors call it.
 Result<Settings> load_settings_from_string(const std::string& toml_text, const std::string& name);
 
-/// The chosen file loaded over the defaults (or the defaults); the error names the file, the line and the key.
+/// The chosen files loaded over the defaults (or the defaults); the error names the file, the line and the key.
 Result<Settings> load_chosen_settings(const config::ConfigChoice& choice);
 
 /// One log line: output, view, mode, deform, breathing, tracker, orientation. With a `scenario` the breathing is its

@@ -40,7 +40,7 @@ std::string apply_key(char key, SpaamSession& session, const SpaamIo& io) {
 
 /// The settings --config names, else the ones lungar would choose.
 Result<Settings> spaam_settings(const CalibrateDisplayOptions& o) {
-  const auto chosen = config::choose_config(o.config_path, config::XdgDirs::from_environment());
+  const auto chosen = config::choose_config(o.config_paths, config::XdgDirs::from_environment());
   auto s = load_chosen_settings(chosen);
   if (!s) return s.with_context("");
   const char* display = std::getenv("DISPLAY");

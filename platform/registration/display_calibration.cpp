@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
 #include "config/base/atomic_file.h"
+#include "platform/registration/csv_header.h"
 
 namespace lungar::platform {
 namespace {
@@ -49,6 +51,9 @@ void rq(const Eigen::Matrix3d& m, Eigen::Matrix3d& k, Eigen::Matrix3d& r) {
   }
 }
 
+/// An alignments file's columns, which its optional header names; the eye column holds words.
+const CsvColumns kAlignmentColumns{{"eye", "x_mm", "y_mm", "z_mm", "u_px", "v_px"}, {"left", "right"}};
+
 Error bad_line(const std::string& path, int line_no, const std::string& why) {
   return fail(path + ":" + std::to_string(line_no) + ": " + why);
 }
@@ -61,16 +66,15 @@ Result<std::array<std::vector<Alignment>, 2>> read_alignments_csv(const std::str
   std::array<std::vector<Alignment>, 2> eyes;
   std::string line;
   int line_no = 0;
-  bool header = false;
+  bool first = true;
   while (std::getline(in, line)) {
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
-    if (!header) {
-      if (line != "eye,x_mm,y_mm,z_mm,u_px,v_px")
-        return bad_line(path, line_no, "header: expected 'eye,x_mm,y_mm,z_mm,u_px,v_px', got '" + line + "'");
-      header = true;
-      continue;
+    if (std::exchange(first, false)) {
+      auto header = is_csv_header(line, kAlignmentColumns, path, line_no);
+      if (!header) return header.with_context("");
+      if (*header) continue;
     }
     std::stringstream fields(line);
     std::string eye, cell;
@@ -87,7 +91,9 @@ Result<std::array<std::vector<Alignment>, 2>> read_alignments_csv(const std::str
       return bad_line(path, line_no, "expected five finite numbers x_mm, y_mm, z_mm, u_px, v_px after the eye");
     eyes[eye == "left" ? 0 : 1].push_back({Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector2d(v[3], v[4])});
   }
-  if (!header) return fail(path + ": expected the header 'eye,x_mm,y_mm,z_mm,u_px,v_px' and alignments, got none");
+  if (eyes[0].empty() && eyes[1].empty()) {
+    return fail(path + ": expected alignments (" + kAlignmentColumns.header() + "), got none");
+  }
   return eyes;
 }
 

@@ -38,8 +38,8 @@ struct EyeCalibration {
   int alignments = 0;
 };
 
-/// Reads `eye,x_mm,y_mm,z_mm,u_px,v_px` (that header, then one alignment a line; eye left or right); the error
-/// names the file and the line.
+/// Reads `eye,x_mm,y_mm,z_mm,u_px,v_px` (one alignment a line, eye left or right, after an optional header naming
+/// those columns: csv_header.h); the error names the file and the line.
 Result<std::array<std::vector<Alignment>, 2>> read_alignments_csv(const std::string& path);
 
 /// Writes what read_alignments_csv() reads (the left eye's, then the right's; 0.001 mm and 0.01 px), whole or not

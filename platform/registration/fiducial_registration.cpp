@@ -4,16 +4,25 @@
 
 #include "config/base/atomic_file.h"
 #include "config/toml_writer.h"
+#include "platform/registration/csv_header.h"
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/Dense>
 
 namespace lungar::platform {
+
+namespace {
+
+/// A points file's columns, which its optional header names.
+const CsvColumns kPointColumns{{"x_mm", "y_mm", "z_mm"}, {}};
+
+}  // namespace
 
 Result<Registration> register_fiducials(const std::vector<Eigen::Vector3d>& model,
                                         const std::vector<Eigen::Vector3d>& tracked) {
@@ -64,10 +73,16 @@ Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path) {
   }
   out.clear();
   std::string line;
+  bool first = true;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (std::exchange(first, false)) {
+      auto header = is_csv_header(line, kPointColumns, path, line_no);
+      if (!header) return header.with_context("");
+      if (*header) continue;
+    }
     for (char& c : line) {
       if (c == ',') c = ' ';
     }

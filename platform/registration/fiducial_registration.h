@@ -36,7 +36,8 @@ struct StylusSample {
   Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();
 };
 
-/// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed. An error names file, line and field.
+/// Reads fiducial points, one "x, y, z" (mm) a line, '#' comments allowed, after an optional header
+/// "x_mm,y_mm,z_mm" (csv_header.h). An error names file, line and field.
 Result<std::vector<Eigen::Vector3d>> read_points_csv(const std::string& path);
 
 /// Writes the registration as the [registration] section of a lungar config, whole or not at all.

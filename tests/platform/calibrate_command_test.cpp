@@ -2,6 +2,8 @@
 // known pose, recorded as raw reports; the recovered model -> patient-tracker transform and its error must match.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,7 +14,9 @@
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_writer.h"
 #include "platform/app/calibrate_command.h"
+#include "platform/app/settings_load.h"
 #include "platform/registration/pivot_calibration.h"
+#include "tests/scratch_dir.h"
 
 using namespace lungar;
 
@@ -55,6 +59,9 @@ class PoseLogWriter {
   std::uint32_t ticks_ = 0;
 };
 
+/// A synthetic stylus whose sensor sits at its tip, said so (an offset nobody gives is refused as missing).
+const Eigen::Vector3d kTipAtTheSensor = Eigen::Vector3d::Zero();
+
 /// The model's fiducials as `lungar calibrate --model` reads them.
 void write_model_csv(const std::filesystem::path& path, const std::vector<Eigen::Vector3d>& model) {
   std::ofstream o(path);
@@ -96,7 +103,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   }
   log.commit();
 
-  auto touched = platform::stylus_points_from_log(log_path, "");
+  auto touched = platform::stylus_points_from_log(log_path, {}, kTipAtTheSensor);
   ASSERT_TRUE(touched) << touched.error();
   ASSERT_EQ(touched->size(), model.size());
   auto fitted = platform::register_fiducials(model, *touched);
@@ -114,6 +121,7 @@ TEST(CalibrateFromLog, StylusDwellsInALogGiveTheKnownRegistration) {
   o.model_csv = model_csv.string();
   o.stylus_log = log_path;
   o.out_path = (dir / "registration.toml").string();
+  o.stylus_tip_mm = kTipAtTheSensor;
   EXPECT_EQ(platform::run_calibrate(o), 0);
   EXPECT_TRUE(std::filesystem::exists(o.out_path));
   o.stylus_log = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/upright_to_supine.trk";
@@ -162,7 +170,7 @@ TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
   p.stylus_log = pivot_log;
   p.out_path = (dir / "tip.toml").string();
   ASSERT_EQ(platform::run_pivot(p), 0);
-  auto log = platform::stylus_poses_from_log(pivot_log, "");
+  auto log = platform::stylus_poses_from_log(pivot_log, {});
   ASSERT_TRUE(log) << log.error();
   auto fit = platform::fit_pivot(log->poses);
   ASSERT_TRUE(fit) << fit.error();
@@ -178,14 +186,14 @@ TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
   const std::vector<Eigen::Vector3d> model = {{-80, -150, -100}, {90, -140, -110}, {0, -230, -300}, {70, -90, -60}};
   const std::string touch_log = (dir / "touch.trk").string();
   record(touch_log, model, 50);  // the model frame is the patient frame here: the registration is the identity
-  auto at_tip = platform::stylus_points_from_log(touch_log, "", fit->tip_mm);
+  auto at_tip = platform::stylus_points_from_log(touch_log, {}, fit->tip_mm);
   ASSERT_TRUE(at_tip) << at_tip.error();
   ASSERT_EQ(at_tip->size(), model.size());
   auto r = platform::register_fiducials(model, *at_tip);
   ASSERT_TRUE(r) << r.error();
   EXPECT_LT(r->fre_rms_mm, 0.5);
   EXPECT_LT(r->translation_mm.norm(), 1.0);
-  auto at_origin = platform::stylus_points_from_log(touch_log, "");
+  auto at_origin = platform::stylus_points_from_log(touch_log, {}, kTipAtTheSensor);
   EXPECT_TRUE(!at_origin || at_origin->size() != model.size()) << "a tilting sensor 150 mm up the handle never dwells";
   // The file `calibrate pivot` wrote, given as --config, carries the tip into the registration command.
   const auto model_csv = dir / "model.csv";
@@ -193,10 +201,10 @@ TEST(CalibrateFromLog, PivotFindsTheTipAndTheRegistrationReadsTheStylusThere) {
   platform::CalibrateOptions c;
   c.model_csv = model_csv.string();
   c.stylus_log = touch_log;
-  c.config_path = p.out_path;
+  c.config_paths = {p.out_path};
   c.out_path = (dir / "registration.toml").string();
   EXPECT_EQ(platform::run_calibrate(c), 0);
-  c.config_path.clear();
+  c.config_paths.clear();
   c.out_path = (dir / "without-tip.toml").string();
   EXPECT_EQ(platform::run_calibrate(c), 2) << "without the tip the dwells are not found";
   EXPECT_FALSE(std::filesystem::exists(c.out_path));
@@ -258,7 +266,7 @@ TEST(CalibrateFromLog, APlusSequenceGivesTheKnownRegistration) {
     }
     o << "ElementDataFile = LOCAL\n";
   }
-  auto touched = platform::stylus_points_from_log(seq, "", tip);
+  auto touched = platform::stylus_points_from_log(seq, {}, tip);
   ASSERT_TRUE(touched) << touched.error();
   ASSERT_EQ(touched->size(), model.size());
   auto r = platform::register_fiducials(model, *touched);
@@ -267,4 +275,146 @@ TEST(CalibrateFromLog, APlusSequenceGivesTheKnownRegistration) {
   EXPECT_LT(r->rotation.angularDistance(reg_q), 1e-3);
   EXPECT_LT((r->translation_mm - reg_t).norm(), 0.05);
   std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+/// A stylus with its tip 150 mm down the handle from its sensor, tilting while its tip holds still on each target.
+struct TiltingStylus {
+  drivers::TrackerConfig trackers;
+  Eigen::Vector3d tip{2.0, -1.5, -150.0};  // stylus frame
+  Eigen::Quaterniond patient_q{Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())};
+  Eigen::Vector3d patient_p{-40.0, 300.0, 700.0};
+  std::mt19937 rng{17};
+
+  TiltingStylus() { trackers.stylus.enabled = true; }
+
+  /// A log of the tip held `hold` reports on each target (patient frame), the handle tilting about it.
+  void record(const std::string& path, const std::vector<Eigen::Vector3d>& targets, int hold) {
+    std::normal_distribution<double> noise(0.0, 0.1);
+    std::uniform_real_distribution<double> angle(-0.6, 0.6);
+    PoseLogWriter log;
+    log.open(trackers, path);
+    for (const Eigen::Vector3d& target : targets) {
+      for (int k = 0; k < hold; ++k, log.step()) {
+        const Eigen::Quaterniond q_rel(Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()) *
+                                       Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitY()));
+        const Eigen::Vector3d sensor = target - q_rel * tip + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+        log.emit(drivers::Role::Patient, patient_p, patient_q);
+        log.emit(drivers::Role::Stylus, patient_q * sensor + patient_p, patient_q * q_rel);
+      }
+    }
+    log.commit();
+  }
+};
+
+const std::vector<Eigen::Vector3d> kLandmarks = {{-80, -150, -100}, {90, -140, -110}, {0, -230, -300}, {70, -90, -60}};
+
+/// `lungar ARGS` from the build tree as a user's shell runs it (its XDG folders under `root`): stdout, stderr, rc.
+struct Ran {
+  int rc = -1;
+  std::string out, err;
+};
+Ran run_lungar(const std::string& args, const std::filesystem::path& root) {
+  const auto err = root / "stderr";
+  const std::string command = "HOME=" + root.string() + " XDG_CONFIG_HOME=" + (root / "config").string() +
+                              " XDG_STATE_HOME=" + (root / "state").string() +
+                              " XDG_CACHE_HOME=" + (root / "cache").string() + " " + LUNGAR_BINARY_DIR +
+                              "/platform/lungar " + args + " 2>" + err.string();
+  Ran r;
+  FILE* p = ::popen(command.c_str(), "r");
+  if (p == nullptr) return r;
+  for (int c; (c = std::fgetc(p)) != EOF;) r.out += static_cast<char>(c);
+  const int status = ::pclose(p);
+  r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(err);
+  r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
+  return r;
+}
+
+/// What follows `lead` on its line of `text`, "" when no line has it.
+std::string after(const std::string& text, const std::string& lead) {
+  const auto at = text.find(lead);
+  if (at == std::string::npos) return "";
+  const auto from = at + lead.size();
+  return text.substr(from, text.find('\n', from) - from);
+}
+
+}  // namespace
+
+// A stylus whose tip offset nobody gave (no pivot calibration passed on) is named as such, with the way to get it,
+// and not blamed on a landmark that no touch fits.
+TEST(CalibrateFromLog, AMissingStylusTipOffsetIsNamedAsSuchWithHowToFindIt) {
+  const lungar::testing::ScratchDir dir("lungar_calibrate_no_tip");
+  TiltingStylus stylus;
+  const std::string touches = (dir / "touches.trk").string();
+  stylus.record(touches, kLandmarks, 50);
+  const auto model_csv = dir / "model.csv";
+  write_model_csv(model_csv, kLandmarks);
+  const auto profile = dir / "profile.toml";
+  std::ofstream(profile) << "[render]\npoint_size_px = 3\n";
+  platform::CalibrateOptions c;
+  c.model_csv = model_csv.string();
+  c.stylus_log = touches;
+  c.config_paths = {profile.string()};
+  c.out_path = (dir / "registration.toml").string();
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(platform::run_calibrate(c), 2);
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(said, "lungar calibrate: " + touches +
+                      ": the stylus tip offset is missing: [trackers.stylus] tip_offset_mm is [0, 0, 0] (in " +
+                      profile.string() +
+                      "); find it with `lungar calibrate pivot --stylus-log pivot.trk --out stylus.toml`, then add "
+                      "`--config stylus.toml` here (or give --stylus-tip-mm x,y,z)\n");
+  EXPECT_FALSE(std::filesystem::exists(c.out_path));
+  // Said so, a tip at the sensor is taken (a synthetic stylus): the refusal is for the offset nobody gave.
+  auto at_sensor = platform::stylus_points_from_log(touches, {}, kTipAtTheSensor);
+  EXPECT_TRUE(at_sensor) << at_sensor.error();
+}
+
+// The three steps as a lab runs them, each reading the last one's output through one more --config, with the
+// commands each step prints run as printed: pivot -> registration -> the runtime (`lungar doctor` checks what it
+// would run). No file is edited by hand.
+TEST(CalibrationSteps, EachStepReadsTheLastOnesOutputThroughAnotherConfigAsItsHintSays) {
+  const lungar::testing::ScratchDir dir("lungar_calibration_steps");
+  TiltingStylus stylus;
+  const std::string pivot_log = (dir / "pivot.trk").string();
+  stylus.record(pivot_log, {Eigen::Vector3d(10.0, -20.0, 30.0)}, 200);
+  const std::string touches = (dir / "touches.trk").string();
+  stylus.record(touches, kLandmarks, 50);  // the model frame is the patient frame: the registration is the identity
+  const auto model_csv = dir / "model.csv";
+  write_model_csv(model_csv, kLandmarks);
+  std::filesystem::create_directories(dir / "lab");
+  const auto profile = dir / "lab/profile.toml";
+  std::ofstream(profile) << "[render]\npoint_size_px = 3\n\n[sim]\norientation_mode = \"paper_interp\"\n";
+
+  const Ran pivot = run_lungar("--config " + profile.string() + " calibrate pivot --stylus-log " + pivot_log +
+                                   " --out " + (dir / "stylus.toml").string(),
+                               dir.path());
+  ASSERT_EQ(pivot.rc, 0) << pivot.err;
+  std::string next = after(pivot.out, "the registration reads it: lungar ");
+  ASSERT_NE(next, "") << pivot.out;
+  EXPECT_EQ(next, "calibrate --model MODEL.csv --stylus-log TOUCHES.trk --config " + profile.string() + " --config " +
+                      (dir / "stylus.toml").string() + " --out registration.toml");
+  next.replace(next.find("MODEL.csv"), 9, model_csv.string());
+  next.replace(next.find("TOUCHES.trk"), 11, touches);
+  next.replace(next.find("registration.toml"), 17, (dir / "registration.toml").string());
+  const Ran registration = run_lungar(next, dir.path());
+  ASSERT_EQ(registration.rc, 0) << next << ": " << registration.err;
+
+  const std::string runtime = after(registration.out, "the runtime reads it: lungar ");
+  const std::vector<std::string> files = {profile.string(), (dir / "stylus.toml").string(),
+                                          (dir / "registration.toml").string()};
+  EXPECT_EQ(runtime, "--config " + files[0] + " --config " + files[1] + " --config " + files[2]) << registration.out;
+  const Ran doctor = run_lungar(runtime + " doctor", dir.path());
+  EXPECT_EQ(after(doctor.out, "ok    config   "), files[0] + " + " + files[1] + " + " + files[2] + " (--config)")
+      << doctor.out << doctor.err;
+
+  // What the runtime gets from the three: the profile's keys, the tip, the registration near the truth.
+  auto s = platform::load_settings(files);
+  ASSERT_TRUE(s) << s.error();
+  EXPECT_EQ(s->render.point_size_px, 3.0);
+  const auto& tip = s->trackers.stylus.tip_offset_mm;
+  EXPECT_LT((Eigen::Vector3d(tip[0], tip[1], tip[2]) - stylus.tip).norm(), 0.3);
+  EXPECT_LT(Eigen::Vector3d(s->registration.translation_mm.data()).norm(), 1.0);
 }

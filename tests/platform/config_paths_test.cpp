@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "config/config_paths.h"
 #include "platform/app/settings_load.h"
@@ -37,7 +38,7 @@ class ConfigPaths : public ::testing::Test {
 
 TEST_F(ConfigPaths, DefaultsWhenNoFileExistsAndTheLineSaysWhatWasLookedFor) {
   const auto choice = lungar::config::choose_config("", dirs);
-  EXPECT_TRUE(choice.path.empty());
+  EXPECT_TRUE(choice.paths.empty());
   const std::string line = choice.describe();
   EXPECT_NE(line.find("built-in defaults"), std::string::npos) << line;
   EXPECT_NE(line.find(dirs.home + "/.config/lungar/lungar.toml"), std::string::npos) << line;
@@ -50,7 +51,7 @@ TEST_F(ConfigPaths, DefaultsWhenNoFileExistsAndTheLineSaysWhatWasLookedFor) {
 TEST_F(ConfigPaths, SystemFileIsUsedWhenTheUserHasNone) {
   write_profile(root / "etc/lungar/lungar.toml", 61);
   const auto choice = lungar::config::choose_config("", dirs);
-  EXPECT_EQ(choice.path, (root / "etc/lungar/lungar.toml").string());
+  EXPECT_EQ(choice.paths, std::vector<std::string>{(root / "etc/lungar/lungar.toml").string()});
   auto s = lungar::platform::load_chosen_settings(choice);
   ASSERT_TRUE(s) << s.error();
   EXPECT_DOUBLE_EQ(s->hmd.ipd_mm, 61);
@@ -60,7 +61,7 @@ TEST_F(ConfigPaths, UserFileUnderDotConfigWinsOverTheSystemFile) {
   write_profile(root / "etc/lungar/lungar.toml", 61);
   write_profile(root / "home/.config/lungar/lungar.toml", 62);
   const auto choice = lungar::config::choose_config("", dirs);
-  EXPECT_EQ(choice.path, (root / "home/.config/lungar/lungar.toml").string());
+  EXPECT_EQ(choice.paths, std::vector<std::string>{(root / "home/.config/lungar/lungar.toml").string()});
   auto s = lungar::platform::load_chosen_settings(choice);
   ASSERT_TRUE(s) << s.error();
   EXPECT_DOUBLE_EQ(s->hmd.ipd_mm, 62);
@@ -71,7 +72,7 @@ TEST_F(ConfigPaths, XdgConfigHomeReplacesDotConfig) {
   write_profile(root / "xdg/lungar/lungar.toml", 64);
   dirs.config_home = (root / "xdg").string();
   const auto choice = lungar::config::choose_config("", dirs);
-  EXPECT_EQ(choice.path, (root / "xdg/lungar/lungar.toml").string());
+  EXPECT_EQ(choice.paths, std::vector<std::string>{(root / "xdg/lungar/lungar.toml").string()});
   EXPECT_NE(choice.describe().find("$XDG_CONFIG_HOME"), std::string::npos) << choice.describe();
 }
 
@@ -79,7 +80,7 @@ TEST_F(ConfigPaths, CommandLineWinsEvenOverAnExistingUserFile) {
   write_profile(root / "home/.config/lungar/lungar.toml", 62);
   write_profile(root / "mine.toml", 66);
   const auto choice = lungar::config::choose_config((root / "mine.toml").string(), dirs);
-  EXPECT_EQ(choice.path, (root / "mine.toml").string());
+  EXPECT_EQ(choice.paths, std::vector<std::string>{(root / "mine.toml").string()});
   auto s = lungar::platform::load_chosen_settings(choice);
   ASSERT_TRUE(s) << s.error();
   EXPECT_DOUBLE_EQ(s->hmd.ipd_mm, 66);

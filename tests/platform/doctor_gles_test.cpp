@@ -109,7 +109,7 @@ TEST(DoctorGles, TheOptionsGivenAreCheckedNotTheSettingsFiles) {
   const fs::path profile = root / "headless.toml";
   std::ofstream(profile) << "[display]\noutput = \"headless\"\n[trackers]\nsource = \"mock\"\n";
   lungar::platform::RuntimeOptions o;
-  o.config_path = profile.string();
+  o.config_paths = {profile.string()};
   o.tracker = "hid";
   o.asset_path = "/nonexistent.lungbake";
   o.sync = "trainee";

@@ -10,7 +10,7 @@
 namespace lungar::platform::doctor {
 
 std::vector<Check> run_checks(const RuntimeOptions& o, const DoctorEnv& env) {
-  const config::ConfigChoice choice = config::choose_config(o.config_path, env.xdg);
+  const config::ConfigChoice choice = config::choose_config(o.config_paths, env.xdg);
   const Result<Settings> loaded = load_chosen_settings(choice);
   // A settings file that does not parse fails its check; the others still run, on the defaults.
   Settings s = loaded ? *loaded : Settings{};
@@ -31,7 +31,7 @@ std::vector<Check> run_checks(const RuntimeOptions& o, const DoctorEnv& env) {
 
 std::vector<Check> run_checks(const std::string& config_path, const DoctorEnv& env) {
   RuntimeOptions o;
-  o.config_path = config_path;
+  if (!config_path.empty()) o.config_paths = {config_path};
   return run_checks(o, env);
 }
 

@@ -12,7 +12,7 @@
 namespace lungar::platform::doctor {
 
 /// Every check, in the order a lab engineer fixes things: config, graphics, output, tracker, asset, disk; against
-/// the settings the runtime would run with these options (`o.config_path`'s file, then the options given on the
+/// the settings the runtime would run with these options (`o.config_paths`' files, then the options given on the
 /// command line over it, as the runtime applies them). An option the runtime would refuse is a failed check first.
 std::vector<Check> run_checks(const RuntimeOptions& o, const DoctorEnv& env);
 /// The same with no option but the settings file.

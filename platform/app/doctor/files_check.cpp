@@ -3,6 +3,7 @@
 /// disk holding snapshots, stats and recordings has room.
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -39,11 +40,13 @@ std::string asset_summary(const sim::BakedAsset& a) {
 }  // namespace
 
 Check check_config(const config::ConfigChoice& choice, const Result<Settings>& loaded) {
-  const std::string where = choice.path.empty() ? "built-in defaults" : choice.path;
+  const std::string where = choice.files();
   std::error_code ec;
-  if (!loaded && !fs::exists(choice.path, ec)) {
+  const bool one_missing =
+      std::any_of(choice.paths.begin(), choice.paths.end(), [&](const std::string& p) { return !fs::exists(p, ec); });
+  if (!loaded && one_missing) {
     return failed("config", loaded.error(),
-                  "give --config an existing file, or none to use " +
+                  "give each --config an existing file, or none to use " +
                       std::string("~/.config/lungar/lungar.toml or /etc/lungar/lungar.toml"));
   }
   if (!loaded) {

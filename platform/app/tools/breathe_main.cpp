@@ -242,12 +242,15 @@ int main(int argc, char** argv) {
       "share of the end-inhale -> half-a-breath-later volume path covered at 10, 20, 30, 40 % of the breath) beside\n"
       "4-D CT's, the measured tidal volume and the equation of motion's R, C, tau and muscle-pressure peak."};
   app.set_version_flag("--version", std::string("lungar-breathe ") + LUNGAR_VERSION);
-  std::string config_path, scenario_path;
+  std::vector<std::string> config_paths;
+  std::string scenario_path;
   std::optional<std::string> preset;
   std::optional<double> rate, tidal, ie, seconds;
   double dt = 0.01;
   bool curves = false, presets = false, exhale_path = false;
-  app.add_option("--config", config_path, "settings TOML: its [breathing] (and its scenario, if set)");
+  app.add_option("--config", config_paths,
+                 "settings TOML, repeatable (later over earlier): its [breathing] (and its scenario, if set)")
+      ->allow_extra_args(false);
   app.add_option("--scenario", scenario_path, "scenario TOML (config/scenarios/*.toml); overrides the config's");
   app.add_option("--preset", preset, "normal | emphysema | fibrosis (with a scenario: the default of its [start])");
   app.add_option("--rate", rate, "breaths per minute [2, 60]");
@@ -275,8 +278,8 @@ int main(int argc, char** argv) {
   }
 
   platform::Settings settings;
-  if (!config_path.empty()) {
-    auto loaded = platform::load_settings(config_path);
+  if (!config_paths.empty()) {
+    auto loaded = platform::load_settings(config_paths);
     if (!loaded) return fail_with(loaded.error());
     settings = *loaded;
   }

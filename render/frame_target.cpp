@@ -2,6 +2,8 @@
 /// @brief Off-screen framebuffer set-up and read-back.
 #include "render/frame_target.h"
 
+#include <GLES3/gl3.h>
+
 #include <algorithm>
 #include <string>
 

@@ -19,8 +19,8 @@ class FrameTarget {
   void bind() const;  ///< as the draw and read framebuffer, viewport on the whole target
   int width() const { return width_; }
   int height() const { return height_; }
-  GLuint framebuffer() const { return framebuffer_.id(); }
-  GLuint color_texture() const { return color_.id(); }
+  std::uint32_t framebuffer() const { return framebuffer_.id(); }
+  std::uint32_t color_texture() const { return color_.id(); }
 
  private:
   FrameTarget() = default;

@@ -1,11 +1,12 @@
 /// @file gl_objects.h
-/// @brief Move-only RAII owners of GLES 3 object names (buffers, vertex arrays, textures, framebuffers, ...).
+/// @brief Move-only RAII owners of GLES 3 object names (buffers, vertex arrays, textures, framebuffers, ...), held
+/// without the GL header: a name is a std::uint32_t (GLuint), and making and deleting one happen in gl_objects.cpp.
+/// So the render headers that keep such owners as members do not hand GL to the rest of the program.
 ///
 /// Each owner deletes its name on destruction; the GL context that created it must be current then.
 #pragma once
 
-#include <GLES3/gl3.h>
-
+#include <cstdint>
 #include <initializer_list>
 #include <utility>
 
@@ -13,47 +14,42 @@
 
 namespace lungar::render::gl {
 
-/// One owned GL object id, released by `Free` when the owner is destroyed or reset; move-only.
-template <void (*Free)(GLuint)>
-class Owned : public UniqueHandle<GLuint, Free> {
- public:
-  using UniqueHandle<GLuint, Free>::UniqueHandle;
-  GLuint id() const { return this->get(); }
-};
+/// The kinds of GL object an owner holds, each with its own glGen*/glDelete* (glCreateProgram/glDeleteProgram).
+enum class Kind { Buffer, VertexArray, Texture, Framebuffer, Renderbuffer, TransformFeedback, Program };
 
-/// Frees one name made by glGen*: the glDelete* of the same kind, for a count of one.
-template <void (*Delete)(GLsizei, const GLuint*)>
-void delete_one(GLuint id) {
-  Delete(1, &id);
+/// Makes one name of `kind`; needs a current context.
+std::uint32_t generate(Kind kind);
+/// Deletes one name of `kind`.
+void release(Kind kind, std::uint32_t id);
+
+template <Kind K>
+void release_one(std::uint32_t id) {
+  release(K, id);
 }
 
-/// One GL name of a glGen*/glDelete* kind.
-template <void (*Gen)(GLsizei, GLuint*), void (*Delete)(GLsizei, const GLuint*)>
-class Name : public Owned<delete_one<Delete>> {
+/// One owned GL name of kind K, deleted when the owner is destroyed or reset; move-only.
+template <Kind K>
+class Name : public UniqueHandle<std::uint32_t, release_one<K>> {
  public:
-  using Owned<delete_one<Delete>>::Owned;
-  static Name create() {
-    GLuint id = 0;
-    Gen(1, &id);
-    return Name(id);
-  }
+  using UniqueHandle<std::uint32_t, release_one<K>>::UniqueHandle;
+  static Name create() { return Name(generate(K)); }
+  std::uint32_t id() const { return this->get(); }
 };
 
-// The GL entry points are functions in libGLESv2 (no loader), so their addresses are constant expressions.
-using Buffer = Name<glGenBuffers, glDeleteBuffers>;
-using VertexArray = Name<glGenVertexArrays, glDeleteVertexArrays>;
-using Texture = Name<glGenTextures, glDeleteTextures>;
-using Framebuffer = Name<glGenFramebuffers, glDeleteFramebuffers>;
-using Renderbuffer = Name<glGenRenderbuffers, glDeleteRenderbuffers>;
-using TransformFeedback = Name<glGenTransformFeedbacks, glDeleteTransformFeedbacks>;
+using Buffer = Name<Kind::Buffer>;
+using VertexArray = Name<Kind::VertexArray>;
+using Texture = Name<Kind::Texture>;
+using Framebuffer = Name<Kind::Framebuffer>;
+using Renderbuffer = Name<Kind::Renderbuffer>;
+using TransformFeedback = Name<Kind::TransformFeedback>;
 
-/// A linked program; deleted with glDeleteProgram.
-class Program : public Owned<glDeleteProgram> {
+/// A linked program; its uniforms are found by name (a location, GLint; -1 for none).
+class Program : public Name<Kind::Program> {
  public:
-  using Owned::Owned;
-  GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+  using Name::Name;
+  std::int32_t uniform(const char* name) const;
   /// Looks up each (slot, name) pair: -1 where the program has no such active uniform.
-  void find_uniforms(std::initializer_list<std::pair<GLint*, const char*>> slots) const {
+  void find_uniforms(std::initializer_list<std::pair<std::int32_t*, const char*>> slots) const {
     for (const auto& [slot, name] : slots) *slot = uniform(name);
   }
 };

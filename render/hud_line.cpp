@@ -2,6 +2,8 @@
 /// @brief The 3x5 font and the blit of the status line.
 #include "render/hud_line.h"
 
+#include <GLES3/gl3.h>
+
 #include <cctype>
 #include <cstring>
 

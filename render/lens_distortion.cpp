@@ -2,6 +2,8 @@
 /// @brief The lens pass: one full-viewport triangle per eye through lens.frag.
 #include "render/lens_distortion.h"
 
+#include <GLES3/gl3.h>
+
 #include <cmath>
 
 #include "lungar/render/shaders.h"

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 
 #include "config/base/result.h"
@@ -34,7 +35,7 @@ class LensDistortion {
   LensDistortion() = default;
   gl::Program program_;
   gl::VertexArray empty_vao_;  // the full-screen triangle comes from gl_VertexID
-  GLint image_ = -1, rect_ = -1, centre_ = -1, aspect_ = -1, k1_ = -1, k2_ = -1;
+  std::int32_t image_ = -1, rect_ = -1, centre_ = -1, aspect_ = -1, k1_ = -1, k2_ = -1;
 };
 
 }  // namespace lungar::render

@@ -2,6 +2,8 @@
 /// @brief Validation and upload of a baked asset into GL buffers.
 #include "render/lung_drawable.h"
 
+#include <GLES3/gl3.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -10,28 +10,12 @@
 
 #include <glm/vec3.hpp>
 
-#include "config/base/enum_names.h"
 #include "config/base/result.h"
+#include "render/drawable_options.h"
 #include "render/gl_objects.h"
 #include "sim/asset/baked_asset.h"
 
 namespace lungar::render {
-
-/// Which per-vertex coefficient field the shader dots with the force: the SH field of eq. (7) (L^2 values) or the
-/// exact linear basis (4 values: tau0, tau_x, tau_y, tau_z; docs/design.md, The exact linear basis).
-enum class Basis { SphericalHarmonics, Linear };
-/// Where the coefficients live: vertex attributes (up to 36 coefficients), or a float texture read by gl_VertexID.
-enum class CoeffStorage { Auto, Attributes, Texture };
-inline constexpr EnumNames<CoeffStorage, 3> kCoeffStorageNames{{{{CoeffStorage::Auto, "auto"},
-                                                                 {CoeffStorage::Attributes, "attributes"},
-                                                                 {CoeffStorage::Texture, "texture"}}}};
-inline const char* to_string(CoeffStorage v) { return kCoeffStorageNames.name(v); }
-
-struct DrawableOptions {
-  Basis basis = Basis::SphericalHarmonics;
-  CoeffStorage storage = CoeffStorage::Auto;  ///< Auto: see coefficients_in_texture()
-  bool half_float = false;                     ///< coefficients as 16-bit floats (half the memory traffic)
-};
 
 /// One lung's share of the vertex array, with what level of detail needs.
 struct LungRange {
@@ -83,12 +67,12 @@ class LungDrawable {
   Status upload_positions(std::span<const float> xyz);
 
   // For the renderer (same folder): vertex arrays that read rest or deformed positions.
-  GLuint rest_vao() const { return rest_vao_.id(); }
-  GLuint rest_plain_vao() const { return rest_plain_vao_.id(); }  ///< rest positions and normals only
-  GLuint deformed_vao() const { return deformed_vao_.id(); }
-  GLuint deformed_buffer() const { return deformed_.id(); }
-  GLuint coeff_texture() const { return coeff_texture_.id(); }
-  GLint coeff_texture_width() const { return coeff_texture_width_; }
+  std::uint32_t rest_vao() const { return rest_vao_.id(); }
+  std::uint32_t rest_plain_vao() const { return rest_plain_vao_.id(); }  ///< rest positions and normals only
+  std::uint32_t deformed_vao() const { return deformed_vao_.id(); }
+  std::uint32_t deformed_buffer() const { return deformed_.id(); }
+  std::uint32_t coeff_texture() const { return coeff_texture_.id(); }
+  std::int32_t coeff_texture_width() const { return coeff_texture_width_; }
 
  private:
   LungDrawable() = default;
@@ -106,7 +90,7 @@ class LungDrawable {
   std::vector<LungRange> lungs_;
   gl::Buffer positions_, normals_, directions_, off_axis_, coeffs_, indices_, deformed_;
   gl::Texture coeff_texture_;
-  GLint coeff_texture_width_ = 0;
+  std::int32_t coeff_texture_width_ = 0;
   gl::VertexArray rest_vao_, rest_plain_vao_, deformed_vao_;
 };
 

@@ -2,6 +2,8 @@
 /// @brief Frame drawing: program variants, the transform-feedback deformation pass, per-eye point and mesh draws.
 #include "render/renderer.h"
 
+#include <GLES3/gl3.h>
+
 #include <algorithm>
 #include <string>
 
@@ -139,7 +141,7 @@ void Renderer::deform_once(const LungDrawable& drawable, std::span<const LungFra
   glDisable(GL_RASTERIZER_DISCARD);
 }
 
-void Renderer::draw_lungs(const LungDrawable& drawable, Variant v, GLuint vao, const FrameInputs& f,
+void Renderer::draw_lungs(const LungDrawable& drawable, Variant v, std::uint32_t vao, const FrameInputs& f,
                           const EyeView& eye, std::span<const std::uint32_t> counts, bool rest_overlay) {
   glViewport(eye.viewport.x, eye.viewport.y, eye.viewport.width, eye.viewport.height);
   use(drawable, v);

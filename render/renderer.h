@@ -12,28 +12,13 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "config/base/enum_names.h"
 #include "config/base/result.h"
-#include "render/frame_target.h"
+#include "render/draw_modes.h"
+#include "render/gl_objects.h"
 #include "render/lung_drawable.h"
 #include "render/stereo_view.h"
 
 namespace lungar::render {
-
-enum class DrawMode { Points, Mesh };
-/// PerEye: each eye's draw evaluates eq. (7) (the paper's way; measured faster, so the default: docs/measurements.md).
-/// DeformOnce: one transform-feedback pass writes the deformed points into a buffer, then both eyes draw it.
-enum class StereoStrategy { PerEye, DeformOnce };
-/// Where the drawn positions come from: eq. (7) in the shader, positions uploaded from the CPU
-/// (LungDrawable::upload_positions), or the rest shape.
-enum class PositionSource { Shader, Uploaded, Rest };
-
-/// The names TOML, the command line and logs give them.
-inline constexpr EnumNames<DrawMode, 2> kDrawModeNames{{{{DrawMode::Points, "points"}, {DrawMode::Mesh, "mesh"}}}};
-inline constexpr EnumNames<StereoStrategy, 2> kStereoStrategyNames{
-    {{{StereoStrategy::PerEye, "per_eye"}, {StereoStrategy::DeformOnce, "deform_once"}}}};
-inline const char* to_string(DrawMode v) { return kDrawModeNames.name(v); }
-inline const char* to_string(StereoStrategy v) { return kStereoStrategyNames.name(v); }
 
 /// Per lung, per frame.
 struct LungFrame {
@@ -97,8 +82,8 @@ class Renderer {
  private:
   struct Slots {
     gl::Program program;
-    GLint force = -1, linear = -1, volume = -1, sweep_ml = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1,
-          color = -1, ambient = -1, point_size = -1, sweep_scale = -1;
+    std::int32_t force = -1, linear = -1, volume = -1, sweep_ml = -1, coeff = -1, coeff_width = -1, mvp = -1, eye = -1,
+                 color = -1, ambient = -1, point_size = -1, sweep_scale = -1;
   };
   enum Variant { kDeformCull, kDeformNoCull, kPlainCull, kPlainNoCull, kCapture, kVariants };
 
@@ -109,7 +94,7 @@ class Renderer {
   void set_eye(Variant v, const glm::mat4& model, const EyeView& eye, const glm::vec3& color, const FrameInputs& f) const;
   void deform_once(const LungDrawable& drawable, std::span<const LungFrame> lungs,
                    std::span<const std::uint32_t> counts);
-  void draw_lungs(const LungDrawable& drawable, Variant v, GLuint vao, const FrameInputs& f, const EyeView& eye,
+  void draw_lungs(const LungDrawable& drawable, Variant v, std::uint32_t vao, const FrameInputs& f, const EyeView& eye,
                   std::span<const std::uint32_t> counts, bool rest_overlay);
 
   std::uint32_t coeff_vec4_ = 0;

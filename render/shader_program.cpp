@@ -2,6 +2,8 @@
 /// @brief GLSL compile and link with readable errors.
 #include "render/shader_program.h"
 
+#include <GLES3/gl3.h>
+
 namespace lungar::render {
 namespace {
 

@@ -2,6 +2,8 @@
 /// @brief The legend's ramp texture, its label and the blits.
 #include "render/ventilation_legend.h"
 
+#include <GLES3/gl3.h>
+
 #include <array>
 #include <cmath>
 #include <cstdint>

@@ -16,7 +16,7 @@
 #include "platform/output/output_settings.h"
 #include "platform/runtime/runtime_config.h"
 #include "platform/sync/sync_settings.h"
-#include "render/renderer.h"
+#include "render/draw_modes.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::platform {

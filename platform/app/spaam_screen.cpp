@@ -2,33 +2,24 @@
 /// @brief The crosshair and the prompt by scissored clears and the status line (spaam_screen.h).
 #include "platform/app/spaam_screen.h"
 
-#include <GLES3/gl3.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "render/scissor_fill.h"
 
 namespace lungar::platform {
 
 namespace {
 
-/// Fills the rectangle (GL's pixels, from the bottom-left) clipped to `clip` with the current clear colour.
-void fill(int x, int y, int width, int height, const render::Viewport& clip) {
-  const int x0 = std::max(x, clip.x), y0 = std::max(y, clip.y);
-  const int x1 = std::min(x + width, clip.x + clip.width), y1 = std::min(y + height, clip.y + clip.height);
-  if (x1 <= x0 || y1 <= y0) return;
-  glScissor(x0, y0, x1 - x0, y1 - y0);
-  glClear(GL_COLOR_BUFFER_BIT);
-}
-
 /// One pixel wide within kCrosshairFinePx of the centre (the point to aim at stays one pixel), three outside it.
-void crosshair(const Eigen::Vector2i& c, const render::Viewport& clip) {
+void crosshair(const render::ScissorFill& fill, const Eigen::Vector2i& c, const render::Viewport& clip) {
   constexpr int a = kCrosshairArmPx, f = kCrosshairFinePx;
-  fill(c.x() - f, c.y(), 2 * f + 1, 1, clip);
-  fill(c.x(), c.y() - f, 1, 2 * f + 1, clip);
-  fill(c.x() - a, c.y() - 1, a - f, 3, clip);
-  fill(c.x() + f + 1, c.y() - 1, a - f, 3, clip);
-  fill(c.x() - 1, c.y() - a, 3, a - f, clip);
-  fill(c.x() - 1, c.y() + f + 1, 3, a - f, clip);
+  fill.fill({c.x() - f, c.y(), 2 * f + 1, 1}, clip);
+  fill.fill({c.x(), c.y() - f, 1, 2 * f + 1}, clip);
+  fill.fill({c.x() - a, c.y() - 1, a - f, 3}, clip);
+  fill.fill({c.x() + f + 1, c.y() - 1, a - f, 3}, clip);
+  fill.fill({c.x() - 1, c.y() - a, 3, a - f}, clip);
+  fill.fill({c.x() - 1, c.y() + f + 1, 3, a - f}, clip);
 }
 
 }  // namespace
@@ -42,15 +33,13 @@ Eigen::Vector2i spaam_framebuffer_pixel(const render::Viewport& viewport, int ey
 
 void SpaamScreen::draw(const std::array<render::Viewport, 2>& viewports, int eye, int eye_width_px, int eye_height_px,
                        const Eigen::Vector2d& pixel, const std::array<std::string, 4>& lines) {
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glEnable(GL_SCISSOR_TEST);
-  glClearColor(0.f, 0.f, 0.f, 1.f);
-  for (const render::Viewport& v : viewports) fill(v.x, v.y, v.width, v.height, v);
   const render::Viewport& v = viewports[static_cast<std::size_t>(eye)];
-  glClearColor(0.f, 1.f, 0.f, 1.f);
-  crosshair(spaam_framebuffer_pixel(v, eye_width_px, eye_height_px, pixel), v);
-  glDisable(GL_SCISSOR_TEST);
+  {
+    render::ScissorFill fill;  // black, then the crosshair in green
+    for (const render::Viewport& each : viewports) fill.fill(each, each);
+    fill.colour({0.f, 1.f, 0.f});
+    crosshair(fill, spaam_framebuffer_pixel(v, eye_width_px, eye_height_px, pixel), v);
+  }
   std::size_t longest = 0;
   for (const std::string& line : lines) longest = std::max(longest, line.size());
   const int scale = static_cast<int>(longest) * render::HudLine::kCellW * 2 + 8 <= v.width ? 2 : 1;

@@ -242,12 +242,22 @@ bool EglContext::process_events() {
   return open_;
 }
 
+namespace {
+
+std::string gl_text(GLenum name) {
+  const auto* s = reinterpret_cast<const char*>(glGetString(name));
+  return s != nullptr ? s : "?";
+}
+
+}  // namespace
+
 std::string EglContext::describe() const {
-  auto text = [](GLenum name) {
-    const auto* s = reinterpret_cast<const char*>(glGetString(name));
-    return std::string(s != nullptr ? s : "?");
-  };
-  return "EGL " + platform_ + ", " + text(GL_VENDOR) + ", " + text(GL_RENDERER) + ", " + text(GL_VERSION);
+  return "EGL " + platform_ + ", " + gl_text(GL_VENDOR) + ", " + gl_text(GL_RENDERER) + ", " + gl_text(GL_VERSION);
+}
+
+EglContext::Versions EglContext::versions() const {
+  const char* egl = eglQueryString(static_cast<EGLDisplay>(display_), EGL_VERSION);
+  return {egl != nullptr ? egl : "?", gl_text(GL_VERSION), gl_text(GL_RENDERER)};
 }
 
 }  // namespace lungar::platform

@@ -52,6 +52,11 @@ class EglContext {
   std::string take_keys() { return std::exchange(keys_, {}); }
   /// "EGL platform, GL_VENDOR, GL_RENDERER, GL_VERSION", for logs.
   std::string describe() const;
+  /// What `lungar doctor` reports of the context: EGL_VERSION, GL_VERSION and GL_RENDERER ("?" where one is missing).
+  struct Versions {
+    std::string egl, gl, renderer;
+  };
+  Versions versions() const;
   /// The EGLDisplay, EGLConfig and EGLContext, for a runtime that takes the context (OpenXR's XR_MNDX_egl_enable).
   void* egl_display() const { return display_; }
   void* egl_config() const { return config_; }

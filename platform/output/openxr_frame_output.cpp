@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "platform/openxr/openxr_output.h"
 #include "platform/runtime/gl_math.h"
 #include "render/png_snapshot.h"
 
@@ -20,8 +21,7 @@ constexpr std::int64_t kMaxIdleWaitNs = 100'000'000;
 // At exit: how long the runtime has to go through STOPPING and EXITING.
 constexpr int kMaxExitFrames = 40;
 
-}  // namespace
-
+/// The OpenXR options the settings give (reference space, clip planes, the reference space's registration).
 openxr::OpenXrOptions openxr_options(const DisplaySettings& display, const HmdSettings& hmd,
                                      const glm::mat4& world_from_space) {
   openxr::OpenXrOptions o;
@@ -32,6 +32,11 @@ openxr::OpenXrOptions openxr_options(const DisplaySettings& display, const HmdSe
   o.world_from_space = world_from_space;
   return o;
 }
+
+}  // namespace
+
+OpenXrFrameOutput::OpenXrFrameOutput(std::unique_ptr<EglContext> context, bool tracker_head)
+    : context_(std::move(context)), tracker_head_(tracker_head) {}
 
 Result<std::unique_ptr<OpenXrFrameOutput>> OpenXrFrameOutput::create(const DisplaySettings& display,
                                                                      const HmdSettings& hmd,
@@ -58,6 +63,10 @@ OpenXrFrameOutput::~OpenXrFrameOutput() {
     if (!timing || !xr_->end_frame()) return;
   }
 }
+
+bool OpenXrFrameOutput::poll_events() { return !xr_->exited(); }
+
+std::array<int, 2> OpenXrFrameOutput::target_size() const { return {xr_->view_width(), xr_->view_height()}; }
 
 std::string OpenXrFrameOutput::describe() const {
   const openxr::RuntimeInfo& r = xr_->runtime();

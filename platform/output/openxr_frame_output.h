@@ -3,6 +3,8 @@
 /// openxr::OpenXrOutput. xrWaitFrame paces the frame and says when it is shown; the views are the runtime's
 /// (display.openxr.head = "openxr", placed in the world by registration.xr_space_*) or lungar's head tracker's
 /// with the runtime's eye offsets ("tracker"); each view has its own target, a swapchain image.
+/// The OpenXR back-end stays behind this header (forward-declared, its headers bring EGL and GLES): the wiring that
+/// picks the output sees only a FrameOutput.
 /// @ingroup platform
 #pragma once
 
@@ -11,16 +13,17 @@
 #include <string>
 #include <vector>
 
-#include "platform/output/output_settings.h"
+#include <glm/mat4x4.hpp>
+
 #include "platform/egl/egl_context.h"
-#include "platform/openxr/openxr_output.h"
+#include "platform/output/output_settings.h"
 #include "platform/runtime/frame_output.h"
 
 namespace lungar::platform {
 
-/// The OpenXR options the settings give (reference space, clip planes, the reference space's registration).
-openxr::OpenXrOptions openxr_options(const DisplaySettings& display, const HmdSettings& hmd,
-                                     const glm::mat4& world_from_space);
+namespace openxr {
+class OpenXrOutput;
+}
 
 class OpenXrFrameOutput final : public FrameOutput {
  public:
@@ -34,11 +37,11 @@ class OpenXrFrameOutput final : public FrameOutput {
   ~OpenXrFrameOutput() override;
 
   std::string describe() const override;
-  bool poll_events() override { return !xr_->exited(); }
+  bool poll_events() override;
   Result<FrameTiming> begin_frame(std::int64_t now_ns) override;
   const FrameViews& views(const glm::mat4& head_to_world) override;
   void bind_target(std::size_t i) override;
-  std::array<int, 2> target_size() const override { return {xr_->view_width(), xr_->view_height()}; }
+  std::array<int, 2> target_size() const override;
   Status end_frame() override;
   /// Both views side by side, as the headless output's stereo snapshot.
   Status snapshot(const std::string& png_path) override;
@@ -47,8 +50,7 @@ class OpenXrFrameOutput final : public FrameOutput {
   openxr::OpenXrOutput& xr() { return *xr_; }
 
  private:
-  OpenXrFrameOutput(std::unique_ptr<EglContext> context, bool tracker_head)
-      : context_(std::move(context)), tracker_head_(tracker_head) {}
+  OpenXrFrameOutput(std::unique_ptr<EglContext> context, bool tracker_head);
   std::unique_ptr<EglContext> context_;
   std::unique_ptr<openxr::OpenXrOutput> xr_;
   bool tracker_head_ = false;

@@ -2,8 +2,6 @@
 /// @brief The frame, as docs/design.md's five steps ("One frame"), and what they need sized once.
 #include "platform/runtime/runtime.h"
 
-#include <GLES3/gl3.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>

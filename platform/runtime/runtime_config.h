@@ -13,7 +13,7 @@
 
 #include "config/base/enum_names.h"
 #include "drivers/pose/pose_sample.h"
-#include "render/renderer.h"
+#include "render/draw_modes.h"
 #include "sim/force/force_sh.h"
 
 namespace lungar::platform {

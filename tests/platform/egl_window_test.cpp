@@ -2,6 +2,7 @@
 /// @brief The X11 output: a window with an EGL surface at a configured position shows the lungs. Needs an X server
 /// ($DISPLAY, e.g. `Xvfb :99 &` then DISPLAY=:99); skipped without one. The headless context is covered by every
 /// GL test.
+#include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>

@@ -1,5 +1,6 @@
 /// @file deform_shader_test.cpp
 /// @brief The vertex shader's eq. (7), captured by transform feedback, against CPU eq. (7) on random forces.
+#include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
 #include <cmath>

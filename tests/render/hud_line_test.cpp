@@ -1,4 +1,5 @@
 // The status line: glyphs rasterise as drawn, and the blit lands in the top-left corner of the viewport.
+#include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
 #include <vector>

@@ -1,5 +1,6 @@
 /// @file lens_distortion_test.cpp
 /// @brief The lens pass: identity at k = 0, barrel pre-distortion shrinks the picture, per-channel k fringes colour.
+#include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
 #include "render/lens_distortion.h"

@@ -1,5 +1,6 @@
 // The ventilation map's legend: the ramp runs from the map's zero colour on the left to its full-scale colour on the
 // right, in the bottom-left corner of the viewport, with its label above it.
+#include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
 #include <cmath>

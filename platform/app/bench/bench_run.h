@@ -8,7 +8,8 @@
 #include <set>
 #include <string>
 #include <vector>
-#include "render/lung_drawable.h"
+
+#include "render/drawable_options.h"
 
 namespace lungar::platform::bench {
 

@@ -1,8 +1,5 @@
 /// @file gles_check.cpp
 /// @brief The graphics check: a headless EGL context, its EGL and OpenGL ES versions and the renderer.
-#include <EGL/egl.h>
-#include <GLES3/gl3.h>
-
 #include <cstdio>
 #include <string>
 
@@ -12,11 +9,6 @@
 namespace lungar::platform::doctor {
 
 namespace {
-
-std::string gl_text(GLenum name) {
-  const auto* s = reinterpret_cast<const char*>(glGetString(name));
-  return s != nullptr ? s : "?";
-}
 
 /// Mesa's and Google's CPU rasterisers: everything runs, but on the CPU cores the tracker and the frame loop share.
 const char* software_renderer(const std::string& renderer) {
@@ -35,13 +27,11 @@ Check check_gles() {
                   "install Mesa's EGL and GLES drivers (sudo apt install libegl-mesa0 libgles2 libgl1-mesa-dri) or the "
                   "GPU vendor's EGL driver");
   }
-  const char* egl = eglQueryString(eglGetCurrentDisplay(), EGL_VERSION);
-  const std::string version = gl_text(GL_VERSION);
-  const std::string renderer = gl_text(GL_RENDERER);
+  const EglContext::Versions v = (*context)->versions();
+  const std::string& renderer = v.renderer;
   int major = 0, minor = 0;
-  std::sscanf(version.c_str(), "OpenGL ES %d.%d", &major, &minor);
-  const std::string detail =
-      "EGL " + std::string(egl != nullptr ? egl : "?") + ", " + version + ", renderer " + renderer;
+  std::sscanf(v.gl.c_str(), "OpenGL ES %d.%d", &major, &minor);
+  const std::string detail = "EGL " + v.egl + ", " + v.gl + ", renderer " + renderer;
   if (major < 3) {
     return failed("gles", detail + ": expected OpenGL ES 3.0 or later",
                   "use a GPU and driver with OpenGL ES 3.0 (Mesa 10.x or later; sudo apt install libgl1-mesa-dri)");

@@ -48,7 +48,7 @@ Result<TrackerConfig> settings_for(const TrkLog& log, const std::string& file,
 /// an OpenIGTLink message with one or more poses), decoded with the log's own layout; "" when it has none.
 std::string sensor_rates(const TrkLog& log, const std::string& file) {
   if (log.header.layout_toml.empty()) return "";
-  auto settings = settings_for(log, file, "");
+  auto settings = settings_for(log, file, {});
   if (!settings) return "";
   auto layout = make_layout(*settings);
   auto igtl_layout = make_igtl_layout(*settings);

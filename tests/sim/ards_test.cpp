@@ -14,19 +14,18 @@
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/motion_figures.h"
 #include "sim/pathology/pathology.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
 namespace {
 
-const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kLeftSideDown(1, 0, 0);
+using test::kSupine;
+using test::kProne;
+using test::kLeftSideDown;
+using test::with;
 
-BakedAsset with(const std::vector<std::string>& specs) {
-  BakedAsset a = test::sliding_bake().asset;
-  const Status s = apply_pathologies(a, specs);
-  EXPECT_TRUE(s) << s.error();
-  return a;
-}
+
 
 /// Where a breath of `ml` goes with gravity g: each lung's enclosed volume change, and the share of the pair's
 /// swept volume the anterior half sweeps (triangles by their rest depth against the middle of the pair's extent in

@@ -11,13 +11,19 @@
 #include "sim/force/breath_share.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/motion_figures.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
 namespace {
 
+using test::kLeftSideDown;
+using test::kRightSideDown;
+using test::kSupine;
+using test::kUpright;
+using test::index_of;
+
 /// Gravity in the lung frame (LPS, +x the patient's left): lying on the left side, on the right side, on the back.
-const Eigen::Vector3d kLeftSideDown(1, 0, 0), kRightSideDown(-1, 0, 0), kSupine(0, 1, 0), kUpright(0, 0, -1);
 
 /// Two lungs placed like the CT demo's: the left one smaller (47 % of the rest volume), a hand's width apart.
 BakedAsset demo_like_pair() {
@@ -33,12 +39,6 @@ BakedAsset demo_like_pair() {
   return a;
 }
 
-std::size_t index_of(const BakedAsset& a, const std::string& name) {
-  for (std::size_t l = 0; l < a.lungs.size(); ++l)
-    if (a.lungs[l].name == name) return l;
-  ADD_FAILURE() << "no lung named " << name;
-  return 0;
-}
 
 TEST(BreathShare, TheDependentLungTakesWhatEitMeasuresLyingOnEitherSide) {
   const BakedAsset a = demo_like_pair();

@@ -8,24 +8,16 @@
 #include "sim/force/dependent_collapse.h"
 #include "sim/pathology/lung_shapes.h"
 #include "sim/pathology/pathology.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
 namespace {
 
-BakedAsset with(const std::vector<std::string>& specs) {
-  BakedAsset a = test::sliding_bake().asset;
-  const Status s = apply_pathologies(a, specs);
-  EXPECT_TRUE(s) << s.error();
-  return a;
-}
+using test::with;
+using test::index_of;
 
-std::size_t index_of(const BakedAsset& a, const std::string& name) {
-  for (std::size_t l = 0; l < a.lungs.size(); ++l)
-    if (a.lungs[l].name == name) return l;
-  ADD_FAILURE() << name;
-  return 0;
-}
+
 
 std::pair<double, double> x_range(const BakedAsset& a, const BakedLung& lung) {
   double lo = 1e300, hi = -1e300;

@@ -16,6 +16,7 @@
 #include "sim/motion/surface_regions.h"
 #include "sim/transfer/stiffness.h"
 #include "sim/transfer/transfer_solver.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
@@ -25,7 +26,9 @@ using test::lung_mesh;
 using test::sliding_bake;
 using test::small_bake;
 
-const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kUpright(0, 0, -1);
+using test::kProne;
+using test::kSupine;
+using test::kUpright;
 
 std::vector<SurfaceRegion> asset_regions(const BakedAsset& a) {
   std::vector<SurfaceRegion> out;

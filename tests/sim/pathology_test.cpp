@@ -13,19 +13,17 @@
 #include "sim/motion/motion_figures.h"
 #include "sim/motion/surface_regions.h"
 #include "sim/pathology/pathology.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
 namespace {
 
-const Eigen::Vector3d kSupine(0, 1, 0);
+using test::kSupine;
+using test::index_of;
+using test::with;
 
-std::size_t index_of(const BakedAsset& a, const std::string& name) {
-  for (std::size_t l = 0; l < a.lungs.size(); ++l)
-    if (a.lungs[l].name == name) return l;
-  ADD_FAILURE() << "no lung named " << name;
-  return 0;
-}
+
 
 std::span<const std::uint32_t> triangles_of(const BakedAsset& a, const BakedLung& lung) {
   return {a.triangles.data() + lung.first_index, lung.index_count};
@@ -71,12 +69,6 @@ Breath breathe(const BakedAsset& a, double ml) {
   return b;
 }
 
-BakedAsset with(const std::vector<std::string>& specs) {
-  BakedAsset a = test::sliding_bake().asset;
-  const Status s = apply_pathologies(a, specs);
-  EXPECT_TRUE(s) << s.error();
-  return a;
-}
 
 TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTheBreath) {
   const BakedAsset healthy = test::sliding_bake().asset;

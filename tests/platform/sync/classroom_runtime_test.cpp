@@ -25,9 +25,10 @@ using lungar::testing::sleep_s;
 
 namespace {
 
-const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
-const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
-const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
+using lungar::testing::kAsset;
+using lungar::testing::kConfig;
+using lungar::testing::kLungar;
+
 constexpr double kTrackerPeriodMs = 1000.0 / 62.5;  // the mock tracker's report period
 
 /// The "N ms" of the first "sync: in step with instructor 'NAME' N ms after joining" line of a log.

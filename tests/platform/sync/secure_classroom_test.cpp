@@ -21,11 +21,11 @@ using lungar::testing::StationProcess;
 
 namespace {
 
-namespace fs = std::filesystem;
+using lungar::testing::kAsset;
+using lungar::testing::kConfig;
+using lungar::testing::kLungar;
 
-const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
-const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
-const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
+namespace fs = std::filesystem;
 
 class SecureClassroom : public lungar::testing::StationsTest {
  protected:

@@ -15,6 +15,11 @@
 
 namespace lungar::testing {
 
+/// What a station process runs: the runtime, the classroom's station settings and the small HIL lungs.
+inline const std::string kLungar = std::string(LUNGAR_BINARY_DIR) + "/platform/lungar";
+inline const std::string kConfig = std::string(LUNGAR_SOURCE_DIR) + "/config/classroom-station.toml";
+inline const std::string kAsset = std::string(LUNGAR_SOURCE_DIR) + "/tests/data/hil_lungs.lungbake";
+
 /// A test of stations run as processes: a folder of its own for their logs and JSON files, and a DDS domain and
 /// a classroom (`room_tag` and the process id) of its own, so that tests running at once never meet.
 class StationsTest : public ::testing::Test {

@@ -129,6 +129,11 @@ struct BakeReport {
   MotionFigures motion_supine, motion_prone, motion_upright;
   MotionModel compared_model = MotionModel::paper;
   MotionFigures compared_supine, compared_prone, compared_upright;
+  /// The same figures, supine, on kInteriorReportPoints points inside the lungs moving with the harmonic extension
+  /// of the surface's motion (sim/motion/interior_displacement.h), and that extension's grid step.
+  MotionFigures interior_supine;
+  std::size_t interior_points = 0;
+  double interior_grid_mm = 0;
   /// How well the force SH and the linear basis carry each pathology's force (sim/force/dependent_collapse.h,
   /// CollapseFitError), per posture: "none" is the healthy linear pressure, which pneumothorax, consolidation and
   /// emphysema keep (they change the asset); "ards:0.6" the collapse that follows gravity.

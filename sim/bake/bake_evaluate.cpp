@@ -14,6 +14,7 @@
 #include "sim/force/breath_share.h"
 #include "sim/force/dependent_collapse.h"
 #include "sim/force/force_sh.h"
+#include "sim/motion/interior_displacement.h"
 #include "sim/parallel/parallel_for.h"
 #include "sim/sh/real_sh.h"
 
@@ -323,7 +324,14 @@ void motion(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset
             const Workers& workers, BakeReport& report) {
   std::vector<SurfaceRegion> regions;
   for (const auto& w : work) regions.insert(regions.end(), w->regions.begin(), w->regions.end());
-  report.motion_supine = motion_figures(a, displacement_vectors(a, kSupine, kTidalVolumeMl), regions);
+  const std::vector<float> supine = displacement_vectors(a, kSupine, kTidalVolumeMl);
+  report.motion_supine = motion_figures(a, supine, regions);
+  // Inside the lungs, supine: the points `lungar-bake export --interior 5000` writes, moving as it moves them.
+  const InteriorDisplacement interior(a);
+  const InteriorPoints points = interior.sample(kInteriorReportPoints, kInteriorSeed);
+  report.interior_supine = point_motion_figures(points.positions, interior.displacement(supine, points));
+  report.interior_points = points.size();
+  report.interior_grid_mm = interior.spacing_mm();
   report.motion_prone = motion_figures(a, displacement_vectors(a, kProne, kTidalVolumeMl), regions);
   report.motion_upright = motion_figures(a, displacement_vectors(a, kUpright, kTidalVolumeMl), regions);
   report.compared_model = opt.model == MotionModel::sliding ? MotionModel::paper : MotionModel::sliding;

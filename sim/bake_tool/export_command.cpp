@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "sim/asset/asset_io.h"
@@ -12,6 +13,7 @@
 #include "sim/breathing/driver.h"
 #include "sim/breathing/orientation.h"
 #include "sim/mesh/tri_mesh.h"
+#include "sim/motion/interior_displacement.h"
 #include "sim/motion/motion_figures.h"
 #include "sim/pathology/pathology.h"
 
@@ -47,20 +49,48 @@ std::vector<float> exact_volume_displacement(const BakedAsset& a, const Eigen::V
   return d;
 }
 
+/// The interior points and the field that moves them, built once for every phase of an export.
+struct InteriorExport {
+  InteriorDisplacement field;
+  InteriorPoints points;
+};
+
+/// Writes one phase: the interior points' file first (when asked), then the surface's; when the surface cannot be
+/// written the interior file just written is removed, so that a failed phase leaves neither.
 Status write_one(const BakedAsset& a, const Eigen::Vector3d& g, double volume_ml, const std::string& path,
-                 const std::string& what) {
+                 const std::string& what, const InteriorExport* interior, const std::string& interior_path,
+                 ExportedFile& written) {
   std::vector<float> moved;
   const std::vector<float> d = exact_volume_displacement(a, g, volume_ml, moved);
   char line[256];
   std::snprintf(line, sizeof line, "gravity in the lung frame %.4f %.4f %.4f; volume change %.1f mL; model %s",
                 g.x(), g.y(), g.z(), volume_ml, kMotionModelNames.name(a.motion_model));
-  PlySurface s{moved, d, a.triangles, {"lungar-bake export of " + what, line,
-                                        "frame: DICOM LPS (+x left, +y posterior, +z superior), mm; dx dy dz: "
-                                        "displacement from rest, mm"}};
+  const std::string frame = "frame: DICOM LPS (+x left, +y posterior, +z superior), mm; dx dy dz: displacement "
+                            "from rest, mm";
+  if (interior) {
+    const std::vector<float> di = interior->field.displacement(d, interior->points);
+    std::vector<float> at(interior->points.positions.size());
+    for (std::size_t i = 0; i < at.size(); ++i) at[i] = interior->points.positions[i] + di[i];
+    char grid[256];
+    std::snprintf(grid, sizeof grid, "%zu points uniform over the lungs' volume (seed %llu), moved by the harmonic "
+                  "extension of the surface's motion on a %.2f mm grid", interior->points.size(),
+                  static_cast<unsigned long long>(kInteriorSeed), interior->field.spacing_mm());
+    PlySurface inside{at, di, {}, {"lungar-bake export of " + what + ": interior points", line, grid, frame}};
+    if (Status s = write_ply(inside, interior_path); !s) return s.with_context("--interior-out: ");
+    written.interior_path = interior_path;
+    written.interior = point_motion_figures(interior->points.positions, di);
+    written.interior_points = interior->points.size();
+  }
+  PlySurface s{moved, d, a.triangles, {"lungar-bake export of " + what, line, frame}};
   for (const BakedLung& lung : a.lungs)
     s.comments.push_back("lung " + lung.name + ": vertices " + std::to_string(lung.first_vertex) + " to " +
                          std::to_string(lung.first_vertex + lung.vertex_count - 1));
-  return write_ply(s, path);
+  Status status = write_ply(s, path);
+  if (!status && interior) {
+    std::error_code ec;
+    std::filesystem::remove(interior_path, ec);
+  }
+  return status;
 }
 
 }  // namespace
@@ -83,7 +113,21 @@ Result<Eigen::Vector3d> parse_gravity(const std::string& text) {
   return Eigen::Vector3d(g.normalized());
 }
 
+Status check_export_command(const ExportCommand& c) {
+  if (c.interior && *c.interior <= 0)
+    return fail("--interior: expected a positive number of points, got " + std::to_string(*c.interior));
+  if (!c.interior && !c.interior_out.empty())
+    return fail("--interior-out: expected --interior N (the number of interior points to write) with it");
+  if (c.interior && c.interior_out.empty())
+    return fail("--interior: expected --interior-out FILE (the PLY to write the interior points to) with it");
+  if (c.interior && std::filesystem::path(c.interior_out).lexically_normal() ==
+                        std::filesystem::path(c.out).lexically_normal())
+    return fail("--interior-out: expected a file other than --out's, got '" + c.interior_out + "' for both");
+  return ok();
+}
+
 Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
+  if (Status s = check_export_command(c); !s) return s.with_context("");
   auto g = command_gravity(c);
   if (!g) return g.with_context("");
   if (!std::isfinite(c.volume_ml)) return fail("--volume-ml: expected a finite number of millilitres");
@@ -92,9 +136,19 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
   if (Status s = apply_pathologies(*asset, c.pathologies); !s) return s.with_context("--pathology: ");
   std::string what = c.asset;
   for (const std::string& spec : c.pathologies) what += " with " + spec;
+  std::optional<InteriorExport> interior;
+  if (c.interior) {
+    interior.emplace(InteriorExport{InteriorDisplacement(*asset), {}});
+    interior->points = interior->field.sample(static_cast<std::size_t>(*c.interior), kInteriorSeed);
+  }
+  const InteriorExport* inside = interior ? &*interior : nullptr;
   if (c.series <= 0) {
-    if (Status s = write_one(*asset, *g, c.volume_ml, c.out, what); !s) return s.with_context("");
-    return std::vector<ExportedFile>{{c.out, 0.0, c.volume_ml}};
+    ExportedFile f;
+    f.path = c.out;
+    f.volume_ml = c.volume_ml;
+    if (Status s = write_one(*asset, *g, c.volume_ml, c.out, what, inside, c.interior_out, f); !s)
+      return s.with_context("");
+    return std::vector<ExportedFile>{f};
   }
   // One breath of the default pattern with `volume_ml` as its tidal volume, sampled at N phases from the start of
   // an inspiration; the volume change is from the end-expiratory (rest) shape.
@@ -108,8 +162,13 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
     const double phase = static_cast<double>(k) / c.series;
     const double dv = driver->at(phase * period).dv_ml;
     const std::string path = series_path(c.out, k);
-    if (Status s = write_one(*asset, *g, dv, path, what); !s) return s.with_context("");
-    written.push_back({path, phase, dv});
+    ExportedFile f;
+    f.path = path;
+    f.phase = phase;
+    f.volume_ml = dv;
+    const std::string interior_path = inside ? series_path(c.interior_out, k) : std::string();
+    if (Status s = write_one(*asset, *g, dv, path, what, inside, interior_path, f); !s) return s.with_context("");
+    written.push_back(f);
   }
   return written;
 }

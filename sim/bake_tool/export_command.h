@@ -1,6 +1,7 @@
 /// @file export_command.h
 /// @brief `lungar-bake export`: a baked asset's surface displaced for a posture and a volume change, as PLY
-///        (sim/bake_tool/ply_writer.h), one file or one per phase of a breath.
+///        (sim/bake_tool/ply_writer.h), one file or one per phase of a breath; with --interior, points inside the
+///        lungs moved by the harmonic extension of that surface motion (sim/motion/interior_displacement.h).
 #pragma once
 
 #include <optional>
@@ -10,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "config/base/result.h"
+#include "sim/motion/motion_figures.h"
 
 namespace lungar::sim {
 
@@ -21,6 +23,8 @@ struct ExportCommand {
   std::string out;                         ///< the .ply to write (with --series: the stem of each phase's file)
   int series = 0;                          ///< > 0: that many phases of one breath of `volume_ml` tidal volume
   std::vector<std::string> pathologies;    ///< specs of sim/pathology/pathology.h, applied in order
+  std::optional<int> interior;             ///< that many points uniform over the lungs' volume (> 0; kInteriorSeed)
+  std::string interior_out;                ///< their PLY, vertices only (with --series: the stem, as `out`)
 };
 
 /// What was written: each file with its volume change.
@@ -28,9 +32,18 @@ struct ExportedFile {
   std::string path;
   double phase = 0;      ///< fraction of the breath (0 with no series)
   double volume_ml = 0;  ///< the pair's volume change from rest
+  std::string interior_path;               ///< the interior points' PLY written beside it ("" without --interior)
+  MotionFigures interior;                  ///< their figures (sim/motion/motion_figures.h), no faces
+  std::size_t interior_points = 0;
 };
 
-/// Writes the PLY file(s), whole or not at all; the error is one line naming the file and the field.
+/// The options' own consistency, before any file is read (the command line exits 2 on it): --interior N needs
+/// N > 0 and --interior-out, --interior-out needs --interior, and the two outputs differ. One line naming the
+/// option and what was expected.
+Status check_export_command(const ExportCommand& command);
+
+/// Writes the PLY file(s), whole or not at all (the interior points' file too: when either of a phase's two files
+/// cannot be written, neither is left); the error is one line naming the file and the field.
 Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& command);
 
 /// "FILE.ply" with --series: FILE_000.ply, FILE_001.ply, ...

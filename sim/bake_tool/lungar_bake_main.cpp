@@ -155,10 +155,18 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
                  "SPEC: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION (upper, middle, lower) or "
                  "emphysema:SEVERITY[:SIDE] (0 to 1); repeatable")
       ->allow_extra_args(false);
+  sub.add_option("--interior", cmd.interior, "N: also write N points uniform over the lungs' volume (a fixed seed), "
+                                             "moved by the harmonic extension of the surface's motion");
+  sub.add_option("--interior-out", cmd.interior_out, "the .ply of the interior points (vertices only: x y z, dx dy "
+                                                     "dz; with --series: FILE_000.ply, ...); needs --interior");
 }
 
 /// Runs the export and says what it wrote; the exit code.
 int run_export(lungar::sim::ExportCommand& cmd, const std::string& gravity) {
+  if (lungar::Status s = lungar::sim::check_export_command(cmd); !s) {
+    std::fprintf(stderr, "lungar-bake export: %s\n", s.error().c_str());
+    return 2;
+  }
   if (!gravity.empty()) {
     auto g = lungar::sim::parse_gravity(gravity);
     if (!g) {
@@ -176,6 +184,13 @@ int run_export(lungar::sim::ExportCommand& cmd, const std::string& gravity) {
     char line[512];
     std::snprintf(line, sizeof line, "wrote %s: volume change %.1f mL (phase %.3f)", f.path.c_str(), f.volume_ml,
                   f.phase);
+    lungar::log_line("lungar-bake export", line);
+    if (f.interior_path.empty()) continue;
+    const lungar::sim::MotionFigures& m = f.interior;
+    std::snprintf(line, sizeof line, "wrote %s: %zu interior points; SI share %.3f, apex : base %.3f, dorsal : "
+                  "ventral %.3f, mean |d| %.2f mm, max |d| %.2f mm", f.interior_path.c_str(), f.interior_points,
+                  m.si_share, m.apex_base_ratio, m.dorsal_ventral_ratio, m.mean_displacement_mm,
+                  m.max_displacement_mm);
     lungar::log_line("lungar-bake export", line);
   }
   return 0;

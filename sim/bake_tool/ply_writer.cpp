@@ -21,7 +21,8 @@ Status write_ply(const PlySurface& s, const std::string& path) {
   for (const std::string& c : s.comments) head += "comment " + c + "\n";
   head += "element vertex " + std::to_string(n) + "\n";
   for (const char* p : {"x", "y", "z", "dx", "dy", "dz"}) head += std::string("property float ") + p + "\n";
-  head += "element face " + std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  if (faces > 0) head += "element face " + std::to_string(faces) + "\nproperty list uchar int vertex_indices\n";
+  head += "end_header\n";
   out.write(head);
   std::vector<char> body(n * 24 + faces * 13);
   char* at = body.data();

@@ -3,7 +3,8 @@
 ///
 /// Layout: `binary_little_endian 1.0`; `element vertex N` with float properties x y z (the displaced position,
 /// mm, LPS) and dx dy dz (the displacement from rest, mm); `element face M` with `list uchar int
-/// vertex_indices`; comment lines saying where the surface came from.
+/// vertex_indices` (left out for points without triangles: the interior points of `export --interior`); comment
+/// lines saying where the surface came from.
 #pragma once
 
 #include <span>
@@ -17,7 +18,7 @@ namespace lungar::sim {
 struct PlySurface {
   std::span<const float> positions;         ///< 3 per vertex, displaced
   std::span<const float> displacements;     ///< 3 per vertex, from rest
-  std::span<const std::uint32_t> triangles; ///< 3 per triangle
+  std::span<const std::uint32_t> triangles; ///< 3 per triangle; empty: a PLY of vertices only
   std::vector<std::string> comments;        ///< one line each, no newlines
 };
 

@@ -83,6 +83,14 @@ nlohmann::json motion_json(const BakeReport& r) {
   j["model"] = kMotionModelNames.name(r.model);
   j["volume_ml"] = kTidalVolumeMl;
   j["posture"] = "supine";
+  // Inside the lungs (sim/motion/interior_displacement.h): the same definitions over interior points.
+  j["interior_si_share"] = r.interior_supine.si_share;
+  j["interior_apex_base_ratio"] = r.interior_supine.apex_base_ratio;
+  j["interior_dorsal_ventral_ratio"] = r.interior_supine.dorsal_ventral_ratio;
+  j["interior_mean_displacement_mm"] = r.interior_supine.mean_displacement_mm;
+  j["interior_max_displacement_mm"] = r.interior_supine.max_displacement_mm;
+  j["interior_points"] = r.interior_points;
+  j["interior_grid_mm"] = r.interior_grid_mm;
   j["prone"] = posture_json(r.motion_prone, false);
   j["upright"] = posture_json(r.motion_upright, false);
   j["compared"] = {{"model", kMotionModelNames.name(r.compared_model)},

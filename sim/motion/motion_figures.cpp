@@ -13,13 +13,13 @@
 namespace lungar::sim {
 namespace {
 
-/// Mean |d| over the top third of the vertices by coordinate `axis`, over the bottom third.
-double tertile_ratio(const BakedAsset& a, const std::vector<double>& magnitude, int axis) {
+/// Mean |d| over the top third of the points by rest coordinate `axis`, over the bottom third.
+double tertile_ratio(std::span<const float> rest, const std::vector<double>& magnitude, int axis) {
   const std::size_t n = magnitude.size();
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
-    return a.positions[3 * std::size_t{i} + axis] < a.positions[3 * std::size_t{j} + axis];
+    return rest[3 * std::size_t{i} + axis] < rest[3 * std::size_t{j} + axis];
   });
   const std::size_t third = n / 3;
   if (third == 0) return 0;
@@ -31,12 +31,12 @@ double tertile_ratio(const BakedAsset& a, const std::vector<double>& magnitude, 
   return low > 0 ? high / low : 0.0;
 }
 
-}  // namespace
-
-MotionFigures motion_figures(const BakedAsset& a, std::span<const float> d, const std::vector<SurfaceRegion>& regions) {
-  const std::size_t n = a.vertex_count();
+/// The figures without faces, and each point's |d| in `magnitude`.
+MotionFigures figures_and_magnitudes(std::span<const float> rest, std::span<const float> d,
+                                     std::vector<double>& magnitude) {
+  const std::size_t n = rest.size() / 3;
   MotionFigures f;
-  std::vector<double> magnitude(n);
+  magnitude.assign(n, 0.0);
   double sum = 0, sum_z = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double x = d[3 * i], y = d[3 * i + 1], z = d[3 * i + 2];
@@ -48,9 +48,23 @@ MotionFigures motion_figures(const BakedAsset& a, std::span<const float> d, cons
   if (n == 0 || !(sum > 0)) return f;
   f.si_share = sum_z / sum;
   f.mean_displacement_mm = sum / static_cast<double>(n);
-  f.apex_base_ratio = tertile_ratio(a, magnitude, 2);  // +z superior: top over bottom
-  f.dorsal_ventral_ratio = tertile_ratio(a, magnitude, 1);  // +y posterior: back over front
-  if (regions.size() != n) return f;
+  f.apex_base_ratio = tertile_ratio(rest, magnitude, 2);  // +z superior: top over bottom
+  f.dorsal_ventral_ratio = tertile_ratio(rest, magnitude, 1);  // +y posterior: back over front
+  return f;
+}
+
+}  // namespace
+
+MotionFigures point_motion_figures(std::span<const float> rest, std::span<const float> d) {
+  std::vector<double> magnitude;
+  return figures_and_magnitudes(rest, d, magnitude);
+}
+
+MotionFigures motion_figures(const BakedAsset& a, std::span<const float> d, const std::vector<SurfaceRegion>& regions) {
+  const std::size_t n = a.vertex_count();
+  std::vector<double> magnitude;
+  MotionFigures f = figures_and_magnitudes(std::span<const float>(a.positions.data(), 3 * n), d, magnitude);
+  if (n == 0 || !(f.mean_displacement_mm > 0) || regions.size() != n) return f;
   std::array<double, kSurfaceRegionCount> area{}, volume{}, moved{};
   std::array<std::size_t, kSurfaceRegionCount> count{};
   double area_all = 0, volume_all = 0;

@@ -3,7 +3,8 @@
 ///        ventral, mean displacement, and each surface face's share of the motion.
 ///
 /// Definitions (those of DIR-Lab's landmark figures, docs/design.md, "Vector displacement"), over every vertex of
-/// every lung with its displacement d from rest, in the lung frame (LPS):
+/// every lung (or every interior point, sim/motion/interior_displacement.h) with its displacement d from rest, in
+/// the lung frame (LPS):
 ///   si_share              mean |d_z| / mean |d|
 ///   apex_base_ratio       mean |d| of the top third of the vertices by rest height over the bottom third
 ///   dorsal_ventral_ratio  mean |d| of the back third by rest depth (+y) over the front third
@@ -39,6 +40,10 @@ struct MotionFigures {
 /// empty) adds the per-face figures.
 MotionFigures motion_figures(const BakedAsset& asset, std::span<const float> d,
                              const std::vector<SurfaceRegion>& regions);
+
+/// The same figures, without faces, of displacements `d` (3 per point, mm) of points at rest positions `rest`
+/// (3 per point, mm, LPS): the interior points' (`interior_*` in the bake report).
+MotionFigures point_motion_figures(std::span<const float> rest, std::span<const float> d);
 
 /// The displacement of every vertex of `asset` (3 per vertex, mm) when the pair's volume changes by
 /// `delta_volume_ml` with lung-frame gravity `g`, by eq. (7) in the exact orientation mode, as the runtime draws it.

@@ -169,8 +169,11 @@ TEST(BakeCli, ProceduralBakeWritesTheAssetAndEveryReportKey) {
   EXPECT_EQ(r["model"], "sliding");
   const nlohmann::json& m = r["motion"];
   for (const char* key : {"si_share", "apex_base_ratio", "dorsal_ventral_ratio", "mean_displacement_mm", "regions",
-                          "prone", "upright", "compared"})
+                          "prone", "upright", "compared", "interior_si_share", "interior_apex_base_ratio",
+                          "interior_dorsal_ventral_ratio", "interior_mean_displacement_mm", "interior_points"})
     EXPECT_TRUE(m.contains(key)) << "motion." << key;
+  EXPECT_EQ(m["interior_points"].get<int>(), 5000);
+  EXPECT_GT(m["interior_mean_displacement_mm"].get<double>(), 0.0);
   EXPECT_EQ(m["compared"]["model"], "paper");
   EXPECT_GT(m["si_share"].get<double>(), m["compared"]["supine"]["si_share"].get<double>());
   for (const char* face : {"diaphragmatic", "costal", "mediastinal", "apical"})
@@ -228,6 +231,44 @@ TEST(BakeCli, ExportWritesPlyAndRefusesBadInputWithOneLine) {
   const std::string err = file_text(dir.file("err"));
   EXPECT_NE(err.find("'ards:1.4'"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
+}
+
+TEST(BakeCli, ExportWritesInteriorPointsAndRefusesTheirBadOptionsAsUsageErrors) {
+  test::TempDir dir;
+  ASSERT_EQ(run("--procedural --nodes 2000 --no-evaluate --no-transfer-rows --out " + dir.file("p.lungbake"),
+                dir.file("err")),
+            0)
+      << file_text(dir.file("err"));
+  const std::string args = "export --asset " + dir.file("p.lungbake") + " --out " + dir.file("e.ply");
+  const std::string inside = " --interior-out " + dir.file("i.ply");
+  ASSERT_EQ(run(args + " --interior 200" + inside, dir.file("err")), 0) << file_text(dir.file("err"));
+  const std::string ply = file_text(dir.file("i.ply"));
+  EXPECT_NE(ply.find("element vertex 200\n"), std::string::npos);
+  EXPECT_EQ(ply.find("element face"), std::string::npos) << "vertices only";
+  EXPECT_NE(file_text(dir.file("err")).find("wrote " + dir.file("i.ply") + ": 200 interior points; SI share"),
+            std::string::npos)
+      << file_text(dir.file("err"));
+  std::filesystem::remove(dir.file("e.ply"));
+  std::filesystem::remove(dir.file("i.ply"));
+  // Each refusal: exit 2 as the tool's other usage errors, one line naming the option, no file.
+  for (const auto& [options, expected] :
+       {std::pair{" --interior 0" + inside, "lungar-bake export: --interior: expected a positive number of points"},
+        std::pair{std::string(" --interior -3") + inside, "lungar-bake export: --interior: expected a positive"},
+        std::pair{std::string(" --interior 50"), "lungar-bake export: --interior: expected --interior-out FILE"},
+        std::pair{inside, "lungar-bake export: --interior-out: expected --interior N"}}) {
+    EXPECT_EQ(run(args + options, dir.file("err")), 2) << options;
+    const std::string err = file_text(dir.file("err"));
+    EXPECT_EQ(err.rfind(expected, 0), 0u) << options << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply"))) << options;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("i.ply"))) << options;
+  }
+  // A file that cannot be written fails the work, exit 1 as an unwritable --out does.
+  std::ofstream(dir.file("no"), std::ios::binary) << "a file where a folder should be";
+  EXPECT_EQ(run(args + " --interior 50 --interior-out " + dir.file("no/i.ply"), dir.file("err")), 1);
+  EXPECT_EQ(file_text(dir.file("err")).rfind("lungar-bake export: --interior-out: " + dir.file("no/i.ply"), 0), 0u)
+      << file_text(dir.file("err"));
   EXPECT_FALSE(std::filesystem::exists(dir.file("e.ply")));
 }
 

@@ -1,7 +1,7 @@
 /// @file export_test.cpp
 /// @brief `lungar-bake export`'s work: the PLY read back field by field (rest + displacement = position, the
-///        triangles, the volume change), postures and --gravity, a breath as a series, and refusals that leave
-///        no file.
+///        triangles, the volume change), postures and --gravity, a breath as a series, the interior points
+///        (--interior) and their figures against the bake report's, and refusals that leave no file.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -11,7 +11,10 @@
 #include "sim/asset/asset_io.h"
 #include "sim/bake_tool/export_command.h"
 #include "sim/mesh/tri_mesh.h"
+#include "sim/motion/interior_displacement.h"
+#include "sim/motion/motion_figures.h"
 #include "sim_test_support.h"
+#include "tests/file_text.h"
 #include "tests/partial_files.h"
 
 namespace lungar::sim {
@@ -173,6 +176,84 @@ TEST_F(Export, RefusalsNameTheFieldAndLeaveNoFile) {
   EXPECT_FALSE(run_export_command(c));
   EXPECT_FALSE(std::filesystem::exists(dir_.file("x.ply")));
   EXPECT_EQ(lungar::testing::partial_files_beside(dir_.file("x.ply")), std::vector<std::string>{});
+}
+
+TEST_F(Export, InteriorPointsAreVerticesInsideTheLungsWhoseFiguresAreTheReports) {
+  const BakeOutput& bake = sliding_bake();
+  ExportCommand c;
+  c.asset = asset_;
+  c.out = dir_.file("supine.ply");
+  c.interior = static_cast<int>(kInteriorReportPoints);
+  c.interior_out = dir_.file("inside.ply");
+  auto written = run_export_command(c);
+  ASSERT_TRUE(written) << written.error();
+  ASSERT_EQ(written->size(), 1u);
+  EXPECT_EQ((*written)[0].interior_path, c.interior_out);
+  const Ply p = read_ply(c.interior_out);
+  EXPECT_EQ((std::vector<std::string>{"x", "y", "z", "dx", "dy", "dz"}), p.properties);
+  ASSERT_EQ(p.xyz.size(), 3 * kInteriorReportPoints);
+  EXPECT_TRUE(p.triangles.empty());
+  EXPECT_EQ(lungar::testing::file_text(c.interior_out).find("element face"), std::string::npos) << "vertices only";
+  std::vector<float> rest(p.xyz.size());
+  for (std::size_t i = 0; i < rest.size(); ++i) rest[i] = p.xyz[i] - p.dxyz[i];
+  const InteriorDisplacement field(bake.asset);
+  for (std::size_t k = 0; k < kInteriorReportPoints; k += 50)
+    EXPECT_GE(field.lung_containing({rest[3 * k], rest[3 * k + 1], rest[3 * k + 2]}), 0) << "point " << k;
+  // The export's volume is exact and the report's first-order: the same field times a factor near 1, so the
+  // ratios agree and the mean within the report's tidal volume error.
+  const MotionFigures f = point_motion_figures(rest, p.dxyz);
+  const MotionFigures& r = bake.report.interior_supine;
+  EXPECT_EQ(bake.report.interior_points, kInteriorReportPoints);
+  EXPECT_NEAR(f.si_share, r.si_share, 1e-3);
+  EXPECT_NEAR(f.apex_base_ratio, r.apex_base_ratio, 1e-3 * r.apex_base_ratio);
+  EXPECT_NEAR(f.dorsal_ventral_ratio, r.dorsal_ventral_ratio, 1e-3 * r.dorsal_ventral_ratio);
+  EXPECT_NEAR(f.mean_displacement_mm, r.mean_displacement_mm, 0.03 * r.mean_displacement_mm);
+  EXPECT_NEAR((*written)[0].interior.si_share, f.si_share, 1e-4) << "what the tool logs is what it wrote";
+  // Supine, the interior moves as the surface does: mostly cranio-caudally, the base and the back more.
+  EXPECT_GT(r.si_share, 0.5);
+  EXPECT_LT(r.apex_base_ratio, 1.0);
+  EXPECT_GT(r.dorsal_ventral_ratio, 1.0);
+  EXPECT_LT(r.mean_displacement_mm, bake.report.motion_supine.mean_displacement_mm * 1.5);
+}
+
+TEST_F(Export, InteriorRefusalsNameTheOptionAndLeaveNoFile) {
+  ExportCommand c;
+  c.asset = asset_;
+  c.out = dir_.file("supine.ply");
+  c.interior_out = dir_.file("inside.ply");
+  auto refused = [&](const std::string& option, const std::string& expected) {
+    auto r = run_export_command(c);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().rfind(option + ":", 0), 0u) << r.error();
+    EXPECT_NE(r.error().find(expected), std::string::npos) << r.error();
+    EXPECT_FALSE(std::filesystem::exists(c.out)) << r.error();
+    EXPECT_FALSE(std::filesystem::exists(dir_.file("inside.ply"))) << r.error();
+  };
+  c.interior = 0;
+  refused("--interior", "expected a positive number of points, got 0");
+  c.interior = -5;
+  refused("--interior", "got -5");
+  EXPECT_FALSE(check_export_command(c)) << "the command line's own check, before the asset is read";
+  c.interior = 100;
+  c.interior_out.clear();
+  refused("--interior", "--interior-out FILE");
+  c.interior.reset();
+  c.interior_out = dir_.file("inside.ply");
+  refused("--interior-out", "--interior N");
+  c.interior = 100;
+  c.interior_out = c.out;
+  refused("--interior-out", "other than --out");
+  // A folder that cannot be made (a file in its place): nothing of the export is left.
+  std::ofstream(dir_.file("no"), std::ios::binary) << "a file where a folder should be";
+  c.interior_out = dir_.file("no/inside.ply");
+  refused("--interior-out", "no/inside.ply");
+  EXPECT_EQ(lungar::testing::partial_files_beside(c.out), std::vector<std::string>{});
+  // The surface's file failing after the interior's was written takes the interior's away too.
+  c.interior_out = dir_.file("inside.ply");
+  c.out = dir_.file("no/supine.ply");
+  EXPECT_FALSE(run_export_command(c));
+  EXPECT_FALSE(std::filesystem::exists(c.interior_out));
+  EXPECT_EQ(lungar::testing::partial_files_beside(c.interior_out), std::vector<std::string>{});
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/interior_displacement.h"
 #include "sim/motion/motion_figures.h"
+#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
@@ -18,7 +19,7 @@ namespace {
 
 using test::sliding_bake;
 
-const Eigen::Vector3d kSupine(0, 1, 0);
+using test::kSupine;
 
 /// The field of the shared bake, built once per test binary.
 const InteriorDisplacement& field() {

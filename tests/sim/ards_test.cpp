@@ -145,6 +145,30 @@ TEST(Ards, TheEq1BaselineTakesTheSamePatternAtEachVertex) {
   }
 }
 
+TEST(Ards, SittingUpOrHeadDownTheBreathStaysTheBreath) {
+  // Gravity along the body's axis: the pressure's gradient is along z, which the off-axis part's z column carries,
+  // and each lung's swept volume (what its force is scaled by) must count that column for the breath to be 500 mL.
+  // Measured: within 6.5 mL of 500 (the healthy pair within 2.3); without the z column 537, 491 and 534 mL.
+  const BakedAsset ards = with({"ards:0.6"});
+  for (const Eigen::Vector3d& g :
+       {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0.6, -0.8)}) {
+    EXPECT_NEAR(total(breathe(ards, g, 500)), 500.0, 15.0) << "g " << g.transpose();
+  }
+}
+
+TEST(Ards, WithoutACollapseBothFitsCarryThePressureInEveryPosture) {
+  // Severity 0 leaves the healthy pressure, linear in position: the linear fit carries it to rounding, and the SH
+  // as closely as the bake's own fit does, whichever way gravity runs through the lungs. Measured: linear 1e-15,
+  // SH at most 0.0081 (upright); a fit error that read a vertex's z from the vertex before gave SH 0.20 upright.
+  const BakedAsset none = with({"ards:0"});
+  for (const Eigen::Vector3d& g :
+       {kSupine, kProne, kLeftSideDown, Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 1)}) {
+    const CollapseFitError e = none.lungs[0].collapse->fit_error(none, g);
+    EXPECT_LT(e.linear_rms_rel, 1e-4) << "g " << g.transpose();
+    EXPECT_LT(e.sh_rms_rel, 0.05) << "g " << g.transpose();
+  }
+}
+
 TEST(Ards, ALungWithFewerVerticesThanTheFitHasUnknownsIsRefused) {
   // The fit solves for L^2 SH coefficients and 4 linear weights: a lung needs that many samples at the least.
   BakedAsset a = test::sliding_bake().asset;

@@ -7,11 +7,14 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "platform/sync/classroom_link.h"
 #include "platform/sync/classroom_topics.h"
 #include "platform/sync/dds.h"
 #include "platform/sync/wire.h"
@@ -93,6 +96,48 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
       << trainee->err();
   EXPECT_NE(trainee->err().find("lungar_patient_pose: orientation_wxyz: expected a finite number"), std::string::npos)
       << trainee->err();
+}
+
+TEST_F(ClassroomProbe, AStationNameOfMoreThan63CharactersIsRefusedAtOpen) {
+  // The Station topic carries the name in 64 bytes with its terminating zero: 63 characters open, 64 are refused
+  // before any DDS entity is made, naming the setting.
+  sync::SyncOptions o;
+  o.classroom = room;
+  o.domain = static_cast<std::uint32_t>(std::stoul(domain));
+  o.cyclonedds_xml = lungar::testing::kLoopbackXml;
+  o.log = [](const std::string&) {};
+  o.station = std::string(63, 's');
+  auto fits = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  ASSERT_TRUE(fits) << fits.error();
+  o.station = std::string(64, 's');
+  auto long_name = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  ASSERT_FALSE(long_name);
+  EXPECT_NE(long_name.error().find("sync.station: expected at most 63 characters"), std::string::npos)
+      << long_name.error();
+}
+
+TEST_F(ClassroomProbe, MalformedSamplesAreLoggedTheFirstFiveThenEveryHundredth) {
+  // A rogue stream of malformed samples must not flood the log: each is counted, the first five are logged, then
+  // one in a hundred, with the count so far.
+  std::vector<std::string> lines;
+  sync::SyncOptions o;
+  o.classroom = room;
+  o.domain = static_cast<std::uint32_t>(std::stoul(domain));
+  o.cyclonedds_xml = lungar::testing::kLoopbackXml;
+  o.station = "logged";
+  o.log = [&](const std::string& line) { lines.push_back(line); };
+  auto link = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  ASSERT_TRUE(link) << link.error();
+  lines.clear();
+  for (int i = 0; i < 250; ++i) (*link)->malformed("rate_bpm: expected [2, 60]");
+  EXPECT_EQ((*link)->malformed_count(), 250u);
+  std::vector<int> logged;
+  const std::regex so_far(R"(\((\d+) so far\))");
+  for (const std::string& line : lines) {
+    std::smatch m;
+    if (std::regex_search(line, m, so_far)) logged.push_back(std::stoi(m[1]));
+  }
+  EXPECT_EQ(logged, (std::vector<int>{1, 2, 3, 4, 5, 100, 200}));
 }
 
 TEST_F(ClassroomProbe, ATraineeNeverPublishesSharedState) {

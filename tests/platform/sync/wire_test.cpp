@@ -119,6 +119,32 @@ TEST(SyncWire, ScenarioEventsRoundTrip) {
   EXPECT_EQ((*back)[2].kind, sim::EventKind::HoldStart);
 }
 
+TEST(SyncWire, AChangeOfEveryBreathingSettingRoundTrips) {
+  // Each setting a change can carry has its bit in `set`: every one of them, set together, comes back as it went.
+  sim::PatternChange change;
+  change.preset = sim::Preset::Fibrosis;
+  change.rate_bpm = 16.0;
+  change.ie_ratio = 0.4;
+  change.tidal_volume_ml = 450.0;
+  change.mode = sim::Mode::Ventilator;
+  change.ventilator_tau_s = 0.8;
+  change.peep_cmh2o = 6.0;
+  std::vector<lungar_sync_ScenarioEvent> storage;
+  lungar_sync_ScenarioEvents w{};
+  ASSERT_TRUE(to_wire(std::vector<sim::Event>{sim::Event::set(5.0, change)}, storage, w));
+  auto back = from_wire(w);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_EQ(back->size(), 1u);
+  const sim::PatternChange& c = (*back)[0].change;
+  EXPECT_EQ(c.preset, change.preset);
+  EXPECT_EQ(c.rate_bpm, change.rate_bpm);
+  EXPECT_EQ(c.ie_ratio, change.ie_ratio);
+  EXPECT_EQ(c.tidal_volume_ml, change.tidal_volume_ml);
+  EXPECT_EQ(c.mode, change.mode);
+  EXPECT_EQ(c.ventilator_tau_s, change.ventilator_tau_s);
+  EXPECT_EQ(c.peep_cmh2o, change.peep_cmh2o);
+}
+
 TEST(SyncWire, TheLungsPathologiesRoundTripWithTheScenarioEvents) {
   const sim::PathologyTimeline lungs{{"ards:0.6", "emphysema:0.3:left"},
                                      {{10.0, 15.0, "pneumothorax:right:40:tension", ""},
@@ -169,6 +195,11 @@ TEST(SyncWire, MalformedPathologiesAreRefusedNamingWhatIsWrong) {
   EXPECT_FALSE(to_wire(too_many, storage, w)) << "more than a sample carries";
   sim::PathologyTimeline too_long{{std::string(600, 'a')}, {}};
   EXPECT_FALSE(to_wire(too_long, storage, w)) << "a list longer than a sample carries";
+  // A pathology's text has 64 bytes with its terminator: the refusal says how many characters fit.
+  sim::PathologyTimeline long_event{{}, {{1.0, 1.0, "emphysema:0.1:" + std::string(60, 'l'), ""}}};
+  const Status s = to_wire(long_event, storage, w);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().find("is longer than a classroom carries (63 characters)"), std::string::npos) << s.error();
 }
 
 TEST(SyncWire, MalformedScenarioEventsAreRefused) {

@@ -24,11 +24,11 @@ struct Script {
 struct Flags {
   std::vector<double> t;
   std::vector<FollowerOutput> out;
-  int irregular = 0, apnoeas = 0;
+  int irregular = 0, apnoeas = 0, breaths = 0;
 };
 
-Flags run(const Script& s) {
-  BreathFollower f;
+Flags run(const Script& s, const FollowerParams& p = {}) {
+  BreathFollower f(p);
   Flags r;
   double start = 0;
   int n = 0;
@@ -54,6 +54,7 @@ Flags run(const Script& s) {
   }
   r.irregular = f.irregular_breaths();
   r.apnoeas = f.apnoeas();
+  r.breaths = f.breaths();
   return r;
 }
 
@@ -85,6 +86,28 @@ TEST(BreathFlags, ASighIsIrregularForThatBreathOnly) {
   EXPECT_NEAR(first, 8 * 4 + 4.0 / 3, 0.6);
   EXPECT_NEAR(last - first, 4.0, 0.6);
   EXPECT_EQ(run({}).irregular, 0) << "the same trace without the sigh";
+}
+
+TEST(BreathFlags, ASighIsIrregularAsSoonAsThreeBreathsSetTheDepth) {
+  // The first breath counted is breath 1 (breath 0 has no trough before it): breath 4 is the first judged against
+  // a median of three depths. Its period is the others', so only its depth can flag it.
+  Script s;
+  s.deeper = {{4, 2.5}};
+  EXPECT_EQ(run(s).irregular, 1);
+}
+
+TEST(BreathFlags, ABreathShallowerThanTheDepthShareAskedForIsNoBreathFromTheSecondOn) {
+  // The default share (0.3) is the turns' own hysteresis, so a turn that shallow is never found; a caller asking
+  // for 0.6 gets a half-deep breath right after the first one flagged and not counted.
+  FollowerParams p;
+  p.min_depth_share = 0.6;
+  const Flags quiet = run({}, p);
+  EXPECT_EQ(quiet.irregular, 0);
+  Script s;
+  s.deeper = {{2, 0.5}};
+  const Flags f = run(s, p);
+  EXPECT_EQ(f.irregular, 1);
+  EXPECT_EQ(f.breaths, quiet.breaths - 1);
 }
 
 TEST(BreathFlags, APauseBetweenBreathsIsIrregular) {

@@ -206,6 +206,45 @@ TEST(BreathTrace, AMarkerIsReadAlongItsBreathingAxisInhaleUp) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(BreathTrace, AMarkerWhoseClockStartedLongBeforeTheRecordingIsReadAlongTheSameAxis) {
+  // A tracker's clock reads the time since it was switched on, not since the recording began: the axis comes from
+  // the recording's first kAxisWindowS whatever the first time reads, and the excursion keeps the breath's depth.
+  const Trace trace = make_trace(60);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.2, -0.9, 0.4).normalized();
+  std::vector<double> from_zero, an_hour_on;
+  std::vector<Eigen::Vector3d> p;
+  for (const TraceSample& s : trace.samples) {
+    from_zero.push_back(s.t_s);
+    an_hour_on.push_back(s.t_s + 3600.0);
+    p.push_back(Eigen::Vector3d(10, -150, 900) + s.value * axis);
+  }
+  EXPECT_GT(breathing_axis(from_zero, p, kAxisWindowS).dot(axis), 1.0 - 1e-9);
+  EXPECT_GT(breathing_axis(an_hour_on, p, kAxisWindowS).dot(axis), 1.0 - 1e-9);
+  const std::vector<TraceSample> excursion = marker_excursion(an_hour_on, p);
+  ASSERT_EQ(excursion.size(), trace.samples.size());
+  EXPECT_DOUBLE_EQ(excursion.front().t_s, 0.0);
+  for (std::size_t i = 0; i < excursion.size(); ++i)
+    ASSERT_NEAR(excursion[i].value, trace.samples[i].value - trace.samples.front().value, 1e-6) << "sample " << i;
+}
+
+TEST(BreathTrace, AMarkerSampledUnevenlyIsReadInhaleUpByTheTimeSpentRisingNotBySamples) {
+  // Near-sinusoidal breaths (no skew to go by): inhalation is the shorter phase, a third of each 4 s breath. The
+  // tracker loses frames while the chest falls (5 Hz then, 50 Hz while it rises), so the rising phase has five
+  // times the samples of the falling one: it is the time spent rising that tells which way is inhalation.
+  const Eigen::Vector3d inhale = Eigen::Vector3d(0.1, -0.95, 0.3).normalized();
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> p;
+  for (double s = 0; s < 60.0;) {
+    const double u = std::fmod(s, 4.0) / 4.0, rise = 1.0 / 3.0;
+    const double depth =
+        u < rise ? 0.5 - 0.5 * std::cos(M_PI * u / rise) : 0.5 + 0.5 * std::cos(M_PI * (u - rise) / (1 - rise));
+    t.push_back(s);
+    p.push_back(Eigen::Vector3d(10, -150, 900) + 10.0 * depth * inhale);
+    s += u < rise ? 0.02 : 0.2;
+  }
+  EXPECT_GT(breathing_axis(t, p, kAxisWindowS).dot(inhale), 1.0 - 1e-9);
+}
+
 TEST(BreathTrace, AnExtMarkerFileDropsAGarbledTimeAndRefusesMany) {
   const auto dir = std::filesystem::temp_directory_path() / "lungar_extmarker_test";
   std::filesystem::create_directories(dir);

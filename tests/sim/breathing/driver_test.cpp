@@ -2,6 +2,7 @@
 // behaviour of holds, sighs, apnoea and the ventilator, all measured from sampled traces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -271,6 +272,24 @@ TEST(BreathingDriver, TheVentilatorAppliesASquarePressureWave) {
   }
   // PEEP holds the end-expiratory volume above the relaxed FRC.
   EXPECT_GT(d.at(4.99).dv_ml, 100.0);
+}
+
+TEST(BreathingDriver, AShortInspirationOnTheVentilatorIsDrivenToADeepBreathWhileTheAlveoliStayUnderTheCap) {
+  // kMaxTranspulmonaryCmH2O caps the alveolar peak, not the drive: with 1.2 s of inspiration against tau 1 s the
+  // alveoli reach about 70 % of the drive, so the drive may go to the cap's margin over 0.7 and a breath near the
+  // curve's reach (2.3 L, the alveoli at about 30 cmH2O) is breathed.
+  BreathingParams p;
+  p.mode = Mode::Ventilator;
+  p.rate_bpm = 10;
+  p.ie_ratio = 0.25;
+  p.ventilator_tau_s = 1.0;
+  p.peep_cmh2o = 5;
+  p.tidal_volume_ml = 2300;
+  const BreathingDriver d = make(p);
+  for (double v : tidal_volumes(d, 0.0, 6.0, 5, 0.002)) EXPECT_NEAR(v, p.tidal_volume_ml, 0.01 * p.tidal_volume_ml);
+  double alveolar = 0;
+  for (const auto& s : trace(d, 0.0, 30.0, 0.01)) alveolar = std::max(alveolar, s.p_cmh2o);
+  EXPECT_LE(alveolar, kMaxTranspulmonaryCmH2O);
 }
 
 TEST(BreathingDriver, RejectsEventsOutOfOrderAndUnreachableTargets) {

@@ -67,4 +67,17 @@ double surface_area(const TriMesh& mesh) {
   return s / 2.0;
 }
 
+std::optional<double> x_crossing(const TriMesh& mesh, std::uint32_t t, double y, double z) {
+  const Eigen::Vector3d& a = mesh.positions[mesh.triangles[t][0]];
+  const Eigen::Vector3d& b = mesh.positions[mesh.triangles[t][1]];
+  const Eigen::Vector3d& c = mesh.positions[mesh.triangles[t][2]];
+  // Barycentric coordinates of (y, z) in the triangle's (y, z) projection.
+  const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
+  if (det == 0) return std::nullopt;
+  const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / det;
+  const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / det;
+  if (u < 0 || v < 0 || u + v > 1) return std::nullopt;
+  return a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x());
+}
+
 }  // namespace lungar::sim

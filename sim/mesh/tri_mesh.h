@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -53,5 +54,10 @@ Eigen::Vector3d volume_centroid(const TriMesh& mesh);
 
 /// Total surface area, mm^2.
 double surface_area(const TriMesh& mesh);
+
+/// Where the line along x through (y, z) crosses triangle `t` of `mesh`: its x, or nothing where (y, z) is outside
+/// the triangle's (y, z) projection or the triangle is edge-on to x. Counting these crossings tells inside from
+/// outside (the voxeliser's spans, the interior field's points).
+std::optional<double> x_crossing(const TriMesh& mesh, std::uint32_t t, double y, double z);
 
 }  // namespace lungar::sim

@@ -74,16 +74,8 @@ bool InteriorDisplacement::Lung::encloses(const Eigen::Vector3d& p) const {
   if (j < 0 || k < 0 || j >= bins_y || k >= bins_z) return false;
   int crossings = 0;
   for (std::uint32_t t : bins[static_cast<std::size_t>(k) * bins_y + j]) {
-    const Eigen::Vector3d& a = mesh.positions[mesh.triangles[t][0]];
-    const Eigen::Vector3d& b = mesh.positions[mesh.triangles[t][1]];
-    const Eigen::Vector3d& c = mesh.positions[mesh.triangles[t][2]];
-    // Barycentric coordinates of (y, z) in the triangle's (y, z) projection, as sim/voxel/voxelize.cpp.
-    const double det = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
-    if (det == 0) continue;
-    const double u = ((p.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (p.z() - a.z())) / det;
-    const double v = ((b.y() - a.y()) * (p.z() - a.z()) - (p.y() - a.y()) * (b.z() - a.z())) / det;
-    if (u < 0 || v < 0 || u + v > 1) continue;
-    if (a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()) > p.x()) ++crossings;
+    const std::optional<double> x = x_crossing(mesh, t, p.y(), p.z());
+    if (x && *x > p.x()) ++crossings;
   }
   return crossings % 2 == 1;
 }

@@ -44,18 +44,8 @@ VoxelMask voxelize(const TriMesh& mesh, double h) {
     for (int j = 0; j < ny; ++j) {
       const double y = m.grid.origin.y() + h * j, z = m.grid.origin.z() + h * k;
       cross.clear();
-      for (std::uint32_t t : bin[static_cast<std::size_t>(k) * ny + j]) {
-        const Eigen::Vector3d& a = mesh.positions[mesh.triangles[t][0]];
-        const Eigen::Vector3d& b = mesh.positions[mesh.triangles[t][1]];
-        const Eigen::Vector3d& c = mesh.positions[mesh.triangles[t][2]];
-        // Barycentric coordinates of (y, z) in the triangle's (y, z) projection.
-        const double d = (b.y() - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (b.z() - a.z());
-        if (d == 0) continue;
-        const double u = ((y - a.y()) * (c.z() - a.z()) - (c.y() - a.y()) * (z - a.z())) / d;
-        const double v = ((b.y() - a.y()) * (z - a.z()) - (y - a.y()) * (b.z() - a.z())) / d;
-        if (u < 0 || v < 0 || u + v > 1) continue;
-        cross.push_back(a.x() + u * (b.x() - a.x()) + v * (c.x() - a.x()));
-      }
+      for (std::uint32_t t : bin[static_cast<std::size_t>(k) * ny + j])
+        if (const std::optional<double> x = x_crossing(mesh, t, y, z)) cross.push_back(*x);
       std::sort(cross.begin(), cross.end());
       for (std::size_t c = 0; c + 1 < cross.size(); c += 2) {
         const int from = static_cast<int>(std::ceil((cross[c] - m.grid.origin.x()) / h));

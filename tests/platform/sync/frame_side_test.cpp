@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <mutex>
+#include <string>
 #include <thread>
 
 #define LUNGAR_ALLOCATION_COUNTERS_ONLY
@@ -66,7 +68,14 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
   auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
   ASSERT_TRUE(script);
   ASSERT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, {}, t0));
-  auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee), quiet);
+  // The trainee's log is kept: its "sync lost" line says how long the instructor has been silent.
+  std::mutex log_mutex;
+  std::string trainee_log;
+  auto keep = [&](const std::string& line) {
+    std::lock_guard lock(log_mutex);
+    trainee_log += line + "\n";
+  };
+  auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee), keep);
   ASSERT_TRUE(trainee) << trainee.error();
   auto learner = std::make_shared<ClassroomStation>(trainee.take());
 
@@ -137,6 +146,17 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   EXPECT_STREQ(poses.state(), "sync lost");
+  {
+    // The silence it reports is the one that made it lost: past the 250 ms limit, and not much more, since the
+    // frames above check every 5 ms.
+    std::lock_guard lock(log_mutex);
+    const std::string said = "sync lost: no word from instructor 'instructor' for ";
+    const auto at = trainee_log.find(said);
+    ASSERT_NE(at, std::string::npos) << trainee_log;
+    const long silent_ms = std::stol(trainee_log.substr(at + said.size()));
+    EXPECT_GE(silent_ms, 250) << trainee_log;
+    EXPECT_LE(silent_ms, 1500) << trainee_log;
+  }
   now = monotonic_ns();
   EXPECT_NEAR(breathing.at(now).t_s, seconds_between(t0, now), 0.005);
 }

@@ -70,7 +70,7 @@ double total(const Where& w) { return w.change_ml[0] + w.change_ml[1]; }
 std::size_t left_of(const BakedAsset& a) { return a.lungs[0].name == "left" ? 0 : 1; }
 
 TEST(Ards, SupineTheBreathMovesVentralAndProneTheDorsalLungTakesItBack) {
-  const BakedAsset healthy = test::sliding_bake().asset, ards = with({"ards:0.6"});
+  const BakedAsset healthy = test::sliding_asset(), ards = with({"ards:0.6"});
   const Where healthy_supine = breathe(healthy, kSupine, 500), supine = breathe(ards, kSupine, 500),
               prone = breathe(ards, kProne, 500);
   EXPECT_GE(supine.ventral_share, healthy_supine.ventral_share + 0.05)
@@ -83,7 +83,7 @@ TEST(Ards, SupineTheBreathMovesVentralAndProneTheDorsalLungTakesItBack) {
 }
 
 TEST(Ards, LyingOnASideTheLowerLungCollapsesAndTheUpperTakesMore) {
-  const BakedAsset healthy = test::sliding_bake().asset, ards = with({"ards:0.6"});
+  const BakedAsset healthy = test::sliding_asset(), ards = with({"ards:0.6"});
   const std::size_t left = left_of(healthy);
   const Where before = breathe(healthy, kLeftSideDown, 500), after = breathe(ards, kLeftSideDown, 500);
   EXPECT_LT(after.change_ml[left] / total(after), before.change_ml[left] / total(before) - 0.05)
@@ -101,7 +101,7 @@ TEST(Ards, ProneCollapsesLessOfTheLungThanSupineAsThePorcineCtShows) {
 }
 
 TEST(Ards, SeverityZeroIsTheHealthyForceWithinTheSamplesFit) {
-  const BakedAsset healthy = test::sliding_bake().asset, none = with({"ards:0"});
+  const BakedAsset healthy = test::sliding_asset(), none = with({"ards:0"});
   for (const Eigen::Vector3d& g : {kSupine, kProne, kLeftSideDown, Eigen::Vector3d(0, 0, -1)}) {
     const std::vector<float> a = displacement_vectors(healthy, g, 500), b = displacement_vectors(none, g, 500);
     double diff = 0, norm = 0;
@@ -123,7 +123,7 @@ TEST(Ards, TheShCarriesThePatternWhereTheLinearBasisCannot) {
 }
 
 TEST(Ards, TheEq1BaselineTakesTheSamePatternAtEachVertex) {
-  const BakedAsset& healthy = test::sliding_bake().asset;
+  const BakedAsset& healthy = test::sliding_asset();
   const BakedAsset ards = with({"ards:0.6"});
   std::vector<float> healthy_f(ards.vertex_count()), sick_f(ards.vertex_count());
   applied_force(healthy, kSupine, healthy_f);
@@ -171,7 +171,7 @@ TEST(Ards, WithoutACollapseBothFitsCarryThePressureInEveryPosture) {
 
 TEST(Ards, ALungWithFewerVerticesThanTheFitHasUnknownsIsRefused) {
   // The fit solves for L^2 SH coefficients and 4 linear weights: a lung needs that many samples at the least.
-  BakedAsset a = test::sliding_bake().asset;
+  BakedAsset a = test::sliding_asset();
   const std::uint32_t unknowns = a.coefficients() + 4;
   a.lungs[0].vertex_count = unknowns - 1;
   const auto few = DependentCollapse::build(a, 0.6);
@@ -180,13 +180,13 @@ TEST(Ards, ALungWithFewerVerticesThanTheFitHasUnknownsIsRefused) {
 }
 
 TEST(Ards, AnAssetWithoutSpherePointsIsRefusedWithWhatToDo) {
-  BakedAsset old = test::sliding_bake().asset;
+  BakedAsset old = test::sliding_asset();
   old.sphere_dirs.clear();
   const Status s = apply_pathologies(old, {"ards:0.5"});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("'ards:0.5'"), std::string::npos) << s.error();
   EXPECT_NE(s.error().find("re-bake"), std::string::npos) << s.error();
-  BakedAsset twice = test::sliding_bake().asset;
+  BakedAsset twice = test::sliding_asset();
   const Status s2 = apply_pathologies(twice, {"ards:0.5", "ards:0.2"});
   ASSERT_FALSE(s2);
   EXPECT_NE(s2.error().find("twice"), std::string::npos) << s2.error();

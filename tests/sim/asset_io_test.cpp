@@ -15,6 +15,7 @@
 namespace lungar::sim {
 namespace {
 
+using test::small_asset;
 using test::small_bake;
 using test::TempDir;
 
@@ -33,7 +34,7 @@ TEST(Crc32, MatchesTheStandardCheckValue) {
 
 TEST(AssetIo, TheSlidingModelsDirectionsSurviveTheRoundTrip) {
   TempDir dir;
-  const BakedAsset& a = test::sliding_bake().asset;
+  const BakedAsset& a = test::sliding_asset();
   ASSERT_TRUE(write_asset(a, dir.file("s.lungbake")));
   const Result<BakedAsset> b = load_asset(dir.file("s.lungbake"));
   ASSERT_TRUE(b) << b.error();
@@ -54,7 +55,7 @@ TEST(AssetIo, AVersionOneAssetLoadsAsThePapersModel) {
 TEST(AssetIo, AnUnknownMotionModelIsRefusedByName) {
   TempDir dir;
   const std::string path = dir.file("m.lungbake");
-  ASSERT_TRUE(write_asset(small_bake().asset, path));
+  ASSERT_TRUE(write_asset(small_asset(), path));
   std::string bytes;
   {
     std::ifstream in(path, std::ios::binary);
@@ -121,7 +122,7 @@ TEST(AssetIo, RoundTripKeepsEveryField) {
 
 TEST(AssetIo, WithoutTransferRowsToo) {
   TempDir dir;
-  BakedAsset a = small_bake().asset;
+  BakedAsset a = small_asset();
   a.transfer_row_ptr.clear();
   a.transfer_cols.clear();
   a.transfer_vals.clear();
@@ -135,7 +136,7 @@ class DamagedAsset : public ::testing::Test {
  protected:
   void SetUp() override {
     path_ = dir_.file("a.lungbake");
-    ASSERT_TRUE(write_asset(small_bake().asset, path_));
+    ASSERT_TRUE(write_asset(small_asset(), path_));
     bytes_ = read_bytes(path_);
   }
   /// Loads `bytes` and returns the error, which must name the file.
@@ -199,7 +200,7 @@ TEST(AssetIo, MissingFileAndUnwritableFolder) {
   EXPECT_NE(r.error().find("none.lungbake"), std::string::npos);
   // A missing folder is made (as for every output), but not under a plain file: that write must fail cleanly.
   std::ofstream(dir.file("blocker")) << "a file, not a folder";
-  const Status s = write_asset(small_bake().asset, dir.file("blocker/a.lungbake"));
+  const Status s = write_asset(small_asset(), dir.file("blocker/a.lungbake"));
   EXPECT_FALSE(s);
   EXPECT_NE(s.error().find("a.lungbake"), std::string::npos);
   EXPECT_EQ(dir.entries(), 1u) << "only the blocking file; no partial asset beside it";
@@ -207,7 +208,7 @@ TEST(AssetIo, MissingFileAndUnwritableFolder) {
 
 TEST(AssetIo, AnUnsoundAssetIsNotWritten) {
   TempDir dir;
-  BakedAsset a = small_bake().asset;
+  BakedAsset a = small_asset();
   a.triangles.back() = a.vertex_count() + 5;
   const Status s = write_asset(a, dir.file("bad.lungbake"));
   EXPECT_FALSE(s);

@@ -128,7 +128,7 @@ std::vector<double> lung_volume_changes(const BakedAsset& a, const Eigen::Vector
 }
 
 TEST(BreathShare, TheBakedPairBreathesIntoItsLowerLungAndKeepsTheTidalVolume) {
-  const BakedAsset& a = test::sliding_bake().asset;
+  const BakedAsset& a = test::sliding_asset();
   ASSERT_EQ(a.lungs.size(), 2u);
   const std::size_t left = index_of(a, "left"), right = index_of(a, "right");
   const std::vector<double> left_down = lung_volume_changes(a, kLeftSideDown);

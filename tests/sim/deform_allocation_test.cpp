@@ -23,7 +23,7 @@ TEST(Allocation, PerFrameDeformationAllocatesNothing) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "operator new belongs to AddressSanitizer in this build";
 #else
-  const BakedAsset& a = test::small_bake().asset;
+  const BakedAsset& a = test::small_asset();
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(3 * a.vertex_count());
   Eq1Deformer eq1(a);
   const long before = lungar::testing::g_allocations.load();

@@ -20,6 +20,7 @@
 namespace lungar::sim {
 namespace {
 
+using test::sliding_asset;
 using test::sliding_bake;
 using test::TempDir;
 
@@ -76,14 +77,14 @@ class Export : public ::testing::Test {
  protected:
   void SetUp() override {
     asset_ = dir_.file("lungs.lungbake");
-    ASSERT_TRUE(write_asset(sliding_bake().asset, asset_));
+    ASSERT_TRUE(write_asset(sliding_asset(), asset_));
   }
   TempDir dir_;
   std::string asset_;
 };
 
 TEST_F(Export, WritesTheDisplacedSurfaceWhoseVolumeChangeIsTheOneAskedFor) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   ExportCommand c;
   c.asset = asset_;
   c.posture = "supine";
@@ -151,7 +152,7 @@ TEST_F(Export, ASeriesIsOneBreathFromRest) {
   EXPECT_NEAR((*written)[0].volume_ml, 0.0, 1.0) << "a breath starts at the end of an expiration";
   double peak = 0;
   for (const ExportedFile& f : *written) {
-    EXPECT_EQ(read_ply(f.path).xyz.size(), sliding_bake().asset.positions.size());
+    EXPECT_EQ(read_ply(f.path).xyz.size(), sliding_asset().positions.size());
     peak = std::max(peak, f.volume_ml);
   }
   EXPECT_GT(peak, 250.0);

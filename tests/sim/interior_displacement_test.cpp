@@ -17,18 +17,18 @@
 namespace lungar::sim {
 namespace {
 
-using test::sliding_bake;
+using test::sliding_asset;
 
 using test::kSupine;
 
 /// The field of the shared bake, built once per test binary.
 const InteriorDisplacement& field() {
-  static const InteriorDisplacement f(sliding_bake().asset);
+  static const InteriorDisplacement f(sliding_asset());
   return f;
 }
 
 const std::vector<float>& supine_surface() {
-  static const std::vector<float> d = displacement_vectors(sliding_bake().asset, kSupine, 500.0);
+  static const std::vector<float> d = displacement_vectors(sliding_asset(), kSupine, 500.0);
   return d;
 }
 
@@ -50,7 +50,7 @@ Eigen::Vector3d vertex(const BakedAsset& a, std::size_t i) {
 }
 
 TEST(InteriorDisplacement, APointNearTheBaseMovesMoreThanOneNearTheApex) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   for (const BakedLung& lung : a.lungs) {
     // The vertical line through the lung's rest centroid of vertices; its lowest and highest points inside.
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -71,7 +71,7 @@ TEST(InteriorDisplacement, APointNearTheBaseMovesMoreThanOneNearTheApex) {
 }
 
 TEST(InteriorDisplacement, NearTheSurfaceItMeetsTheSurfacesMotion) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   const std::vector<float>& d = supine_surface();
   // Every 20th vertex, a point depth mm inside along its normal: the mean gap to the vertex's own motion.
   auto gap_at = [&](double depth, double& moved) {
@@ -106,7 +106,7 @@ TEST(InteriorDisplacement, NearTheSurfaceItMeetsTheSurfacesMotion) {
 }
 
 TEST(InteriorDisplacement, AnAffineMotionOfTheSurfaceIsReproducedInside) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   // d = A x + b: harmonic, so its own extension; the grid meets the surface to within a step.
   Eigen::Matrix3d A;
   A << 0.02, -0.01, 0.03, 0.00, 0.05, -0.02, 0.04, 0.01, -0.06;
@@ -127,7 +127,7 @@ TEST(InteriorDisplacement, AnAffineMotionOfTheSurfaceIsReproducedInside) {
 }
 
 TEST(InteriorDisplacement, NoInteriorPointMovesBeyondTheSurfacesExtremes) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   const std::vector<float>& d = supine_surface();
   const InteriorPoints pts = field().sample(3000, 11);
   const std::vector<float> di = field().displacement(d, pts);
@@ -153,7 +153,7 @@ TEST(InteriorDisplacement, NoInteriorPointMovesBeyondTheSurfacesExtremes) {
 }
 
 TEST(InteriorDisplacement, SamplesAreInsideUniformOverTheVolumeAndRepeatable) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   const InteriorPoints pts = field().sample(4000, 3);
   ASSERT_EQ(pts.size(), 4000u);
   EXPECT_EQ(pts.positions, field().sample(4000, 3).positions) << "the same seed, the same points";

@@ -51,7 +51,7 @@ TEST(TensionPneumothorax, TheMediastinumMovesOverAndPressesTheOtherLungFromItsMe
 }
 
 TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
-  const BakedAsset healthy = test::sliding_bake().asset, sick = with({"pneumothorax:right:40:tension"});
+  const BakedAsset healthy = test::sliding_asset(), sick = with({"pneumothorax:right:40:tension"});
   Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick);
   ASSERT_TRUE(shapes) << shapes.error();
   for (std::size_t l = 0; l < healthy.lungs.size(); ++l) {
@@ -85,7 +85,7 @@ TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
 }
 
 TEST(LungShapes, AChangeOfResponseIsRefusedByLungAndArdsRidesWithTheFigures) {
-  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset healthy = test::sliding_asset();
   Result<std::vector<LungShape>> c = lung_shapes(healthy, with({"consolidation:left:lower"}));
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().find("lung 'left'"), std::string::npos) << c.error();

@@ -23,6 +23,7 @@ namespace lungar::sim {
 namespace {
 
 using test::lung_mesh;
+using test::sliding_asset;
 using test::sliding_bake;
 using test::small_bake;
 
@@ -72,7 +73,7 @@ TEST(SurfaceRegions, TheDiaphragmIsTheDownwardBaseAndTheMediastinumFacesTheMidli
 }
 
 TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   ASSERT_EQ(a.motion_model, MotionModel::sliding);
   const auto regions = asset_regions(a);
   const MotionFigures supine = motion_figures(a, displacement_vectors(a, kSupine, 500), regions);
@@ -93,7 +94,7 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
 }
 
 TEST(SlidingModel, ThePapersModelOnTheSameLungsMovesLikeABalloon) {
-  const BakedAsset& paper = small_bake().asset;
+  const BakedAsset& paper = test::small_asset();
   ASSERT_EQ(paper.motion_model, MotionModel::paper);
   for (std::size_t i = 0; i < paper.normals.size(); ++i) ASSERT_EQ(paper.directions[i], paper.normals[i]);
   const MotionFigures f = motion_figures(paper, displacement_vectors(paper, kSupine, 500), {});
@@ -102,7 +103,7 @@ TEST(SlidingModel, ThePapersModelOnTheSameLungsMovesLikeABalloon) {
 }
 
 TEST(SlidingModel, DirectionsAreUnitAndPointWhereTheVertexMoves) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   std::size_t tilted = 0;
   for (std::uint32_t i = 0; i < a.vertex_count(); ++i) {
     const Eigen::Vector3f e(a.directions[3 * i], a.directions[3 * i + 1], a.directions[3 * i + 2]);
@@ -145,7 +146,7 @@ std::vector<double> exact_sliding(const BakedAsset& a, const Eigen::Vector3d& g,
 }
 
 TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   const std::uint32_t c = a.coefficients();
   for (const Eigen::Vector3d& g : {kSupine, kUpright, Eigen::Vector3d(1, 1, -1).normalized()}) {
     std::vector<float> force(a.lungs.size() * c), d7(a.vertex_count());
@@ -181,7 +182,7 @@ TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
 }
 
 TEST(SlidingModel, TidalVolumeIsExactInEveryPosture) {
-  const BakedAsset& a = sliding_bake().asset;
+  const BakedAsset& a = sliding_asset();
   const double rest = enclosed_volume(a.triangles, a.positions.data());
   for (const Eigen::Vector3d& g : {kSupine, kProne, kUpright, Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0)}) {
     const std::vector<float> d = displacement_vectors(a, g, 500);

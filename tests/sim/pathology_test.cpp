@@ -71,7 +71,7 @@ Breath breathe(const BakedAsset& a, double ml) {
 
 
 TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTheBreath) {
-  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset healthy = test::sliding_asset();
   const BakedAsset ptx = with({"pneumothorax:right:30"});
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
   const Breath before = breathe(healthy, 500), after = breathe(ptx, 500);
@@ -94,7 +94,7 @@ TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTh
 }
 
 TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKeepsBreathing) {
-  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset healthy = test::sliding_asset();
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
   const Breath before = breathe(healthy, 500);
   for (LungThird third : {LungThird::Lower, LungThird::Upper}) {
@@ -117,7 +117,7 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
 // outside the third keeps a response between the region's and the healthy one, linear in its distance, so that the
 // surface does not tear where the region ends. A step passed every other test (issue 42).
 TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
-  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset healthy = test::sliding_asset();
   const BakedAsset sick = with({"consolidation:right:middle"});
   const BakedLung& lung = healthy.lungs[index_of(healthy, "right")];
   double lo = 1e300, hi = -1e300;
@@ -148,7 +148,7 @@ TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
 }
 
 TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath) {
-  const BakedAsset healthy = test::sliding_bake().asset;
+  const BakedAsset healthy = test::sliding_asset();
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
   const Breath before = breathe(healthy, 500);
   const Breath both = breathe(with({"emphysema:0.75"}), 500);
@@ -181,7 +181,7 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
 // Emphysema scales each lung about its hilum (pathology.h): the map's fixed point is the area-weighted centre of
 // the lung's medial face (normals within 60 degrees of the midline) in the middle third of its height.
 TEST(Pathology, EmphysemaScalesEachLungAboutItsHilum) {
-  const BakedAsset healthy = test::sliding_bake().asset, larger = with({"emphysema:1"});
+  const BakedAsset healthy = test::sliding_asset(), larger = with({"emphysema:1"});
   const double s = std::cbrt(1.0 + kEmphysemaFrcGain);
   const auto point = [](const BakedAsset& a, std::size_t i) {
     return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
@@ -246,11 +246,11 @@ TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
 }
 
 TEST(Pathology, AListWithOneBadSpecLeavesTheAssetAsItWas) {
-  BakedAsset a = test::sliding_bake().asset;
+  BakedAsset a = test::sliding_asset();
   const Status s = apply_pathologies(a, {"pneumothorax:right:30", "consolidation:left:side"});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("consolidation:left:side"), std::string::npos) << s.error();
-  EXPECT_EQ(a.positions, test::sliding_bake().asset.positions);
+  EXPECT_EQ(a.positions, test::sliding_asset().positions);
   EXPECT_EQ(a.lungs[index_of(a, "right")].breath_weight, 1.0);
   BakedAsset one = a;
   one.lungs.resize(1);  // a single lung named by the bake: "left" or "right", not both
@@ -270,14 +270,14 @@ TEST(Pathology, TheSamePathologyTwiceIsRefusedNamingBothAndLeavesTheAssetAsItWas
       {{"emphysema:0.5", "emphysema:0.3:left"}, "one emphysema a lung"},
       {{"ards:0.6", "ards:0.3"}, "one ARDS"}};
   for (const auto& [specs, why] : repeated) {
-    BakedAsset a = test::sliding_bake().asset;
+    BakedAsset a = test::sliding_asset();
     const Status s = apply_pathologies(a, specs);
     ASSERT_FALSE(s) << specs.back();
     EXPECT_NE(s.error().find(why), std::string::npos) << s.error();
     EXPECT_NE(s.error().find("'" + specs.back() + "': repeats '" + specs.front() + "'"), std::string::npos)
         << s.error();
     EXPECT_EQ(s.error().find('\n'), std::string::npos);
-    EXPECT_EQ(a.positions, test::sliding_bake().asset.positions);
+    EXPECT_EQ(a.positions, test::sliding_asset().positions);
     EXPECT_FALSE(check_pathologies(specs));
   }
   EXPECT_TRUE(check_pathologies({"pneumothorax:right:30", "pneumothorax:left:20", "consolidation:left:upper",

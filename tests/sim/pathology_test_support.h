@@ -22,7 +22,7 @@ inline const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kLeftSideDown(1
 
 /// The sliding bake with `specs` applied (a failed spec fails the test that asked).
 inline BakedAsset with(const std::vector<std::string>& specs) {
-  BakedAsset a = sliding_bake().asset;
+  BakedAsset a = sliding_asset();
   const Status s = apply_pathologies(a, specs);
   EXPECT_TRUE(s) << s.error();
   return a;

@@ -40,7 +40,7 @@ double ventral_folded(const BakedAsset& a, const Eigen::Vector3d& g) {
 }
 
 TEST(VentralShare, FoldedFromTheForceItIsTheVertexSumAndProneRaisesIt) {
-  BakedAsset a = test::sliding_bake().asset;
+  BakedAsset a = test::sliding_asset();
   const Eigen::Vector3d supine(0, 1, 0), prone(0, -1, 0), left_down(1, 0, 0);
   for (const Eigen::Vector3d& g : {supine, prone, left_down})
     EXPECT_NEAR(ventral_folded(a, g), ventral_by_vertex(a, g), 1e-4) << g.transpose();

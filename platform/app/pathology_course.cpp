@@ -26,8 +26,8 @@ Result<std::vector<sim::LungShape>> state_of(const sim::BakedAsset& healthy, con
   Result<std::vector<sim::LungShape>> shapes = sim::lung_shapes(drawn, state);
   if (!shapes) {
     return fail(where + shapes.error() +
-                ": only a pneumothorax (tension too) or an emphysema can come or go while the lungs are drawn, and an "
-                "ARDS only from the start; a consolidation must be the drawn lungs' own (give it in the pathology "
+                ": only what reshapes a lung (a collapse, a larger rest) can come or go while the lungs are drawn; a "
+                "change of a lung's response (a consolidation) must be the drawn lungs' own (give it in the pathology "
                 "list, or --pathology, of every station)");
   }
   return shapes;
@@ -70,10 +70,9 @@ Result<std::shared_ptr<PathologyCourse>> PathologyCourse::create(const sim::Bake
     const sim::PathologyEvent& e = timeline.events[k];
     const std::string where = "pathology event " + std::to_string(k + 1) + " (" +
                               (e.add.empty() ? "remove " + e.remove : "add " + e.add) + "): ";
-    if (Result<sim::Pathology> p = sim::parse_pathology(e.add.empty() ? e.remove : e.add);
-        p && p->kind == sim::PathologyKind::Ards) {
-      return fail(where + "an ARDS cannot come or go during a run: its collapse would switch at once; give it in the "
-                  "pathology list for the whole run");
+    if (auto p = sim::parse_pathology(e.add.empty() ? e.remove : e.add); p && !(*p)->model().may_change_in_a_run()) {
+      return fail(where + "'" + std::string((*p)->model().name()) + "' cannot come or go during a run (its change "
+                  "would switch at once); give it in the pathology list for the whole run");
     }
     auto to = state_of(healthy, drawn, sim::present_after(timeline, k + 1), where);
     if (!to) return to.with_context("");

@@ -240,11 +240,13 @@ Status take_the_scenarios_pathologies(const std::optional<config::Scenario>& sce
   return ok();
 }
 
-/// An emphysema's poor recoil is the breathing's: the emphysema preset, unless the breathing was chosen otherwise.
+/// A pathology's breathing (an emphysema's poor recoil: the emphysema preset) is the breathing's, unless the
+/// breathing was chosen otherwise.
 void breathe_as_the_pathologies_do(Settings& s) {
-  if (!sim::has_emphysema(s.sim.pathologies) || s.breathing.preset != "normal" || !s.breathing.scenario.empty()) return;
-  s.breathing.preset = "emphysema";
-  log_line("pathology: emphysema breathes with the emphysema preset (compliant, slow to recoil: tau 1.5 s)");
+  const sim::BreathingHint hint = sim::breathing_of(s.sim.pathologies);
+  if (hint.preset.empty() || s.breathing.preset != "normal" || !s.breathing.scenario.empty()) return;
+  s.breathing.preset = hint.preset;
+  log_line("pathology: " + hint.spec + " breathes with the " + hint.preset + " preset");
 }
 
 }  // namespace

@@ -109,9 +109,7 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_flag("--procedural", o.procedural, "draw the procedural pair of lungs instead of the demo's CT lungs")
       ->excludes(asset);
   app.add_option("--pathology", o.pathologies,
-                 "SPEC, repeatable, each pathology once: pneumothorax:SIDE:PERCENT[:tension], "
-                 "consolidation:SIDE:REGION, emphysema:SEVERITY[:SIDE] or ards:SEVERITY (SIDE left or right, PERCENT 1 "
-                 "to 90, REGION upper, middle or lower, SEVERITY 0 to 1; default: sim.pathology)")
+                 "SPEC, repeatable, each pathology once: " + sim::pathology_syntaxes() + "; default: sim.pathology")
       ->allow_extra_args(false);
   app.add_option("--breath", o.breath_paths,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, a Varian "
@@ -188,7 +186,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (!o.asset_path.empty()) s.sim.asset = o.asset_path;
   if (!o.pathologies.empty()) {
     for (const std::string& spec : o.pathologies) {
-      if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) return p.with_context("--pathology: ");
+      if (auto p = sim::parse_pathology(spec); !p) return p.with_context("--pathology: ");
     }
     if (Status distinct = sim::check_pathologies(o.pathologies); !distinct) return distinct.with_context("--pathology: ");
     s.sim.pathologies = o.pathologies;

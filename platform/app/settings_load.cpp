@@ -65,7 +65,7 @@ void read_sim(TomlSection s, SimSettings& m) {
   s.choice("orientation_mode", m.orientation_mode, sim::kForceModeNames);
   s.texts("pathology", m.pathologies);
   for (const std::string& spec : m.pathologies) {
-    if (Result<sim::Pathology> p = sim::parse_pathology(spec); !p) s.fail("pathology", p.error());
+    if (auto p = sim::parse_pathology(spec); !p) s.fail("pathology", p.error());
   }
   if (Status distinct = sim::check_pathologies(m.pathologies); !distinct) s.fail("pathology", distinct.error());
   s.finish();

@@ -16,6 +16,7 @@
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
 #include "sim/bake_tool/export_command.h"
+#include "sim/pathology/pathology.h"
 
 namespace {
 
@@ -152,8 +153,7 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
       ->required();
   sub.add_option("--series", cmd.series, "N: one file per phase of a breath, N phases")->check(CLI::Range(1, 1000));
   sub.add_option("--pathology", cmd.pathologies,
-                 "SPEC: pneumothorax:SIDE:PERCENT, consolidation:SIDE:REGION (upper, middle, lower) or "
-                 "emphysema:SEVERITY[:SIDE] (0 to 1); repeatable")
+                 "SPEC: " + lungar::sim::pathology_syntaxes() + "; repeatable")
       ->allow_extra_args(false);
   sub.add_option("--interior", cmd.interior, "N: also write N points uniform over the lungs' volume (a fixed seed), "
                                              "moved by the harmonic extension of the surface's motion");

@@ -1,104 +1,109 @@
 /// @file pathology.h
-/// @brief The diseases a trainer switches on, each a named model applied to a baked asset when it is loaded: the
-///        runtime, `lungar-bake export` and the CPU paths all draw the changed asset, so they agree.
+/// @brief The diseases a trainer switches on, as plug-ins: each kind is a PathologyModel in a file of its own under
+///        sim/pathology/ (pneumothorax.cpp, consolidation.cpp, emphysema.cpp, ards.cpp, ...), listed once in
+///        pathology_list.h. A spec ("pneumothorax:right:30") parses into a Pathology that changes a baked asset
+///        when it is loaded: the runtime, `lungar-bake export` and the CPU paths all draw the changed asset, so they
+///        agree. The help texts, the settings' check and the docs' table come from the same list.
 ///
-/// - `pneumothorax:SIDE:PERCENT`: air in the pleural space lets the lung on SIDE collapse towards its hilum. It
-///   keeps its shape and shrinks about the hilum until it has lost PERCENT of its volume, which is what Light's
-///   index measures from a chest film (%PTX = 100 (1 - L^3 / H^3), L the lung's and H the hemithorax's diameter:
-///   a shape-keeping collapse). The collapsed lung takes kCollapsedLungBreathWeight of its healthy weight in the
-///   split of each breath (sim/force/breath_share.h), under a tenth of the tidal volume: the other lung takes the
-///   rest. `pneumothorax:SIDE:PERCENT:tension`: the air cannot leave, the pressure pushes the mediastinum over, and
-///   the collapsed lung with it moves kTensionShiftMm to the other side, pressing the other lung that far from its
-///   medial face (the tracheal deviation and mediastinal shift of a tension pneumothorax on the chest film).
-/// - `consolidation:SIDE:REGION` (upper, middle or lower third of the lung's height): the region fills with fluid
-///   or cells, stops ventilating and stiffens. Its surface moves kConsolidatedResponse of its healthy motion (each
-///   vertex's transfer row, T^I_lm, its linear basis and its off-axis part scaled), with a ramp of
-///   kConsolidationRamp of the height outside the region so that the surface does not tear. The lung's weight in
-///   the split falls by the share of its swept volume it lost in the posture (V(g) / V_healthy(g)): the tidal
-///   volume stays what the breathing delivers, so the part of it the region no longer takes spreads over
-///   everything that still ventilates, in both lungs, in proportion.
-///
-/// - `emphysema:SEVERITY[:SIDE]` (SEVERITY 0 to 1; both lungs unless SIDE): destroyed alveolar walls trap air, so
-///   the lung rests larger. It grows about its hilum, keeping its shape, to 1 + kEmphysemaFrcGain x SEVERITY of its
-///   volume (severe COPD's functional residual capacity is 130-150 % of predicted). Its poor recoil, a slower and
-///   longer expiration, is the breathing's: the runtime breathes with the `emphysema` preset (compliance 140
-///   mL/cmH2O, resistance 10.5 cmH2O.s/L, tau 1.5 s against the normal 0.36 s) when the breathing is at its default.
-/// - `ards:SEVERITY` (0 to 1): the acute respiratory distress syndrome's heavy, wet lung collapses where it lies
-///   lowest, and which part that is follows the posture: supine the dorsal lung stops ventilating and the breath
-///   moves ventral, prone the dorsal lung recruits. Not a change of the asset but of the applied force, evaluated
-///   per posture (sim/force/dependent_collapse.h): a pattern that is not linear in position, carried by the SH.
-///   Applied after the others, whatever the order given.
-///
-/// The first three are changes of the asset's per-vertex response and per-lung figures, made in milliseconds at
-/// load: no second bake, no larger asset, no work in the frame; ARDS costs a projection of its pattern per change
-/// of posture (docs/design.md, "Pathologies").
+/// Adding one: a file sim/pathology/NAME.cpp defining `const PathologyModel& NAME_pathology()` (its spec's parser,
+/// its change of the asset, what it says of itself), and the line `LUNGAR_PATHOLOGY(NAME)` in pathology_list.h.
+/// The shared lung operations (scaling about the hilum, resumming the swept volumes, spec fields) are in
+/// lung_changes.h. docs/design.md ("Pathologies") has the models' physiology; docs/pathologies.md the table.
 #pragma once
 
+#include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "config/base/enum_names.h"
 #include "config/base/result.h"
 #include "sim/asset/baked_asset.h"
 
 namespace lungar::sim {
 
-enum class PathologyKind { Pneumothorax, Consolidation, Emphysema, Ards };
-enum class LungThird { Upper, Middle, Lower };
+class PathologyModel;
 
-inline constexpr EnumNames<PathologyKind, 4> kPathologyKindNames{{{{PathologyKind::Pneumothorax, "pneumothorax"},
-                                                                   {PathologyKind::Consolidation, "consolidation"},
-                                                                   {PathologyKind::Emphysema, "emphysema"},
-                                                                   {PathologyKind::Ards, "ards"}}}};
-inline constexpr EnumNames<LungThird, 3> kLungThirdNames{
-    {{{LungThird::Upper, "upper"}, {LungThird::Middle, "middle"}, {LungThird::Lower, "lower"}}}};
+/// One pathology as the trainer gave it: a parsed spec, ready to change an asset.
+class Pathology {
+ public:
+  Pathology(const PathologyModel& model, std::string_view spec, std::string side)
+      : model_(&model), spec_(spec), side_(std::move(side)) {}
+  virtual ~Pathology() = default;
 
-/// A collapsed lung's weight in the split of the breath, as a fraction of its healthy one: with the CT demo's
-/// 53 % right lung, 5 % of its weight is 6 % of the breath supine and 8 % lying on it.
-inline constexpr double kCollapsedLungBreathWeight = 0.05;
-/// How much of its healthy motion a consolidated region's surface keeps.
-inline constexpr double kConsolidatedResponse = 0.1;
-/// The ramp from consolidated to healthy outside the region, as a fraction of the lung's height.
-inline constexpr double kConsolidationRamp = 0.05;
-/// Emphysema at severity 1 rests this much larger (a share of the healthy volume).
-inline constexpr double kEmphysemaFrcGain = 0.4;
-/// A tension pneumothorax's mediastinal shift: a shift of 1 to 3 cm on the chest film is the usual sign.
-inline constexpr double kTensionShiftMm = 20.0;
-/// Pneumothorax sizes accepted, percent of the lung's volume.
-inline constexpr double kMinPneumothoraxPercent = 1.0, kMaxPneumothoraxPercent = 90.0;
+  const PathologyModel& model() const { return *model_; }
+  /// As the user wrote it.
+  const std::string& spec() const { return spec_; }
+  /// The lung's name in the asset ("left", "right"), or "" for every lung.
+  const std::string& side() const { return side_; }
 
-struct Pathology {
-  PathologyKind kind = PathologyKind::Pneumothorax;
-  std::string side;                     ///< the lung's name in the asset: "left" or "right" ("" emphysema: both)
-  double percent = 0;                   ///< pneumothorax: the volume lost, percent
-  bool tension = false;                 ///< pneumothorax: the mediastinum pushed over
-  LungThird region = LungThird::Lower;  ///< consolidation: which third of the height
-  double severity = 0;                  ///< emphysema, ards: 0 to 1
-  std::string spec;                     ///< as the user wrote it
+  /// Whether `other`, of the same model, changes what this one changes, so that applying both would compound it
+  /// (two pneumothoraces of one lung collapse it twice). By default: the same lung, or either of them every lung's.
+  virtual bool overlaps(const Pathology& other) const {
+    return side_.empty() || other.side_.empty() || side_ == other.side_;
+  }
+  /// Changes `asset` at load (its per-vertex response, per-lung figures, or the force it takes per posture); on an
+  /// error the caller drops the asset it was given (apply_pathologies works on a copy).
+  virtual Status apply(BakedAsset& asset) const = 0;
+
+ private:
+  const PathologyModel* model_;
+  std::string spec_;
+  std::string side_;
 };
+
+/// One kind of pathology: what it is called, how its spec reads, and what it says of itself.
+class PathologyModel {
+ public:
+  virtual ~PathologyModel() = default;
+  /// The spec's first field, e.g. "pneumothorax".
+  virtual std::string_view name() const = 0;
+  /// The spec's form, e.g. "pneumothorax:SIDE:PERCENT[:tension]".
+  virtual std::string_view syntax() const = 0;
+  /// What its fields take, "; " between them: "SIDE left or right; PERCENT 1 to 90".
+  virtual std::string_view fields() const = 0;
+  /// One line for the docs' table: what it models.
+  virtual std::string_view summary() const = 0;
+  /// What is expected instead of a second one that overlaps (check_pathologies' error).
+  virtual std::string_view once() const = 0;
+  /// Parses `spec`, whose `fields[0]` is name(); the error is one line naming the spec and the field.
+  virtual Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
+                                                   std::span<const std::string_view> fields) const = 0;
+  /// Whether it may come or go while a run goes on (false: only from the start).
+  virtual bool may_change_in_a_run() const { return true; }
+  /// Whether it is applied after every other, whatever the order given (its fit depends on what they leave).
+  virtual bool applied_last() const { return false; }
+  /// The breathing preset the patient breathes with when the breathing is at its default ("" for none).
+  virtual std::string_view breathing_preset() const { return ""; }
+};
+
+/// Every pathology lungar knows, in pathology_list.h's order.
+std::span<const PathologyModel* const> pathology_models();
+
+/// "pneumothorax:SIDE:PERCENT[:tension], consolidation:SIDE:REGION, ... (SIDE left or right, ...)": the help
+/// texts' list, from the models.
+std::string pathology_syntaxes();
+
+/// The docs' table (markdown, a row a model): docs/pathologies.md holds it, and a test keeps the two the same.
+std::string pathology_table();
 
 /// "pneumothorax:right:30", "consolidation:left:upper", "emphysema:0.5", "ards:0.6" -> a Pathology, or one line
 /// saying what was expected.
-Result<Pathology> parse_pathology(std::string_view spec);
+Result<std::shared_ptr<const Pathology>> parse_pathology(std::string_view spec);
 
-/// Whether `a` and `b` change the same thing, so that applying both would compound it (two pneumothoraces of a
-/// lung collapse it twice): two pneumothoraces of one lung, two consolidations of one third of one lung, two
-/// emphysemas of one lung (an emphysema without SIDE is both lungs'), two ARDS.
-bool same_pathology(const Pathology& a, const Pathology& b);
-
-/// Every spec parses and none is the same pathology as one before it (same_pathology); the error names both specs
-/// and what was expected.
+/// Every spec parses and none overlaps one before it of the same model; the error names both specs and what was
+/// expected.
 Status check_pathologies(const std::vector<std::string>& specs);
 
-/// Applies `p` to `asset`; an error (asset untouched) when the asset has no lung on that side.
-Status apply_pathology(BakedAsset& asset, const Pathology& p);
-
-/// Whether any of `specs` is an emphysema (whose recoil is the breathing's: the runtime's preset).
-bool has_emphysema(const std::vector<std::string>& specs);
-
-/// Parses and applies each spec in order (ARDS last); the error names the spec (a repeated one, check_pathologies,
-/// too). All or nothing: on an error `asset` is unchanged.
+/// Parses and applies each spec in order (those applied_last() last); the error names the spec (a repeated one,
+/// check_pathologies, too). All or nothing: on an error `asset` is unchanged.
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs);
+
+/// The breathing a pathology asks for: the first of `specs` whose model has a preset (an emphysema: "emphysema"),
+/// and that spec; both "" when none has.
+struct BreathingHint {
+  std::string spec, preset;
+};
+BreathingHint breathing_of(const std::vector<std::string>& specs);
 
 }  // namespace lungar::sim

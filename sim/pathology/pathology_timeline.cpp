@@ -22,7 +22,7 @@ Status check_timeline(const PathologyTimeline& timeline) {
     if (e.add.empty() == e.remove.empty()) return fail(where + "expected one of add and remove");
     previous_s = e.at_s;
     if (!e.add.empty()) {
-      if (Result<Pathology> p = parse_pathology(e.add); !p) return p.with_context(where + "add: ");
+      if (auto p = parse_pathology(e.add); !p) return p.with_context(where + "add: ");
       std::vector<std::string> then = present_after(timeline, k);  // at most 64 events: quadratic is fine
       then.push_back(e.add);
       if (Status s = check_pathologies(then); !s) return s.with_context(where + "add: ");

@@ -14,6 +14,9 @@ using namespace lungar;
 
 namespace {
 
+/// A collapsed lung's weight in the split of the breath (sim/pathology/pneumothorax.cpp).
+constexpr double kPneumothoraxBreathWeight = 0.05;
+
 const sim::BakedAsset& healthy() {
   static const sim::BakedAsset a = [] {
     sim::BakeOptions options;
@@ -81,9 +84,9 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
   auto centre_x = [&](double t) { return double{(*course)->at_seconds(t)[right].figures.centre[0]}; };
   EXPECT_EQ(weight(5.0), 1.0) << "healthy before";
   EXPECT_TRUE((*course)->at_seconds(5.0)[right].from_loaded.isApprox(Eigen::Affine3d::Identity(), 1e-9));
-  EXPECT_GT(weight(15.0), sim::kCollapsedLungBreathWeight);
+  EXPECT_GT(weight(15.0), kPneumothoraxBreathWeight);
   EXPECT_LT(weight(15.0), 1.0) << "collapsing";
-  EXPECT_NEAR(weight(25.0), sim::kCollapsedLungBreathWeight, 1e-12) << "collapsed";
+  EXPECT_NEAR(weight(25.0), kPneumothoraxBreathWeight, 1e-12) << "collapsed";
   EXPECT_NEAR(centre_x(25.0), sick.lungs[right].centre[0], 1e-3) << "the mediastinum pushed over";
   EXPECT_GT(centre_x(12.0), centre_x(11.0)) << "moving while it comes";
   EXPECT_LT(centre_x(12.0), centre_x(25.0));
@@ -103,9 +106,9 @@ TEST(PathologyCourse, WhatCannotComeOrGoIsRefusedNamingTheEvent) {
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nremove = \"pneumothorax:left:20\"\nover_s = 5.0\n", {},
           "is not present");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"consolidation:left:lower\"\nover_s = 5.0\n", {},
-          "a consolidation must be the drawn lungs' own");
+          "(a consolidation) must be the drawn lungs' own");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"ards:0.5\"\nover_s = 5.0\n", {},
-          "an ARDS cannot come or go during a run");
+          "'ards' cannot come or go during a run");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"pneumothorax:centre:20\"\nover_s = 5.0\n", {}, "SIDE");
   refused("[[event]]\nat_s = 1.0\nkind = \"pathology\"\nadd = \"pneumothorax:right:40:tension\"\nover_s = 5.0\n",
           {"pneumothorax:right:20"}, "repeats 'pneumothorax:right:20'");

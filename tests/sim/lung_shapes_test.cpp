@@ -15,6 +15,11 @@ namespace lungar::sim {
 namespace {
 
 using test::with;
+using test::kCollapsedLungBreathWeight;
+using test::kConsolidatedResponse;
+using test::kConsolidationRamp;
+using test::kEmphysemaFrcGain;
+using test::kTensionShiftMm;
 using test::index_of;
 
 
@@ -44,7 +49,7 @@ TEST(TensionPneumothorax, TheMediastinumMovesOverAndPressesTheOtherLungFromItsMe
   EXPECT_LT(tension.lungs[left].volume_const, plain.lungs[left].volume_const) << "a pressed lung sweeps less";
   auto p = parse_pathology("pneumothorax:right:40:tension");
   ASSERT_TRUE(p) << p.error();
-  EXPECT_TRUE(p->tension);
+  EXPECT_EQ((*p)->side(), "right");
   auto bad = parse_pathology("pneumothorax:right:40:tight");
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find(":tension"), std::string::npos) << bad.error();

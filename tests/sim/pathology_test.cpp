@@ -22,6 +22,11 @@ namespace {
 using test::kSupine;
 using test::index_of;
 using test::with;
+using test::kCollapsedLungBreathWeight;
+using test::kConsolidatedResponse;
+using test::kConsolidationRamp;
+using test::kEmphysemaFrcGain;
+using test::kTensionShiftMm;
 
 
 
@@ -97,11 +102,10 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
   const BakedAsset healthy = test::sliding_asset();
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
   const Breath before = breathe(healthy, 500);
-  for (LungThird third : {LungThird::Lower, LungThird::Upper}) {
-    const int t = third == LungThird::Lower ? 0 : 2;
-    const BakedAsset sick = with({std::string("consolidation:right:") + kLungThirdNames.name(third)});
+  for (const auto& [third, t] : {std::pair<std::string, int>{"lower", 0}, {"upper", 2}}) {
+    const BakedAsset sick = with({"consolidation:right:" + third});
     const Breath after = breathe(sick, 500);
-    SCOPED_TRACE(kLungThirdNames.name(third));
+    SCOPED_TRACE(third);
     ASSERT_GT(before.thirds_ml[right][t], 1.0);
     EXPECT_LE(after.thirds_ml[right][t], 0.20 * before.thirds_ml[right][t]) << "the consolidated third";
     EXPECT_NEAR(after.change_ml[right] + after.change_ml[left], 500.0, 15.0);
@@ -174,8 +178,10 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
   EXPECT_NEAR(one.rest_ml[left] / before.rest_ml[left], 1.0 + kEmphysemaFrcGain, 0.005);
   EXPECT_NEAR(one.rest_ml[right], before.rest_ml[right], 1e-9) << "SIDE: the other lung keeps its shape";
   EXPECT_EQ(with({"emphysema:0"}).positions, healthy.positions) << "severity 0 changes nothing";
-  EXPECT_TRUE(has_emphysema({"pneumothorax:right:30", "emphysema:0.5"}));
-  EXPECT_FALSE(has_emphysema({"pneumothorax:right:30"}));
+  const BreathingHint hint = breathing_of({"pneumothorax:right:30", "emphysema:0.5"});
+  EXPECT_EQ(hint.preset, "emphysema");
+  EXPECT_EQ(hint.spec, "emphysema:0.5");
+  EXPECT_EQ(breathing_of({"pneumothorax:right:30"}).preset, "");
 }
 
 // Emphysema scales each lung about its hilum (pathology.h): the map's fixed point is the area-weighted centre of
@@ -213,12 +219,20 @@ TEST(Pathology, EmphysemaScalesEachLungAboutItsHilum) {
 TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
   auto p = parse_pathology("pneumothorax:left:25.5");
   ASSERT_TRUE(p) << p.error();
-  EXPECT_EQ(p->kind, PathologyKind::Pneumothorax);
-  EXPECT_EQ(p->side, "left");
-  EXPECT_DOUBLE_EQ(p->percent, 25.5);
+  EXPECT_EQ((*p)->model().name(), "pneumothorax");
+  EXPECT_EQ((*p)->side(), "left");
+  EXPECT_EQ((*p)->spec(), "pneumothorax:left:25.5");
+  // Its PERCENT is what the lung loses.
+  const BakedAsset& healthy = test::sliding_asset();
+  const std::size_t left = index_of(healthy, "left");
+  EXPECT_NEAR(with({"pneumothorax:left:25.5"}).lungs[left].rest_volume_ml / healthy.lungs[left].rest_volume_ml,
+              1.0 - 0.255, 1e-9);
   auto c = parse_pathology("consolidation:right:middle");
   ASSERT_TRUE(c) << c.error();
-  EXPECT_EQ(c->region, LungThird::Middle);
+  EXPECT_EQ((*c)->model().name(), "consolidation");
+  EXPECT_TRUE((*c)->overlaps(**parse_pathology("consolidation:right:middle"))) << "its REGION is read";
+  EXPECT_FALSE((*c)->overlaps(**parse_pathology("consolidation:right:upper")));
+  EXPECT_FALSE((*c)->overlaps(**parse_pathology("consolidation:left:middle")));
   const std::pair<const char*, const char*> refused[] = {
       {"pneumothorax:right", "expected pneumothorax:SIDE:PERCENT"},
       {"pneumothorax:centre:30", "SIDE"},
@@ -286,3 +300,14 @@ TEST(Pathology, TheSamePathologyTwiceIsRefusedNamingBothAndLeavesTheAssetAsItWas
 
 }  // namespace
 }  // namespace lungar::sim
+
+// ARDS's pattern is fitted to the response and geometry the other pathologies leave, so it is applied last whatever
+// the order given (its model's applied_last): before a pneumothorax it would be fitted to the healthy right lung.
+TEST(Pathology, ArdsIsAppliedAfterTheOthersWhateverTheOrderGiven) {
+  const Breath given_first = breathe(with({"ards:0.6", "pneumothorax:right:30"}), 500);
+  const Breath given_last = breathe(with({"pneumothorax:right:30", "ards:0.6"}), 500);
+  for (std::size_t l = 0; l < given_last.change_ml.size(); ++l) {
+    EXPECT_NEAR(given_first.change_ml[l], given_last.change_ml[l], 1e-9) << l;
+    for (int t = 0; t < 3; ++t) EXPECT_NEAR(given_first.thirds_ml[l][t], given_last.thirds_ml[l][t], 1e-9) << l;
+  }
+}

@@ -20,6 +20,12 @@ namespace lungar::sim::test {
 inline const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kLeftSideDown(1, 0, 0), kRightSideDown(-1, 0, 0),
     kUpright(0, 0, -1);
 
+/// The pathology models' figures (the plug-ins' own constants, sim/pathology/<name>.cpp), as the tests expect them:
+/// a collapsed lung's weight in the split, a tension pneumothorax's shift, a consolidated region's response and its
+/// ramp (a share of the height), an emphysema's larger rest at severity 1.
+inline constexpr double kCollapsedLungBreathWeight = 0.05, kTensionShiftMm = 20.0, kConsolidatedResponse = 0.1,
+                        kConsolidationRamp = 0.05, kEmphysemaFrcGain = 0.4;
+
 /// The sliding bake with `specs` applied (a failed spec fails the test that asked).
 inline BakedAsset with(const std::vector<std::string>& specs) {
   BakedAsset a = sliding_asset();

@@ -133,6 +133,24 @@ void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor) {
     for (double& v : *lung.healthy_volumes) v *= s * s;
 }
 
+void scale_along_axis(BakedAsset& a, std::size_t l, int axis, double about, double k) {
+  BakedLung& lung = a.lungs[l];
+  const double before = swept(a, lung, lung.force_const);
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    a.positions[3 * i + axis] = static_cast<float>(about + k * (a.positions[3 * i + axis] - about));
+    Eigen::Vector3d n = vec3(&a.normals[3 * i]);
+    const double nu = n[axis];
+    a.areas[i] = static_cast<float>(a.areas[i] * std::sqrt(nu * nu + k * k * (1.0 - nu * nu)));
+    n *= k;
+    n[axis] = nu;
+    n.normalize();
+    for (int c = 0; c < 3; ++c) a.normals[3 * i + c] = static_cast<float>(n[c]);
+  }
+  lung.centre[axis] = static_cast<float>(about + k * (lung.centre[axis] - about));
+  lung.rest_volume_ml *= k;
+  resum_swept_volumes(a, lung, before);
+}
+
 void scale_response(BakedAsset& a, std::size_t i, float m) {
   const std::uint32_t c = a.coefficients();
   for (std::uint32_t k = 0; k < c; ++k) a.sh_coeffs[i * c + k] *= m;

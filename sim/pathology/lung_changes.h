@@ -69,6 +69,12 @@ Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l);
 /// millimetres over a smaller (or larger) surface.
 void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor);
 
+/// Scales lung l along lung-frame axis `axis` (0 x, 1 y, 2 z) by k about the plane at `about`: its positions,
+/// centre, areas and normals (a surface element under u -> k u: its area times sqrt(n_u^2 + k^2 (1 - n_u^2)), its
+/// normal along (n_u, k n_v, k n_w)), its rest volume (times k) and its swept volumes (summed again); its response
+/// per unit of force is its own.
+void scale_along_axis(BakedAsset& a, std::size_t l, int axis, double about, double k);
+
 /// Scales the response of lung l's vertex i (its transfer row, linear basis and off-axis part) by `m`.
 void scale_response(BakedAsset& a, std::size_t i, float m);
 

@@ -44,21 +44,7 @@ void push_mediastinum(BakedAsset& a, std::size_t l) {
     const auto [lo, hi] = extent(a, lung, 0);
     if (!(hi - lo > 2 * kTensionShiftMm)) continue;
     // Its lateral extreme is the one away from the pushed lung.
-    const double lateral = towards_other.x() > 0 ? hi : lo;
-    const double k = 1.0 - kTensionShiftMm / (hi - lo);
-    const double before = swept(a, lung, lung.force_const);
-    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
-      a.positions[3 * i] = static_cast<float>(lateral + k * (a.positions[3 * i] - lateral));
-      // A surface element under x -> k x: area times sqrt(n_x^2 + k^2 (n_y^2 + n_z^2)), normal along (n_x / k, n_y, n_z).
-      Eigen::Vector3d n = vec3(&a.normals[3 * i]);
-      a.areas[i] = static_cast<float>(a.areas[i] * std::sqrt(n.x() * n.x() + k * k * (n.y() * n.y() + n.z() * n.z())));
-      n.x() /= k;
-      n.normalize();
-      for (int c = 0; c < 3; ++c) a.normals[3 * i + c] = static_cast<float>(n[c]);
-    }
-    lung.centre[0] = static_cast<float>(lateral + k * (lung.centre[0] - lateral));
-    lung.rest_volume_ml *= k;
-    resum_swept_volumes(a, lung, before);
+    scale_along_axis(a, o, 0, towards_other.x() > 0 ? hi : lo, 1.0 - kTensionShiftMm / (hi - lo));
   }
 }
 

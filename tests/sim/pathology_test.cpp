@@ -27,52 +27,9 @@ using test::kConsolidatedResponse;
 using test::kConsolidationRamp;
 using test::kEmphysemaFrcGain;
 using test::kTensionShiftMm;
-
-
-
-std::span<const std::uint32_t> triangles_of(const BakedAsset& a, const BakedLung& lung) {
-  return {a.triangles.data() + lung.first_index, lung.index_count};
-}
-
-/// What a user reads from the asset breathing `ml` supine: each lung's rest volume and volume change (mL), and the
-/// volume each third of a lung's height sweeps (mL; triangles by their rest height, swept volume = area vector
-/// times mean displacement).
-struct Breath {
-  std::vector<double> rest_ml, change_ml;
-  std::vector<std::array<double, 3>> thirds_ml;
-};
-
-Breath breathe(const BakedAsset& a, double ml) {
-  const std::vector<float> d = displacement_vectors(a, kSupine, ml);
-  std::vector<float> moved(a.positions.size());
-  for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
-  Breath b;
-  for (const BakedLung& lung : a.lungs) {
-    const auto tris = triangles_of(a, lung);
-    const double rest = enclosed_volume(tris, a.positions.data());
-    b.rest_ml.push_back(rest / 1000.0);
-    b.change_ml.push_back((enclosed_volume(tris, moved.data()) - rest) / 1000.0);
-    double lo = 1e300, hi = -1e300;
-    for (std::uint32_t v : tris) {
-      lo = std::min(lo, double{a.positions[3 * v + 2]});
-      hi = std::max(hi, double{a.positions[3 * v + 2]});
-    }
-    std::array<double, 3> thirds{};
-    for (std::size_t t = 0; t + 2 < tris.size(); t += 3) {
-      Eigen::Vector3d p[3], mean_d = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) {
-        p[k] = Eigen::Vector3d(a.positions[3 * tris[t + k]], a.positions[3 * tris[t + k] + 1],
-                               a.positions[3 * tris[t + k] + 2]);
-        mean_d += Eigen::Vector3d(d[3 * tris[t + k]], d[3 * tris[t + k] + 1], d[3 * tris[t + k] + 2]) / 3.0;
-      }
-      const double z = (p[0].z() + p[1].z() + p[2].z()) / 3.0;
-      const int third = std::min(2, static_cast<int>(3.0 * (z - lo) / (hi - lo)));
-      thirds[third] += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).dot(mean_d) / 1000.0;
-    }
-    b.thirds_ml.push_back(thirds);
-  }
-  return b;
-}
+using test::Breath;
+using test::breathe;
+using test::triangles_of;
 
 
 TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTheBreath) {

@@ -255,9 +255,6 @@ TEST(Pathology, TheSamePathologyTwiceIsRefusedNamingBothAndLeavesTheAssetAsItWas
                                  "consolidation:left:lower", "emphysema:0.3:right", "ards:0.5"}));
 }
 
-}  // namespace
-}  // namespace lungar::sim
-
 // ARDS's pattern is fitted to the response and geometry the other pathologies leave, so it is applied last whatever
 // the order given (its model's applied_last): before a pneumothorax it would be fitted to the healthy right lung.
 TEST(Pathology, ArdsIsAppliedAfterTheOthersWhateverTheOrderGiven) {
@@ -268,3 +265,6 @@ TEST(Pathology, ArdsIsAppliedAfterTheOthersWhateverTheOrderGiven) {
     for (int t = 0; t < 3; ++t) EXPECT_NEAR(given_first.thirds_ml[l][t], given_last.thirds_ml[l][t], 1e-9) << l;
   }
 }
+
+}  // namespace
+}  // namespace lungar::sim

@@ -6,8 +6,8 @@ Usage: readme_commands_test.py --root SOURCE_DIR --build BUILD_DIR --cache CACHE
 
 The commands run with these substitutions only, each for the reason given:
   - `scripts/run` and a bare `lungar` are BUILD_DIR's platform/lungar: the test runs in a built tree, so no apt and
-    no second build, with the arguments exactly as written; `build-release/X` is BUILD_DIR/X for the same reason,
-    and `scripts/build --release && ` is dropped. Scripts that build for themselves (scripts/classroom-demo,
+    no second build, with the arguments exactly as written; `build/X` is BUILD_DIR/X for the same reason (the
+    tree scripts/run and scripts/test build), and a `scripts/build ... && ` before a command is dropped. Scripts that build for themselves (scripts/classroom-demo,
     scripts/plot-breathing) are given BUILD_DIR in LUNGAR_BUILD_DIR, their own way to name an existing tree.
   - A runtime run's `--seconds N` becomes `--seconds 1` (added where absent; a lone `lungar` runs 10 s), and
     scripts/classroom-demo gets 4 seconds as its SECONDS argument: the run is checked, not the lesson.
@@ -137,7 +137,7 @@ def table_rows(readme):
 
 # VAR=value before a command (a value may be a command's output, `$(...)`).
 ENV_PREFIX = r"(?:[A-Z_]+=(?:\$\([^)]*\)|\S+)\s+)*"
-COMMAND_START = re.compile("^" + ENV_PREFIX + r"(?:scripts/|build-release/|lungar\b)")
+COMMAND_START = re.compile("^" + ENV_PREFIX + r"(?:scripts/|build/|lungar\b)")
 
 
 def commands_of(run_cell):
@@ -152,8 +152,8 @@ class Substitution:
 
     def __call__(self, command):
         """The command as it runs here (see the module's doc), and whether it is a runtime run."""
-        command = command.replace("scripts/build --release && ", "")
-        command = re.sub(r"(?<![\w/.-])build-release/", self.build + "/", command)
+        command = re.sub(r"^scripts/build(?: --\w+)* && ", "", command)
+        command = re.sub(r"(?<![\w/.-])build/", self.build + "/", command)
         command = re.sub(r"(?<![\w/.-])scripts/run(?![\w-])", self.lungar, command)
         command = re.sub("^(" + ENV_PREFIX + r")lungar(?=\s|$)", lambda m: m.group(1) + self.lungar, command)
         m = re.match("^" + ENV_PREFIX + r"(\S+)(.*)$", command.rstrip(" &"))
@@ -210,7 +210,7 @@ def run_row(number, to, run_cell, timeout, ctx):
         return [f"{where}: expected a command in `backticks` in its run cell, found none"]
     try:
         for written in commands:
-            expanded = synopsis(written.replace("build-release/", ctx["build"] + "/"))
+            expanded = synopsis(re.sub(r"(?<![\w/.-])build/", ctx["build"] + "/", written))
             for command in expanded or [written]:
                 here, runtime = ctx["substitute"](command)
                 state = tempfile.mkdtemp(prefix="state-", dir=ctx["work"])

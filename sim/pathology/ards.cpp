@@ -41,18 +41,18 @@ class Ards final : public Pathology {
 
 class ArdsModel final : public PathologyModel {
  public:
-  std::string_view name() const override { return "ards"; }
-  std::string_view syntax() const override { return "ards:SEVERITY"; }
-  std::string_view fields() const override { return "SEVERITY 0 to 1"; }
-  std::string_view summary() const override {
-    return "the heavy, wet lung collapses where it lies lowest, following the posture: supine the breath moves "
-           "ventral, prone the dorsal lung recruits";
-  }
-  std::string_view once() const override { return "one ARDS (it is given twice: give its severity once)"; }
+  ArdsModel()
+      : PathologyModel(
+            {.name = "ards",
+             .syntax = "ards:SEVERITY",
+             .fields = "SEVERITY 0 to 1",
+             .summary =
+                 "the heavy, wet lung collapses where it lies lowest, following the posture: supine the breath moves "
+                 "ventral, prone the dorsal lung recruits",
+             .once = "one ARDS (it is given twice: give its severity once)"}) {}
   bool may_change_in_a_run() const override { return false; }
   bool applied_last() const override { return true; }
-  Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
-                                           std::span<const std::string_view> f) const override {
+  Result<std::unique_ptr<Pathology>> parse(std::string_view spec, std::span<const std::string_view> f) const override {
     if (f.size() != 2) return bad(spec, "expected ards:SEVERITY");
     Result<double> severity = parse_number(spec, f[1], 0.0, 1.0, "SEVERITY: expected a number from 0 to 1");
     if (!severity) return severity.with_context("");

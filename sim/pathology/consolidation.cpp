@@ -22,7 +22,8 @@ constexpr double kConsolidatedResponse = 0.1;
 constexpr double kRamp = 0.05;
 
 enum class Third { Lower, Middle, Upper };
-constexpr EnumNames<Third, 3> kThirdNames{{{{Third::Upper, "upper"}, {Third::Middle, "middle"}, {Third::Lower, "lower"}}}};
+constexpr EnumNames<Third, 3> kThirdNames{
+    {{{Third::Upper, "upper"}, {Third::Middle, "middle"}, {Third::Lower, "lower"}}}};
 
 /// 1 - how much of the region's weight a vertex at height z carries: 1 inside the third, 0 beyond the ramp.
 double region_weight(double z, double lo, double hi, Third third) {
@@ -66,17 +67,18 @@ class Consolidation final : public Pathology {
 
 class ConsolidationModel final : public PathologyModel {
  public:
-  std::string_view name() const override { return "consolidation"; }
-  std::string_view syntax() const override { return "consolidation:SIDE:REGION"; }
-  std::string_view fields() const override { return "SIDE left or right; REGION upper, middle or lower"; }
-  std::string_view summary() const override {
-    return "a third of the lung's height fills and stiffens: its surface keeps a tenth of its motion (a ramp of 5 % "
-           "of the height outside it), and the breath it no longer takes goes to what still ventilates";
-  }
-  std::string_view once() const override { return "each third of a lung consolidated once"; }
-  Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
-                                           std::span<const std::string_view> f) const override {
-    if (f.size() != 3) return bad(spec, "expected " + std::string(syntax()) + " (SIDE left or right, REGION upper, middle or lower)");
+  ConsolidationModel()
+      : PathologyModel(
+            {.name = "consolidation",
+             .syntax = "consolidation:SIDE:REGION",
+             .fields = "SIDE left or right; REGION upper, middle or lower",
+             .summary = "a third of the lung's height fills and stiffens: its surface keeps a tenth of its motion (a "
+                        "ramp of 5 % of the height outside it), and the breath it no longer takes goes to what still "
+                        "ventilates",
+             .once = "each third of a lung consolidated once"}) {}
+  Result<std::unique_ptr<Pathology>> parse(std::string_view spec, std::span<const std::string_view> f) const override {
+    if (f.size() != 3)
+      return bad(spec, "expected " + std::string(syntax()) + " (SIDE left or right, REGION upper, middle or lower)");
     Result<std::string> side = parse_side(spec, f[1]);
     if (!side) return side.with_context("");
     const std::optional<Third> third = kThirdNames.parse(f[2]);

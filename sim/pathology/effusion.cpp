@@ -46,16 +46,14 @@ class Effusion final : public Pathology {
 
 class EffusionModel final : public PathologyModel {
  public:
-  std::string_view name() const override { return "effusion"; }
-  std::string_view syntax() const override { return "effusion:SIDE:ML"; }
-  std::string_view fields() const override { return "SIDE left or right; ML 10 to 5000"; }
-  std::string_view summary() const override {
-    return "pleural fluid pressing the lung from below: its base rises until it has lost ML (its apex stays), and "
-           "it takes that much less of each breath";
-  }
-  std::string_view once() const override { return "one effusion a lung (give its volume once)"; }
-  Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
-                                           std::span<const std::string_view> f) const override {
+  EffusionModel()
+      : PathologyModel({.name = "effusion",
+                        .syntax = "effusion:SIDE:ML",
+                        .fields = "SIDE left or right; ML 10 to 5000",
+                        .summary = "pleural fluid pressing the lung from below: its base rises until it has lost ML "
+                                   "(its apex stays), and it takes that much less of each breath",
+                        .once = "one effusion a lung (give its volume once)"}) {}
+  Result<std::unique_ptr<Pathology>> parse(std::string_view spec, std::span<const std::string_view> f) const override {
     if (f.size() != 3) return bad(spec, "expected effusion:SIDE:ML (SIDE left or right, ML 10 to 5000)");
     Result<std::string> side = parse_side(spec, f[1]);
     if (!side) return side.with_context("");

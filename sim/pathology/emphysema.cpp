@@ -37,17 +37,16 @@ class Emphysema final : public Pathology {
 
 class EmphysemaModel final : public PathologyModel {
  public:
-  std::string_view name() const override { return "emphysema"; }
-  std::string_view syntax() const override { return "emphysema:SEVERITY[:SIDE]"; }
-  std::string_view fields() const override { return "SIDE left or right; SEVERITY 0 to 1"; }
-  std::string_view summary() const override {
-    return "trapped air: the lung (both without SIDE) rests up to 40 % larger about its hilum, and breathes with the "
-           "`emphysema` preset (tau 1.5 s) when the breathing is at its default";
-  }
-  std::string_view once() const override { return "one emphysema a lung (emphysema:SEVERITY without SIDE is both lungs')"; }
+  EmphysemaModel()
+      : PathologyModel({.name = "emphysema",
+                        .syntax = "emphysema:SEVERITY[:SIDE]",
+                        .fields = "SIDE left or right; SEVERITY 0 to 1",
+                        .summary = "trapped air: the lung (both without SIDE) rests up to 40 % larger about its "
+                                   "hilum, and breathes with the `emphysema` preset (tau 1.5 s) when the breathing "
+                                   "is at its default",
+                        .once = "one emphysema a lung (emphysema:SEVERITY without SIDE is both lungs')"}) {}
   std::string_view breathing_preset() const override { return "emphysema"; }
-  Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
-                                           std::span<const std::string_view> f) const override {
+  Result<std::unique_ptr<Pathology>> parse(std::string_view spec, std::span<const std::string_view> f) const override {
     if (f.size() != 2 && f.size() != 3) return bad(spec, "expected emphysema:SEVERITY or emphysema:SEVERITY:SIDE");
     Result<double> severity = parse_number(spec, f[1], 0.0, 1.0, "SEVERITY: expected a number from 0 to 1");
     if (!severity) return severity.with_context("");

@@ -33,7 +33,8 @@ Result<std::string> parse_side(std::string_view spec, std::string_view field);
 
 /// A number field from `lo` to `hi` (inclusive), else the error naming `what` (e.g. "PERCENT: expected a number
 /// from 1 to 90 (the share of the lung's volume lost)").
-Result<double> parse_number(std::string_view spec, std::string_view field, double lo, double hi, const std::string& what);
+Result<double> parse_number(std::string_view spec, std::string_view field, double lo, double hi,
+                            const std::string& what);
 
 /// The index of the lung called `name`, or a.lungs.size().
 std::size_t find_lung(const BakedAsset& a, const std::string& name);

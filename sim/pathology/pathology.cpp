@@ -40,9 +40,8 @@ std::string pathology_syntaxes() {
 std::string pathology_table() {
   std::string t = "| pathology | spec | fields | what it models | may change in a run |\n|---|---|---|---|---|\n";
   for (const PathologyModel* m : pathology_models())
-    t += "| " + std::string(m->name()) + " | `" + std::string(m->syntax()) + "` | " + std::string(m->fields()) +
-         " | " + std::string(m->summary()) + " | " + (m->may_change_in_a_run() ? "yes" : "no: from the start") +
-         " |\n";
+    t += "| " + std::string(m->name()) + " | `" + std::string(m->syntax()) + "` | " + std::string(m->fields()) + " | " +
+         std::string(m->summary()) + " | " + (m->may_change_in_a_run() ? "yes" : "no: from the start") + " |\n";
   return t;
 }
 

@@ -52,20 +52,25 @@ class Pathology {
   std::string side_;
 };
 
-/// One kind of pathology: what it is called, how its spec reads, and what it says of itself.
+/// What a kind of pathology says of itself: its name and spec for the help texts and errors, a line for the docs.
+struct PathologyText {
+  std::string_view name;     ///< the spec's first field, e.g. "pneumothorax"
+  std::string_view syntax;   ///< the spec's form, e.g. "pneumothorax:SIDE:PERCENT[:tension]"
+  std::string_view fields;   ///< what its fields take, "; " between them: "SIDE left or right; PERCENT 1 to 90"
+  std::string_view summary;  ///< one line for the docs' table: what it models
+  std::string_view once;     ///< what is expected instead of a second one that overlaps (check_pathologies' error)
+};
+
+/// One kind of pathology: what it is called, how its spec reads, and what it does.
 class PathologyModel {
  public:
+  explicit PathologyModel(const PathologyText& text) : text_(text) {}
   virtual ~PathologyModel() = default;
-  /// The spec's first field, e.g. "pneumothorax".
-  virtual std::string_view name() const = 0;
-  /// The spec's form, e.g. "pneumothorax:SIDE:PERCENT[:tension]".
-  virtual std::string_view syntax() const = 0;
-  /// What its fields take, "; " between them: "SIDE left or right; PERCENT 1 to 90".
-  virtual std::string_view fields() const = 0;
-  /// One line for the docs' table: what it models.
-  virtual std::string_view summary() const = 0;
-  /// What is expected instead of a second one that overlaps (check_pathologies' error).
-  virtual std::string_view once() const = 0;
+  std::string_view name() const { return text_.name; }
+  std::string_view syntax() const { return text_.syntax; }
+  std::string_view fields() const { return text_.fields; }
+  std::string_view summary() const { return text_.summary; }
+  std::string_view once() const { return text_.once; }
   /// Parses `spec`, whose `fields[0]` is name(); the error is one line naming the spec and the field.
   virtual Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
                                                    std::span<const std::string_view> fields) const = 0;
@@ -75,6 +80,9 @@ class PathologyModel {
   virtual bool applied_last() const { return false; }
   /// The breathing preset the patient breathes with when the breathing is at its default ("" for none).
   virtual std::string_view breathing_preset() const { return ""; }
+
+ private:
+  PathologyText text_;
 };
 
 /// Every pathology lungar knows, in pathology_list.h's order.

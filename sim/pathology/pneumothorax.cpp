@@ -69,26 +69,26 @@ class Pneumothorax final : public Pathology {
 
 class PneumothoraxModel final : public PathologyModel {
  public:
-  std::string_view name() const override { return "pneumothorax"; }
-  std::string_view syntax() const override { return "pneumothorax:SIDE:PERCENT[:tension]"; }
-  std::string_view fields() const override { return "SIDE left or right; PERCENT 1 to 90"; }
-  std::string_view summary() const override {
-    return "air in the pleural space: the lung shrinks about its hilum by PERCENT of its volume and takes 5 % of its "
-           "share of each breath; `:tension` pushes the mediastinum and the other lung 20 mm over";
-  }
-  std::string_view once() const override {
-    return "one pneumothorax a lung (give its size once; a second one would collapse the lung again)";
-  }
-  Result<std::unique_ptr<Pathology>> parse(std::string_view spec,
-                                           std::span<const std::string_view> f) const override {
+  PneumothoraxModel()
+      : PathologyModel(
+            {.name = "pneumothorax",
+             .syntax = "pneumothorax:SIDE:PERCENT[:tension]",
+             .fields = "SIDE left or right; PERCENT 1 to 90",
+             .summary = "air in the pleural space: the lung shrinks about its hilum by PERCENT of its volume and "
+                        "takes 5 % of its share of each breath; `:tension` pushes the mediastinum and the other lung "
+                        "20 mm over",
+             .once = "one pneumothorax a lung (give its size once; a second one would collapse the lung again)"}) {}
+  Result<std::unique_ptr<Pathology>> parse(std::string_view spec, std::span<const std::string_view> f) const override {
     const bool tension = f.size() == 4;
     if (tension && f[3] != "tension")
       return bad(spec, "expected pneumothorax:SIDE:PERCENT or pneumothorax:SIDE:PERCENT:tension");
-    if (f.size() != 3 && !tension) return bad(spec, "expected " + std::string(syntax()) + " (SIDE left or right, PERCENT 1 to 90)");
+    if (f.size() != 3 && !tension)
+      return bad(spec, "expected " + std::string(syntax()) + " (SIDE left or right, PERCENT 1 to 90)");
     Result<std::string> side = parse_side(spec, f[1]);
     if (!side) return side.with_context("");
-    Result<double> percent = parse_number(spec, f[2], kMinPercent, kMaxPercent,
-                                          "PERCENT: expected a number from 1 to 90 (the share of the lung's volume lost)");
+    Result<double> percent =
+        parse_number(spec, f[2], kMinPercent, kMaxPercent,
+                     "PERCENT: expected a number from 1 to 90 (the share of the lung's volume lost)");
     if (!percent) return percent.with_context("");
     return std::unique_ptr<Pathology>(std::make_unique<Pneumothorax>(*this, spec, side.take(), *percent, tension));
   }

@@ -6,9 +6,9 @@
 
 #include <string>
 
+#include "pathology_test_support.h"
 #include "sim/pathology/lung_shapes.h"
 #include "sim/pathology/pathology.h"
-#include "pathology_test_support.h"
 
 namespace lungar::sim {
 namespace {
@@ -54,13 +54,7 @@ TEST(Effusion, ItCanComeAndGoWhileTheLungsAreDrawn) {
   EXPECT_TRUE((*p)->model().may_change_in_a_run());
   for (std::size_t l = 0; l < healthy.lungs.size(); ++l) {
     const BakedLung& lung = healthy.lungs[l];
-    double worst = 0;
-    for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
-      const Eigen::Vector3d at(healthy.positions[3 * i], healthy.positions[3 * i + 1], healthy.positions[3 * i + 2]);
-      const Eigen::Vector3d q(sick.positions[3 * i], sick.positions[3 * i + 1], sick.positions[3 * i + 2]);
-      worst = std::max(worst, ((*shapes)[l].from_loaded * at - q).norm());
-    }
-    EXPECT_LT(worst, 0.01) << lung.name;
+    EXPECT_LT(test::worst_map_error(healthy, sick, (*shapes)[l].from_loaded, lung), 0.01) << lung.name;
     EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.lungs[l].breath_weight);
   }
 }
@@ -69,7 +63,8 @@ TEST(Effusion, WhatCannotBeIsRefusedInOneLine) {
   BakedAsset a = test::sliding_asset();
   const BakedAsset untouched = a;
   const std::size_t right = test::index_of(a, "right");
-  const std::string too_much = "effusion:right:" + std::to_string(static_cast<int>(0.9 * a.lungs[right].rest_volume_ml));
+  const std::string too_much =
+      "effusion:right:" + std::to_string(static_cast<int>(0.9 * a.lungs[right].rest_volume_ml));
   const Status s = apply_pathologies(a, {too_much});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("'" + too_much + "'"), std::string::npos) << s.error();

@@ -37,7 +37,8 @@ TEST(PathologyRegistry, EveryModelIsFoundByItsNameAndNamedInTheHelpList) {
   EXPECT_NE(help.find("SIDE left or right"), std::string::npos) << help;
   EXPECT_EQ(help.find("SIDE left or right", help.find("SIDE left or right") + 1), std::string::npos)
       << "a field that several models take is said once: " << help;
-  for (const char* spec : {"pneumothorax:right:30:tension", "consolidation:left:upper", "emphysema:0.5:left", "ards:0.6"}) {
+  for (const char* spec :
+       {"pneumothorax:right:30:tension", "consolidation:left:upper", "emphysema:0.5:left", "ards:0.6"}) {
     auto p = parse_pathology(spec);
     ASSERT_TRUE(p) << p.error();
     EXPECT_EQ(std::string(spec).rfind(std::string((*p)->model().name()) + ":", 0), 0u) << spec;
@@ -47,7 +48,8 @@ TEST(PathologyRegistry, EveryModelIsFoundByItsNameAndNamedInTheHelpList) {
 TEST(PathologyRegistry, TheDocsTableIsTheRegistrys) {
   const std::string docs = docs_text("pathologies.md");
   EXPECT_NE(docs.find(pathology_table()), std::string::npos)
-      << "docs/pathologies.md's table is not the registry's; it should read:\n" << pathology_table();
+      << "docs/pathologies.md's table is not the registry's; it should read:\n"
+      << pathology_table();
 }
 
 TEST(PathologyRegistry, OnlyArdsIsFromTheStartAndLastAndOnlyEmphysemaAsksForABreathing) {

@@ -22,11 +22,9 @@ namespace {
 using test::kSupine;
 using test::index_of;
 using test::with;
-using test::kCollapsedLungBreathWeight;
 using test::kConsolidatedResponse;
 using test::kConsolidationRamp;
 using test::kEmphysemaFrcGain;
-using test::kTensionShiftMm;
 using test::Breath;
 using test::breathe;
 using test::triangles_of;

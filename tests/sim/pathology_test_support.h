@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <span>
@@ -45,6 +46,19 @@ inline std::size_t index_of(const BakedAsset& a, const std::string& name) {
     if (a.lungs[l].name == name) return l;
   ADD_FAILURE() << "no lung named " << name;
   return 0;
+}
+
+/// How far `map` (a lung's shape as a map of its loaded one, sim/pathology/lung_shapes.h) puts the worst of `lung`'s
+/// vertices from where `changed` has it, mm: every vertex, not only those a fit used.
+inline double worst_map_error(const BakedAsset& loaded, const BakedAsset& changed, const Eigen::Affine3d& map,
+                              const BakedLung& lung) {
+  double worst = 0;
+  for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
+    const Eigen::Vector3d p(loaded.positions[3 * i], loaded.positions[3 * i + 1], loaded.positions[3 * i + 2]);
+    const Eigen::Vector3d q(changed.positions[3 * i], changed.positions[3 * i + 1], changed.positions[3 * i + 2]);
+    worst = std::max(worst, (map * p - q).norm());
+  }
+  return worst;
 }
 
 /// A lung's triangles in the asset's index array.

@@ -61,13 +61,10 @@ class ArdsModel final : public PathologyModel {
 };
 
 }  // namespace
-}  // namespace lungar::sim::pathology
-
-namespace lungar::sim {
 
 const PathologyModel& ards_pathology() {
-  static const pathology::ArdsModel model;
+  static const ArdsModel model;
   return model;
 }
 
-}  // namespace lungar::sim
+}  // namespace lungar::sim::pathology

@@ -88,13 +88,10 @@ class ConsolidationModel final : public PathologyModel {
 };
 
 }  // namespace
-}  // namespace lungar::sim::pathology
-
-namespace lungar::sim {
 
 const PathologyModel& consolidation_pathology() {
-  static const pathology::ConsolidationModel model;
+  static const ConsolidationModel model;
   return model;
 }
 
-}  // namespace lungar::sim
+}  // namespace lungar::sim::pathology

@@ -65,13 +65,10 @@ class EffusionModel final : public PathologyModel {
 };
 
 }  // namespace
-}  // namespace lungar::sim::pathology
-
-namespace lungar::sim {
 
 const PathologyModel& effusion_pathology() {
-  static const pathology::EffusionModel model;
+  static const EffusionModel model;
   return model;
 }
 
-}  // namespace lungar::sim
+}  // namespace lungar::sim::pathology

@@ -61,13 +61,10 @@ class EmphysemaModel final : public PathologyModel {
 };
 
 }  // namespace
-}  // namespace lungar::sim::pathology
-
-namespace lungar::sim {
 
 const PathologyModel& emphysema_pathology() {
-  static const pathology::EmphysemaModel model;
+  static const EmphysemaModel model;
   return model;
 }
 
-}  // namespace lungar::sim
+}  // namespace lungar::sim::pathology

@@ -10,13 +10,15 @@
 
 namespace lungar::sim {
 
+namespace pathology {
 #define LUNGAR_PATHOLOGY(name) const PathologyModel& name##_pathology();
 #include "sim/pathology/pathology_list.h"
 #undef LUNGAR_PATHOLOGY
+}  // namespace pathology
 
 std::span<const PathologyModel* const> pathology_models() {
   static const std::array models = {
-#define LUNGAR_PATHOLOGY(name) &name##_pathology(),
+#define LUNGAR_PATHOLOGY(name) &pathology::name##_pathology(),
 #include "sim/pathology/pathology_list.h"
 #undef LUNGAR_PATHOLOGY
   };
@@ -56,7 +58,11 @@ Result<std::shared_ptr<const Pathology>> parse_pathology(std::string_view spec) 
   return pathology::bad(spec, "expected " + pathology_syntaxes());
 }
 
-Status check_pathologies(const std::vector<std::string>& specs) {
+namespace {
+
+/// Every spec parsed, none overlapping one before it of the same model; the error names the spec (and the one it
+/// repeats) and what was expected.
+Result<std::vector<std::shared_ptr<const Pathology>>> parse_distinct(const std::vector<std::string>& specs) {
   std::vector<std::shared_ptr<const Pathology>> seen;
   for (const std::string& spec : specs) {
     Result<std::shared_ptr<const Pathology>> p = parse_pathology(spec);
@@ -66,21 +72,23 @@ Status check_pathologies(const std::vector<std::string>& specs) {
         return pathology::bad(spec, "repeats '" + before->spec() + "': expected " + std::string((*p)->model().once()));
     seen.push_back(p.take());
   }
+  return seen;
+}
+
+}  // namespace
+
+Status check_pathologies(const std::vector<std::string>& specs) {
+  if (auto parsed = parse_distinct(specs); !parsed) return parsed.with_context("");
   return {};
 }
 
 Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {
   if (specs.empty()) return {};
-  if (Status distinct = check_pathologies(specs); !distinct) return distinct;
-  std::vector<std::shared_ptr<const Pathology>> parsed;
-  for (const std::string& spec : specs) {
-    Result<std::shared_ptr<const Pathology>> p = parse_pathology(spec);
-    if (!p) return p.with_context("");
-    parsed.push_back(p.take());
-  }
-  std::stable_partition(parsed.begin(), parsed.end(), [](const auto& p) { return !p->model().applied_last(); });
+  Result<std::vector<std::shared_ptr<const Pathology>>> parsed = parse_distinct(specs);
+  if (!parsed) return parsed.with_context("");
+  std::stable_partition(parsed->begin(), parsed->end(), [](const auto& p) { return !p->model().applied_last(); });
   BakedAsset changed = asset;
-  for (const auto& p : parsed)
+  for (const auto& p : *parsed)
     if (Status s = p->apply(changed); !s) return s;
   asset = std::move(changed);
   return {};

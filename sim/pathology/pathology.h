@@ -5,8 +5,8 @@
 ///        when it is loaded: the runtime, `lungar-bake export` and the CPU paths all draw the changed asset, so they
 ///        agree. The help texts, the settings' check and the docs' table come from the same list.
 ///
-/// Adding one: a file sim/pathology/NAME.cpp defining `const PathologyModel& NAME_pathology()` (its spec's parser,
-/// its change of the asset, what it says of itself), and the line `LUNGAR_PATHOLOGY(NAME)` in pathology_list.h.
+/// Adding one: a file sim/pathology/NAME.cpp defining `const PathologyModel& pathology::NAME_pathology()` (its spec's
+/// parser, its change of the asset, what it says of itself), and the line `LUNGAR_PATHOLOGY(NAME)` in pathology_list.h.
 /// The shared lung operations (scaling about the hilum, resumming the swept volumes, spec fields) are in
 /// lung_changes.h. docs/design.md ("Pathologies") has the models' physiology; docs/pathologies.md the table.
 #pragma once

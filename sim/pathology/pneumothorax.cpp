@@ -95,13 +95,10 @@ class PneumothoraxModel final : public PathologyModel {
 };
 
 }  // namespace
-}  // namespace lungar::sim::pathology
-
-namespace lungar::sim {
 
 const PathologyModel& pneumothorax_pathology() {
-  static const pathology::PneumothoraxModel model;
+  static const PneumothoraxModel model;
   return model;
 }
 
-}  // namespace lungar::sim
+}  // namespace lungar::sim::pathology

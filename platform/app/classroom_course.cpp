@@ -9,8 +9,11 @@ namespace lungar::platform {
 ClassroomCourse::ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<sync::ClassroomStation> station,
                                  LoadedLungs lungs, std::function<void(const std::string&)> log)
     : own_(std::move(own)), station_(std::move(station)), lungs_(std::move(lungs)), log_(std::move(log)) {
-  for (const sim::BakedLung& lung : lungs_.drawn->lungs)
-    as_loaded_.push_back({Eigen::Affine3d::Identity(), sim::LungFigures::of(lung)});
+  // A station that loaded no pathologies may leave the drawn patient out: it is then the drawn asset's healthy one.
+  if (lungs_.drawn_patient.lungs.size() != lungs_.drawn->lungs.size())
+    lungs_.drawn_patient = sim::PatientState::of(*lungs_.drawn);
+  for (const sim::LungState& lung : lungs_.drawn_patient.lungs)
+    as_loaded_.push_back({Eigen::Affine3d::Identity(), lung});
 }
 
 ClassroomCourse::~ClassroomCourse() {

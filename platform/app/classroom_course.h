@@ -25,6 +25,7 @@
 #include "platform/sync/classroom_station.h"
 #include "sim/asset/baked_asset.h"
 #include "sim/pathology/pathology_timeline.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::platform {
 
@@ -33,6 +34,7 @@ namespace lungar::platform {
 struct LoadedLungs {
   std::shared_ptr<const sim::BakedAsset> healthy;
   std::shared_ptr<const sim::BakedAsset> drawn;
+  sim::PatientState drawn_patient;  ///< the patient as `drawn` was loaded (its pathologies at load)
   sim::PathologyTimeline own;
 };
 

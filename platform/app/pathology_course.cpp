@@ -22,8 +22,9 @@ double ease(double x) {
 Result<std::vector<sim::LungShape>> state_of(const sim::BakedAsset& healthy, const sim::BakedAsset& drawn,
                                              const std::vector<std::string>& present, const std::string& where) {
   sim::BakedAsset state = healthy;
-  if (Status s = sim::apply_pathologies(state, present); !s) return s.with_context(where);
-  Result<std::vector<sim::LungShape>> shapes = sim::lung_shapes(drawn, state);
+  sim::PatientState patient = sim::PatientState::of(healthy);
+  if (Status s = sim::apply_pathologies(state, patient, present); !s) return s.with_context(where);
+  Result<std::vector<sim::LungShape>> shapes = sim::lung_shapes(drawn, state, patient);
   if (!shapes) {
     return fail(where + shapes.error() +
                 ": only what reshapes a lung (a collapse, a larger rest) can come or go while the lungs are drawn; a "

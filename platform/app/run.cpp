@@ -66,9 +66,12 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   const bool trainee = s.sync.role == sync::SyncRole::Trainee;
   if (!lungs.own.events.empty() || trainee)  // each state of a course is built from it
     lungs.healthy = std::make_shared<const sim::BakedAsset>(drawn->asset);
-  if (Status p = sim::apply_pathologies(drawn->asset, s.sim.pathologies); !p) return p.with_context("sim.pathology: ");
+  sim::PatientState patient = sim::PatientState::of(drawn->asset);
+  if (Status p = sim::apply_pathologies(drawn->asset, patient, s.sim.pathologies); !p)
+    return p.with_context("sim.pathology: ");
   if (trainee) {
     lungs.drawn = s.sim.pathologies.empty() ? lungs.healthy : std::make_shared<const sim::BakedAsset>(drawn->asset);
+    lungs.drawn_patient = patient;
   }
   if (!lungs.own.events.empty()) {
     Result<std::shared_ptr<PathologyCourse>> made = PathologyCourse::create(*lungs.healthy, drawn->asset, lungs.own);
@@ -80,7 +83,8 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
     log_line("pathology: " + spec);
     drawn->name += " with " + spec;  // the stats JSON's "asset" says what was drawn
   }
-  return LungScene::create(std::move(drawn->asset), drawn->name, {.half_float = s.render.half_float});
+  return LungScene::create(std::move(drawn->asset), std::move(patient), drawn->name,
+                           {.half_float = s.render.half_float});
 }
 
 /// The breath source's options: the model, a trace's settings, the DDS sources' opener (their readers sit with the

@@ -6,8 +6,18 @@ namespace lungar::platform {
 
 Result<std::shared_ptr<LungScene>> LungScene::create(sim::BakedAsset asset, std::string name,
                                                      const render::DrawableOptions& options) {
+  sim::PatientState healthy = sim::PatientState::of(asset);
+  return create(std::move(asset), std::move(healthy), std::move(name), options);
+}
+
+Result<std::shared_ptr<LungScene>> LungScene::create(sim::BakedAsset asset, sim::PatientState patient, std::string name,
+                                                     const render::DrawableOptions& options) {
+  if (patient.lungs.size() != asset.lungs.size())
+    return fail("asset " + name + ": expected a patient state of its " + std::to_string(asset.lungs.size()) +
+                " lungs, got " + std::to_string(patient.lungs.size()));
   std::shared_ptr<LungScene> scene(new LungScene());
   scene->asset_ = std::move(asset);
+  scene->patient_ = std::move(patient);
   scene->name_ = std::move(name);
   auto drawable = render::LungDrawable::create(scene->asset_, options);
   if (!drawable) return drawable.with_context("asset " + scene->name_ + ": ");

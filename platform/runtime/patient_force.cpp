@@ -13,9 +13,9 @@ Eigen::Isometry3d registration_isometry(const std::array<double, 3>& translation
   return m;
 }
 
-void patient_force_sh(const sim::BakedAsset& asset, sim::ForceMode mode, const Eigen::Quaterniond& lung_in_world,
-                      std::span<float> force_out) {
-  sim::force_sh(asset, mode, lung_in_world, force_out.data());
+void patient_force_sh(const sim::BakedAsset& asset, const sim::PatientState& patient, sim::ForceMode mode,
+                      const Eigen::Quaterniond& lung_in_world, std::span<float> force_out) {
+  sim::force_sh(asset, patient, mode, lung_in_world, force_out.data());
 }
 
 }  // namespace lungar::platform

@@ -24,9 +24,9 @@ inline Eigen::Isometry3d lung_to_world(const Eigen::Isometry3d& patient_to_world
 Eigen::Isometry3d registration_isometry(const std::array<double, 3>& translation_mm,
                                         const std::array<double, 4>& rotation_wxyz);
 
-/// Force SH of every lung (lungs x L^2, lung-major) for the lung frame's orientation in the world; allocates
-/// nothing.
-void patient_force_sh(const sim::BakedAsset& asset, sim::ForceMode mode, const Eigen::Quaterniond& lung_in_world,
-                      std::span<float> force_out);
+/// Force SH of every lung (lungs x L^2, lung-major) of the patient now for the lung frame's orientation in the
+/// world; allocates nothing.
+void patient_force_sh(const sim::BakedAsset& asset, const sim::PatientState& patient, sim::ForceMode mode,
+                      const Eigen::Quaterniond& lung_in_world, std::span<float> force_out);
 
 }  // namespace lungar::platform

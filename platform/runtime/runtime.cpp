@@ -53,7 +53,10 @@ double ms_between(std::int64_t from_ns, std::int64_t to_ns) { return static_cast
 }  // namespace
 
 Runtime::Runtime(const RuntimeConfig& config, RuntimeParts parts)
-    : config_(config), parts_(std::move(parts)), asset_(parts_.scene->asset()) {}
+    : config_(config),
+      parts_(std::move(parts)),
+      asset_(parts_.scene->asset()),
+      patient_(parts_.scene->patient_at_load()) {}
 
 Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, RuntimeParts parts) {
   const sim::BakedAsset& asset = parts.scene->asset();
@@ -129,14 +132,15 @@ Status Runtime::draw_frame(const std::string* snapshot_png) {
 
 sim::BreathingSample Runtime::breathe(std::int64_t now_ns) const { return parts_.breathing->at(now_ns); }
 
-/// A scenario's pathology events: each lung's figures (its weight in the split, its volumes) into the asset the
-/// force and the split read, and its shape's map into its draw.
+/// A scenario's pathology events: each lung's figures (its weight in the split, its volumes) into the patient the
+/// force and the split read, and its shape's map into its draw. Copied in place: a frame allocates nothing.
 void Runtime::follow_course(std::int64_t now_ns) {
   if (!parts_.course) return;
   const std::vector<sim::LungShape>& shapes = parts_.course->at(now_ns);
-  sim::take_figures(shapes, parts_.scene->mutable_asset());
-  for (std::size_t l = 0; l < lung_frames_.size() && l < shapes.size(); ++l)
+  for (std::size_t l = 0; l < lung_frames_.size() && l < shapes.size(); ++l) {
+    patient_.lungs[l] = shapes[l].figures;
     lung_frames_[l].rest_transform = to_glm(shapes[l].from_loaded.matrix());
+  }
 }
 
 void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
@@ -148,9 +152,9 @@ void Runtime::force_sh(std::int64_t now_ns, FrameState& state) {
   state.lung_in_world = Eigen::Quaterniond(lung.rotation()).normalized();
   state.lung_origin_mm = lung.translation();
   state.gravity_lung = sim::gravity_in_lung_frame(state.lung_in_world);
-  patient_force_sh(asset_, config_.orientation, state.lung_in_world, force_);
+  patient_force_sh(asset_, patient_, config_.orientation, state.lung_in_world, force_);
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
-    lung_frames_[l].linear = sim::linear_weights(asset_, asset_.lungs[l], state.gravity_lung);
+    lung_frames_[l].linear = sim::linear_weights(asset_, patient_.lungs[l], state.gravity_lung);
   }
 }
 
@@ -171,7 +175,7 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
   swing_.add(state.now_ns, state.breath.dv_ml);
   const double swing_ml = swing_.swing_ml();
   for (std::size_t l = 0; l < lung_frames_.size(); ++l) {
-    const double share = sim::breath_share(asset_, l, state.gravity_lung);
+    const double share = sim::breath_share(asset_, patient_, l, state.gravity_lung);
     // A source that measures each lung (a mannequin's physiology engine) gives each its own dV.
     const double own = state.breath.lung_dv_ml[asset_.lungs[l].centre[0] >= 0 ? 0 : 1];
     lung_frames_[l].volume_change_ml = static_cast<float>(std::isfinite(own) ? own : state.breath.dv_ml * share);
@@ -187,9 +191,9 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
 /// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
 void Runtime::deform_on_cpu(const FrameState& state) {
   if (config_.deform == Deform::Cpu7) {
-    sim::deform_eq7(asset_, force_, state.gravity_lung, state.breath.dv_ml, cpu_positions_);
+    sim::deform_eq7(asset_, patient_, force_, state.gravity_lung, state.breath.dv_ml, cpu_positions_);
   } else {
-    eq1_->deform(state.gravity_lung, state.breath.dv_ml, cpu_positions_);
+    eq1_->deform(patient_, state.gravity_lung, state.breath.dv_ml, cpu_positions_);
   }
 }
 
@@ -309,10 +313,10 @@ Status Runtime::present_and_record(const FrameState& state) {
   const std::size_t lungs = std::min(lung_frames_.size(), kMaxStatsLungs);
   for (std::size_t l = 0; l < lungs; ++l) {
     lung_ml[l] = lung_frames_[l].volume_change_ml;
-    rest_ml[l] = asset_.lungs[l].rest_volume_ml;
+    rest_ml[l] = patient_.lungs[l].rest_volume_ml;
   }
   stats_.record_lungs(std::span<const double>(lung_ml.data(), lungs), std::span<const double>(rest_ml.data(), lungs));
-  stats_.record_ventral_share(ventral_->share(asset_, force_, state.gravity_lung));
+  stats_.record_ventral_share(ventral_->share(asset_, patient_, force_, state.gravity_lung));
   ++frames_;
   return ok();
 }

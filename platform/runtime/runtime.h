@@ -99,7 +99,10 @@ class Runtime {
 
   const RuntimeConfig config_;
   RuntimeParts parts_;
-  const sim::BakedAsset& asset_;
+  const sim::BakedAsset& asset_;  ///< as loaded, never written: what the patient is now is patient_
+  /// The patient now: as loaded, then each frame as the course has it (follow_course); the force, the split and
+  /// the stats read it.
+  sim::PatientState patient_;
   std::int64_t max_ahead_ns_ = 0;
 
   // Per-frame buffers, sized once.

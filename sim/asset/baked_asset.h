@@ -14,16 +14,12 @@
 
 #include <array>
 #include <cstdint>
-#include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/motion/motion_model.h"
 
 namespace lungar::sim {
-
-class DependentCollapse;
 
 /// Orientation angles of the paper's eq. (8)-(9): pi/2, pi, 3pi/2, 2pi about each of X, Y, Z.
 inline constexpr int kPaperAxes = 3;
@@ -59,17 +55,6 @@ struct BakedLung {
   /// and tilts towards the dependent lung (sim/force/breath_share.h); the runtime multiplies the lung's force SH by
   /// it, and sim/deform does so for the CPU paths.
   double volume_share = 1.0;
-  /// A pathology's factor on the lung's weight in that split (sim/pathology/pathology.h): 1 when healthy. Set when
-  /// an asset is loaded with pathologies, never stored in the file.
-  double breath_weight = 1.0;
-  /// v0 and v before a pathology changed the lung's response (set with it, never stored): the lung's weight in the
-  /// split then also carries V(g) / V_healthy(g), the part of its healthy breath its surface can still take in
-  /// the posture, so that what is left of the lung breathes as before.
-  std::optional<std::array<double, 4>> healthy_volumes;
-  /// ARDS (set with it, never stored): the force that follows the posture, which replaces the linear pressure's
-  /// in force_sh.h for this lung, `collapse_index` its index there (sim/force/dependent_collapse.h).
-  std::shared_ptr<const DependentCollapse> collapse;
-  std::size_t collapse_index = 0;
 };
 
 /// The whole asset.

@@ -163,12 +163,14 @@ void fill_lung(const LungWork& w, const BakeOptions& opt, BakedAsset& a, std::si
 /// The paper's eq. (8)-(9) arrays: exact normalised force at pi/2, pi, 3pi/2, 2pi about X, Y and Z.
 void fill_paper_forces(BakedAsset& a) {
   const std::uint32_t c = a.coefficients();
-  for (BakedLung& lung : a.lungs) {
+  const PatientState healthy = PatientState::of(a);  // the bake's forces are the healthy patient's
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    BakedLung& lung = a.lungs[l];
     lung.paper_force.assign(kPaperAxes * kPaperAngles, std::vector<float>(c));
     for (int axis = 0; axis < kPaperAxes; ++axis)
       for (int k = 0; k < kPaperAngles; ++k) {
         const Eigen::Vector3d g = gravity_in_lung_frame(axis_rotation(axis, (k + 1) * std::numbers::pi / 2));
-        force_sh_exact(a, lung, g, lung.paper_force[axis * kPaperAngles + k].data());
+        force_sh_exact(a, lung, healthy.lungs[l], g, lung.paper_force[axis * kPaperAngles + k].data());
       }
   }
 }

@@ -82,7 +82,8 @@ ExactEq1 exact_eq1(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
     const Eigen::MatrixXd d = (w.x.col(w.c_solved) * opt.p0).replicate(1, nd) +
                               opt.gamma_per_mm * w.x.middleCols(w.c_solved + 1, 3) * g_mat;
     Eigen::RowVectorXd s(nd);
-    for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, lung, g_mat.col(k));
+    const LungState now = PatientState::of(a).lungs[l];
+    for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, now, g_mat.col(k));
     e.d.middleRows(lung.first_vertex, lung.vertex_count) = d * s.asDiagonal();
     e.pressures.push_back(std::move(p));
     e.scales.push_back(std::move(s));
@@ -103,23 +104,25 @@ void float_errors(const std::vector<std::unique_ptr<LungWork>>& work, const Bake
   const std::size_t n = a.vertex_count();
   std::vector<float> force(a.lungs.size() * c), paper_force(a.lungs.size() * c);
   std::vector<float> d7(n), dp(n), dl(n), d1(n), f1(n);
+  const PatientState healthy = PatientState::of(a);
   for (std::size_t k = 0; k < dirs.size(); ++k) {
     const Eigen::Vector3d& g = dirs[k];
-    for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
-    force_sh(a, ForceMode::Paper, orientation_for(g), paper_force.data());
+    for (std::size_t l = 0; l < a.lungs.size(); ++l)
+      force_sh_exact(a, a.lungs[l], healthy.lungs[l], g, force.data() + l * c);
+    force_sh(a, healthy, ForceMode::Paper, orientation_for(g), paper_force.data());
     displacement_eq7(a, force, d7);
     displacement_eq7(a, paper_force, dp);
-    displacement_linear(a, g, dl);
+    displacement_linear(a, healthy, g, dl);
     std::vector<std::array<float, 4>> weights;
     std::vector<Eigen::MatrixXd> exact_vectors;  // sliding: each lung's exact vector displacement, mm per mL
     for (std::size_t l = 0; l < a.lungs.size(); ++l) {
-      weights.push_back(linear_weights(a, a.lungs[l], g));
+      weights.push_back(linear_weights(a, healthy.lungs[l], g));
       if (opt.model == MotionModel::sliding)
         exact_vectors.push_back(exact.scales[l][static_cast<Eigen::Index>(k)] *
                                 linear_displacement(work[l]->vector_linear, opt.p0, opt.gamma_per_mm, g));
     }
     if (a.has_transfer_rows()) {
-      applied_force(a, g, f1);
+      applied_force(a, healthy, g, f1);
       displacement_eq1(a, f1, d1);
     }
     const auto col = static_cast<Eigen::Index>(k);
@@ -264,7 +267,9 @@ void physiology(const BakedAsset& a, BakeReport& report) {
   const std::size_t n = a.vertex_count();
   std::vector<float> force(a.lungs.size() * c), d7(n);
   const Eigen::Vector3d upright(0, 0, -1), supine_g(0, 1, 0);
-  for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], upright, force.data() + l * c);
+  const PatientState healthy = PatientState::of(a);
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    force_sh_exact(a, a.lungs[l], healthy.lungs[l], upright, force.data() + l * c);
   displacement_eq7(a, force, d7);
   double max_mm = 0;
   for (const BakedLung& lung : a.lungs)
@@ -272,13 +277,14 @@ void physiology(const BakedAsset& a, BakeReport& report) {
       max_mm = std::max(max_mm, std::abs(d7[i] * kTidalMl * lung.volume_share));
   report.displacement_max_mm_at_tidal = max_mm;
   std::vector<float> displaced(3 * n);
-  deform_eq7(a, force, upright, kTidalMl, displaced);
+  deform_eq7(a, healthy, force, upright, kTidalMl, displaced);
   const double rest = enclosed_volume(a.triangles, a.positions.data());
   const double moved = enclosed_volume(a.triangles, displaced.data());
   report.tidal_volume_rel_error = ((moved - rest) / 1000.0 - kTidalMl) / kTidalMl;
   const double apex_base = end_ratio(a, d7, 2, 0.15);  // apex is high z
   report.base_apex_displacement_ratio = apex_base > 0 ? 1.0 / apex_base : 0.0;
-  for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], supine_g, force.data() + l * c);
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    force_sh_exact(a, a.lungs[l], healthy.lungs[l], supine_g, force.data() + l * c);
   displacement_eq7(a, force, d7);
   report.posterior_anterior_displacement_ratio = end_ratio(a, d7, 1, 0.15);  // posterior is high y
 }
@@ -297,7 +303,7 @@ std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& ba
     const Eigen::Index n = basis[l].rows();
     const Eigen::MatrixXd u = linear_displacement(basis[l], opt.p0, opt.gamma_per_mm, g);
     const double swept = swept_volume(*work[l], u);
-    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * breath_share(a, l, g) / swept : 0.0;
+    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * breath_share(a, PatientState::of(a), l, g) / swept : 0.0;
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) out[3 * (lung.first_vertex + static_cast<std::size_t>(i)) + c] = static_cast<float>(scale * u(i, c));
   }
@@ -324,7 +330,8 @@ void motion(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset
             const Workers& workers, BakeReport& report) {
   std::vector<SurfaceRegion> regions;
   for (const auto& w : work) regions.insert(regions.end(), w->regions.begin(), w->regions.end());
-  const std::vector<float> supine = displacement_vectors(a, kSupine, kTidalVolumeMl);
+  const PatientState healthy = PatientState::of(a);
+  const std::vector<float> supine = displacement_vectors(a, healthy, kSupine, kTidalVolumeMl);
   report.motion_supine = motion_figures(a, supine, regions);
   // Inside the lungs, supine: the points `lungar-bake export --interior 5000` writes, moving as it moves them.
   const InteriorDisplacement interior(a);
@@ -332,8 +339,8 @@ void motion(const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset
   report.interior_supine = point_motion_figures(points.positions, interior.displacement(supine, points));
   report.interior_points = points.size();
   report.interior_grid_mm = interior.spacing_mm();
-  report.motion_prone = motion_figures(a, displacement_vectors(a, kProne, kTidalVolumeMl), regions);
-  report.motion_upright = motion_figures(a, displacement_vectors(a, kUpright, kTidalVolumeMl), regions);
+  report.motion_prone = motion_figures(a, displacement_vectors(a, healthy, kProne, kTidalVolumeMl), regions);
+  report.motion_upright = motion_figures(a, displacement_vectors(a, healthy, kUpright, kTidalVolumeMl), regions);
   report.compared_model = opt.model == MotionModel::sliding ? MotionModel::paper : MotionModel::sliding;
   std::vector<Eigen::MatrixXd> basis(work.size());
   const Workers per_lung{std::max(1, thread_count(workers) / static_cast<int>(work.size())), workers.cancel};

@@ -33,9 +33,9 @@ Result<Eigen::Vector3d> command_gravity(const ExportCommand& c) {
 /// The displacement for `volume_ml`, rescaled so that the pair's enclosed volume changes by exactly that much:
 /// the runtime's linear scaling is calibrated at +500 mL (docs/design.md, "Applied force") and drifts from the
 /// enclosed volume by the surface's curvature term elsewhere (some 3 % at -300 mL). A few secant steps.
-std::vector<float> exact_volume_displacement(const BakedAsset& a, const Eigen::Vector3d& g, double volume_ml,
-                                             std::vector<float>& moved) {
-  std::vector<float> d = displacement_vectors(a, g, volume_ml);
+std::vector<float> exact_volume_displacement(const BakedAsset& a, const PatientState& patient, const Eigen::Vector3d& g,
+                                             double volume_ml, std::vector<float>& moved) {
+  std::vector<float> d = displacement_vectors(a, patient, g, volume_ml);
   const double rest = enclosed_volume(a.triangles, a.positions.data()), target = volume_ml * 1000.0;
   double k = 1.0;
   moved.resize(a.positions.size());
@@ -57,11 +57,11 @@ struct InteriorExport {
 
 /// Writes one phase: the interior points' file first (when asked), then the surface's; when the surface cannot be
 /// written the interior file just written is removed, so that a failed phase leaves neither.
-Status write_one(const BakedAsset& a, const Eigen::Vector3d& g, double volume_ml, const std::string& path,
-                 const std::string& what, const InteriorExport* interior, const std::string& interior_path,
-                 ExportedFile& written) {
+Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::Vector3d& g, double volume_ml,
+                 const std::string& path, const std::string& what, const InteriorExport* interior,
+                 const std::string& interior_path, ExportedFile& written) {
   std::vector<float> moved;
-  const std::vector<float> d = exact_volume_displacement(a, g, volume_ml, moved);
+  const std::vector<float> d = exact_volume_displacement(a, patient, g, volume_ml, moved);
   char line[256];
   std::snprintf(line, sizeof line, "gravity in the lung frame %.4f %.4f %.4f; volume change %.1f mL; model %s",
                 g.x(), g.y(), g.z(), volume_ml, kMotionModelNames.name(a.motion_model));
@@ -133,7 +133,8 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
   if (!std::isfinite(c.volume_ml)) return fail("--volume-ml: expected a finite number of millilitres");
   Result<BakedAsset> asset = load_asset(c.asset);
   if (!asset) return asset.with_context("");
-  if (Status s = apply_pathologies(*asset, c.pathologies); !s) return s.with_context("--pathology: ");
+  PatientState patient = PatientState::of(*asset);
+  if (Status s = apply_pathologies(*asset, patient, c.pathologies); !s) return s.with_context("--pathology: ");
   std::string what = c.asset;
   for (const std::string& spec : c.pathologies) what += " with " + spec;
   std::optional<InteriorExport> interior;
@@ -146,7 +147,7 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
     ExportedFile f;
     f.path = c.out;
     f.volume_ml = c.volume_ml;
-    if (Status s = write_one(*asset, *g, c.volume_ml, c.out, what, inside, c.interior_out, f); !s)
+    if (Status s = write_one(*asset, patient, *g, c.volume_ml, c.out, what, inside, c.interior_out, f); !s)
       return s.with_context("");
     return std::vector<ExportedFile>{f};
   }
@@ -167,7 +168,8 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
     f.phase = phase;
     f.volume_ml = dv;
     const std::string interior_path = inside ? series_path(c.interior_out, k) : std::string();
-    if (Status s = write_one(*asset, *g, dv, path, what, inside, interior_path, f); !s) return s.with_context("");
+    if (Status s = write_one(*asset, patient, *g, dv, path, what, inside, interior_path, f); !s)
+      return s.with_context("");
     written.push_back(f);
   }
   return written;

@@ -13,13 +13,16 @@
 
 namespace lungar::sim {
 
-void applied_force(const BakedAsset& asset, const Eigen::Vector3d& g, std::span<float> force_out) {
+void applied_force(const BakedAsset& asset, const PatientState& patient, const Eigen::Vector3d& g,
+                   std::span<float> force_out) {
   // ARDS: the pressure falls beyond the collapse plane g . x = t (sim/force/dependent_collapse.h).
-  const DependentCollapse* collapse = asset.lungs.empty() ? nullptr : asset.lungs.front().collapse.get();
+  const DependentCollapse* collapse = patient.lungs.empty() ? nullptr : patient.lungs.front().collapse.get();
   const double t = collapse ? collapse->threshold_mm(g) : 0.0;
-  for (const BakedLung& lung : asset.lungs) {
-    const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);
-    const double cg = g.x() * lung.centre[0] + g.y() * lung.centre[1] + g.z() * lung.centre[2];
+  for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
+    const BakedLung& lung = asset.lungs[l];
+    const LungState& now = patient.lungs.at(l);
+    const double scale = 1000.0 / swept_volume_mm3(asset, now, g);
+    const double cg = g.x() * now.centre[0] + g.y() * now.centre[1] + g.z() * now.centre[2];
     for (std::size_t j = lung.first_vertex; j < std::size_t{lung.first_vertex} + lung.vertex_count; ++j) {
       const float* x = asset.positions.data() + 3 * j;
       const double depth = g.x() * x[0] + g.y() * x[1] + g.z() * x[2];
@@ -46,13 +49,14 @@ void displacement_eq1(const BakedAsset& asset, std::span<const float> force, std
 Eq1Deformer::Eq1Deformer(const BakedAsset& asset)
     : asset_(asset), force_(asset.vertex_count()), d_(asset.vertex_count()) {}
 
-void Eq1Deformer::deform(const Eigen::Vector3d& g, double delta_volume_ml, std::span<float> positions_out) {
-  applied_force(asset_, g, force_);
+void Eq1Deformer::deform(const PatientState& patient, const Eigen::Vector3d& g, double delta_volume_ml,
+                         std::span<float> positions_out) {
+  applied_force(asset_, patient, g, force_);
   displacement_eq1(asset_, force_, d_);
   for (std::size_t l = 0; l < asset_.lungs.size(); ++l) {
     const BakedLung& lung = asset_.lungs[l];
-    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset_, l, g));
-    const std::array<float, 4> w = linear_weights(asset_, lung, g);
+    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset_, patient, l, g));
+    const std::array<float, 4> w = linear_weights(asset_, patient.lungs[l], g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)
         positions_out[3 * i + k] = asset_.positions[3 * i + k] + scale * d_[i] * asset_.directions[3 * i + k];

@@ -28,14 +28,14 @@ void displacement_eq7(const BakedAsset& asset, std::span<const float> force_sh, 
   }
 }
 
-void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, const Eigen::Vector3d& g,
-                double delta_volume_ml, std::span<float> positions_out) {
+void deform_eq7(const BakedAsset& asset, const PatientState& patient, std::span<const float> force_sh,
+                const Eigen::Vector3d& g, double delta_volume_ml, std::span<float> positions_out) {
   const std::size_t c = asset.coefficients();
   assert(positions_out.size() >= 3 * std::size_t{asset.vertex_count()});
   for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
     const BakedLung& lung = asset.lungs[l];
-    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset, l, g));
-    const std::array<float, 4> w = linear_weights(asset, lung, g);
+    const auto scale = static_cast<float>(delta_volume_ml * breath_share(asset, patient, l, g));
+    const std::array<float, 4> w = linear_weights(asset, patient.lungs[l], g);
     const Eigen::Map<const Eigen::VectorXf> f(force_sh.data() + l * c, static_cast<Eigen::Index>(c));
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       const Eigen::Map<const Eigen::VectorXf> t(asset.sh_coeffs.data() + i * c, static_cast<Eigen::Index>(c));
@@ -46,9 +46,11 @@ void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, const 
   }
 }
 
-void displacement_linear(const BakedAsset& asset, const Eigen::Vector3d& g, std::span<float> d_out) {
-  for (const BakedLung& lung : asset.lungs) {
-    const std::array<float, 4> w = linear_weights(asset, lung, g);
+void displacement_linear(const BakedAsset& asset, const PatientState& patient, const Eigen::Vector3d& g,
+                         std::span<float> d_out) {
+  for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
+    const BakedLung& lung = asset.lungs[l];
+    const std::array<float, 4> w = linear_weights(asset, patient.lungs.at(l), g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       const float* tau = asset.linear_coeffs.data() + 4 * i;
       d_out[i] = w[0] * tau[0] + w[1] * tau[1] + w[2] * tau[2] + w[3] * tau[3];

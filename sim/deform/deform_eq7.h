@@ -12,16 +12,17 @@
 #include <Eigen/Core>
 
 #include "sim/asset/baked_asset.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
 /// D for every vertex (vertex_count values) from the per-lung force SH (lungs x L^2, lung-major).
 void displacement_eq7(const BakedAsset& asset, std::span<const float> force_sh, std::span<float> d_out);
 
-/// Displaced positions (3 floats a vertex) for the pair's volume change `delta_volume_ml` and lung-frame gravity
-/// `g_lung` (which only the off-axis part reads); no allocation.
-void deform_eq7(const BakedAsset& asset, std::span<const float> force_sh, const Eigen::Vector3d& g_lung,
-                double delta_volume_ml, std::span<float> positions_out);
+/// Displaced positions (3 floats a vertex) of the patient now for the pair's volume change `delta_volume_ml` and
+/// lung-frame gravity `g_lung` (which the split and the off-axis part read); no allocation.
+void deform_eq7(const BakedAsset& asset, const PatientState& patient, std::span<const float> force_sh,
+                const Eigen::Vector3d& g_lung, double delta_volume_ml, std::span<float> positions_out);
 
 /// Adds vertex i's off-axis displacement for the linear weights w, times `scale`, to out[0..2] (nothing for an
 /// asset without the off-axis part).
@@ -34,6 +35,7 @@ inline void add_off_axis(const BakedAsset& asset, std::size_t i, const std::arra
 }
 
 /// Eq. (7) against the exact linear basis: D_I = p0 tau0_I + gamma g.tau_I, scaled to mm per mL per lung.
-void displacement_linear(const BakedAsset& asset, const Eigen::Vector3d& g_lung, std::span<float> d_out);
+void displacement_linear(const BakedAsset& asset, const PatientState& patient, const Eigen::Vector3d& g_lung,
+                         std::span<float> d_out);
 
 }  // namespace lungar::sim

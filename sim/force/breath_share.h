@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "sim/asset/baked_asset.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
@@ -27,8 +28,9 @@ inline constexpr double kDependentLungGain = 0.22;
 
 /// Lung `lung`'s share of the pair's volume change with gravity `g_lung` (lung frame; normalised here); the shares
 /// of all lungs sum to 1. One lung: 1 (its rest-volume share). A zero or non-finite g: the split without the
-/// posture term. Each weight also carries the lung's pathology factors (BakedLung::breath_weight, and
-/// V(g) / V_healthy(g) when a pathology changed its response: sim/pathology/pathology.h).
-double breath_share(const BakedAsset& asset, std::size_t lung, const Eigen::Vector3d& g_lung);
+/// posture term. The centres are the lungs' now (`patient`), and each weight also carries the lung's pathology
+/// factors there (LungState::breath_weight, and V(g) / V_healthy(g) when a pathology changed its response).
+double breath_share(const BakedAsset& asset, const PatientState& patient, std::size_t lung,
+                    const Eigen::Vector3d& g_lung);
 
 }  // namespace lungar::sim

@@ -27,13 +27,13 @@ EulerXYZ euler_xyz(const Eigen::Quaterniond& q) {
   return out;
 }
 
-double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g) {
+double swept_volume_mm3(const BakedAsset& asset, const LungState& lung, const Eigen::Vector3d& g) {
   if (lung.collapse) return lung.collapse->lung_force(asset, lung.collapse_index, g).swept_mm3;
   return asset.p0 * lung.volume_const +
          asset.gamma_per_mm * (g.x() * lung.volume_grad[0] + g.y() * lung.volume_grad[1] + g.z() * lung.volume_grad[2]);
 }
 
-std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g) {
+std::array<float, 4> linear_weights(const BakedAsset& asset, const LungState& lung, const Eigen::Vector3d& g) {
   if (lung.collapse) {
     const CollapsedLungForce f = lung.collapse->lung_force(asset, lung.collapse_index, g);
     const double scale = 1000.0 / f.swept_mm3;
@@ -46,14 +46,15 @@ std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lu
           static_cast<float>(gamma * g.z())};
 }
 
-void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g, float* out) {
-  if (lung.collapse) {
-    const CollapsedLungForce f = lung.collapse->lung_force(asset, lung.collapse_index, g);
+void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const LungState& now, const Eigen::Vector3d& g,
+                    float* out) {
+  if (now.collapse) {
+    const CollapsedLungForce f = now.collapse->lung_force(asset, now.collapse_index, g);
     const double scale = 1000.0 / f.swept_mm3;
     for (std::size_t i = 0; i < f.sh.size(); ++i) out[i] = static_cast<float>(f.sh[i] * scale);
     return;
   }
-  const double scale = 1000.0 / swept_volume_mm3(asset, lung, g);  // mm^3 per mL
+  const double scale = 1000.0 / swept_volume_mm3(asset, now, g);  // mm^3 per mL
   const double a = asset.p0 * scale, gx = asset.gamma_per_mm * g.x() * scale,
                gy = asset.gamma_per_mm * g.y() * scale, gz = asset.gamma_per_mm * g.z() * scale;
   const std::size_t n = lung.force_const.size();
@@ -81,11 +82,13 @@ void force_sh_paper(const BakedLung& lung, std::uint32_t coefficients, const Eig
   }
 }
 
-void force_sh(const BakedAsset& asset, ForceMode mode, const Eigen::Quaterniond& q, float* out) {
+void force_sh(const BakedAsset& asset, const PatientState& patient, ForceMode mode, const Eigen::Quaterniond& q,
+              float* out) {
   const std::uint32_t c = asset.coefficients();
   const Eigen::Vector3d g = gravity_in_lung_frame(q);
   for (std::size_t l = 0; l < asset.lungs.size(); ++l) {
-    if (mode == ForceMode::Exact) force_sh_exact(asset, asset.lungs[l], g, out + l * c);
+    if (mode == ForceMode::Exact)
+      force_sh_exact(asset, asset.lungs[l], patient.lungs.at(l), g, out + l * c);
     else force_sh_paper(asset.lungs[l], c, q, out + l * c);
   }
 }

@@ -11,6 +11,7 @@
 #include "config/base/enum_names.h"
 #include "sim/asset/baked_asset.h"
 #include "sim/force/gravity.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
@@ -27,23 +28,25 @@ struct EulerXYZ {
 EulerXYZ euler_xyz(const Eigen::Quaterniond& lung_in_world);
 
 /// Exact mode: f(g) = (p0 f0 + gamma g.f) * 1000 / (p0 v0 + gamma g.v), L^2 values into out: the force SH of
-/// one mL of swept volume, so that D = sum_lm f_lm T^I_lm is in mm per mL. A lung with ARDS (BakedLung::collapse)
-/// takes its collapsed pattern's SH instead, and linear_weights and swept_volume_mm3 follow it
-/// (sim/force/dependent_collapse.h).
-void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung, float* out);
+/// one mL of swept volume, so that D = sum_lm f_lm T^I_lm is in mm per mL: f0 and f are the baked lung's, v0 and
+/// v the lung's now (`now`). A lung with ARDS (LungState::collapse) takes its collapsed pattern's SH instead, and
+/// linear_weights and swept_volume_mm3 follow it (sim/force/dependent_collapse.h).
+void force_sh_exact(const BakedAsset& asset, const BakedLung& lung, const LungState& now, const Eigen::Vector3d& g_lung,
+                    float* out);
 
 /// Paper mode, eq. (8)-(9) as written: f = f^a + f^b + f^c, f^a = [p^{a0} cos(a - a0) + p^{a1} cos(a - a1)] / 3,
 /// with a0, a1 the baked angles (pi/2, pi, 3pi/2, 2pi) around a (0 counts as 2pi).
 void force_sh_paper(const BakedLung& lung, std::uint32_t coefficients, const Eigen::Quaterniond& lung_in_world, float* out);
 
-/// Both lungs' force SH (lungs x L^2 values, lung-major) in the selected mode.
-void force_sh(const BakedAsset& asset, ForceMode mode, const Eigen::Quaterniond& lung_in_world, float* out);
+/// Both lungs' force SH (lungs x L^2 values, lung-major) in the selected mode, for the patient as `patient` is now.
+void force_sh(const BakedAsset& asset, const PatientState& patient, ForceMode mode,
+              const Eigen::Quaterniond& lung_in_world, float* out);
 
 /// The weights of the linear basis for g, mm per mL per unit of tau: (p0, gamma g_x, gamma g_y, gamma g_z) *
 /// 1000 / V(g). D = w . tau is the exact linear displacement along e_I; r . w the off-axis part.
-std::array<float, 4> linear_weights(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung);
+std::array<float, 4> linear_weights(const BakedAsset& asset, const LungState& lung, const Eigen::Vector3d& g_lung);
 
 /// The swept volume (mm^3) that the unnormalised force produces for g: p0 v0 + gamma g.v.
-double swept_volume_mm3(const BakedAsset& asset, const BakedLung& lung, const Eigen::Vector3d& g_lung);
+double swept_volume_mm3(const BakedAsset& asset, const LungState& lung, const Eigen::Vector3d& g_lung);
 
 }  // namespace lungar::sim

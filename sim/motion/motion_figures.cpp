@@ -88,16 +88,18 @@ MotionFigures motion_figures(const BakedAsset& a, std::span<const float> d, cons
   return f;
 }
 
-std::vector<float> displacement_vectors(const BakedAsset& a, const Eigen::Vector3d& g, double delta_volume_ml) {
+std::vector<float> displacement_vectors(const BakedAsset& a, const PatientState& patient, const Eigen::Vector3d& g,
+                                        double delta_volume_ml) {
   const std::uint32_t c = a.coefficients();
   const std::size_t n = a.vertex_count();
   std::vector<float> force(a.lungs.size() * c), scalar(n), out(3 * n);
-  for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    force_sh_exact(a, a.lungs[l], patient.lungs.at(l), g, force.data() + l * c);
   displacement_eq7(a, force, scalar);
   for (std::size_t l = 0; l < a.lungs.size(); ++l) {
     const BakedLung& lung = a.lungs[l];
-    const double scale = delta_volume_ml * breath_share(a, l, g);
-    const std::array<float, 4> w = linear_weights(a, lung, g);
+    const double scale = delta_volume_ml * breath_share(a, patient, l, g);
+    const std::array<float, 4> w = linear_weights(a, patient.lungs[l], g);
     for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
       for (int k = 0; k < 3; ++k)
         out[3 * i + k] = static_cast<float>(scale * scalar[i] * a.directions[3 * i + k]);

@@ -17,6 +17,7 @@
 
 #include "sim/asset/baked_asset.h"
 #include "sim/motion/surface_regions.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
@@ -46,7 +47,9 @@ MotionFigures motion_figures(const BakedAsset& asset, std::span<const float> d,
 MotionFigures point_motion_figures(std::span<const float> rest, std::span<const float> d);
 
 /// The displacement of every vertex of `asset` (3 per vertex, mm) when the pair's volume changes by
-/// `delta_volume_ml` with lung-frame gravity `g`, by eq. (7) in the exact orientation mode, as the runtime draws it.
-std::vector<float> displacement_vectors(const BakedAsset& asset, const Eigen::Vector3d& g, double delta_volume_ml);
+/// `delta_volume_ml` with lung-frame gravity `g`, the patient as `patient` is, by eq. (7) in the exact orientation
+/// mode, as the runtime draws it.
+std::vector<float> displacement_vectors(const BakedAsset& asset, const PatientState& patient, const Eigen::Vector3d& g,
+                                        double delta_volume_ml);
 
 }  // namespace lungar::sim

@@ -43,12 +43,13 @@ VentralShare::VentralShare(const BakedAsset& a) {
   }
 }
 
-double VentralShare::share(const BakedAsset& a, std::span<const float> force, const Eigen::Vector3d& g) const {
+double VentralShare::share(const BakedAsset& a, const PatientState& patient, std::span<const float> force,
+                           const Eigen::Vector3d& g) const {
   const std::uint32_t c = a.coefficients();
   double front = 0, all = 0;
   for (std::size_t l = 0; l < a.lungs.size() && l < anterior_.size(); ++l) {
-    const double s = breath_share(a, l, g);
-    const std::array<float, 4> w = linear_weights(a, a.lungs[l], g);
+    const double s = breath_share(a, patient, l, g);
+    const std::array<float, 4> w = linear_weights(a, patient.lungs[l], g);
     const auto swept = [&](const Sums& sums) {
       double v = 0;
       for (std::uint32_t k = 0; k < c; ++k) v += sums.sh[k] * force[l * c + k];

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "sim/asset/baked_asset.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
@@ -26,8 +27,9 @@ class VentralShare {
 
   /// The anterior half's share of the pair's swept volume for the force SH `force` (lungs x L^2, lung-major, per
   /// mL as the runtime's) with gravity `g_lung` (lung frame): each lung weighted by its share of the breath in
-  /// the posture (breath_share.h). 0 when the pair sweeps nothing.
-  double share(const BakedAsset& asset, std::span<const float> force, const Eigen::Vector3d& g_lung) const;
+  /// the posture (breath_share.h), the patient as `patient` is. 0 when the pair sweeps nothing.
+  double share(const BakedAsset& asset, const PatientState& patient, std::span<const float> force,
+               const Eigen::Vector3d& g_lung) const;
 
  private:
   struct Sums {

@@ -21,14 +21,15 @@ class Ards final : public Pathology {
   Ards(const PathologyModel& m, std::string_view spec, double severity) : Pathology(m, spec, ""), severity_(severity) {}
 
   /// Every lung takes the collapsed pattern's force, its healthy volumes kept for its weight in the split.
-  Status apply(BakedAsset& a) const override {
-    if (std::any_of(a.lungs.begin(), a.lungs.end(), [](const BakedLung& l) { return l.collapse != nullptr; }))
+  Status apply(BakedAsset& a, PatientState& patient) const override {
+    if (std::any_of(patient.lungs.begin(), patient.lungs.end(),
+                    [](const LungState& l) { return l.collapse != nullptr; }))
       return bad(spec(), "ARDS is given twice; give one severity");
     Result<std::shared_ptr<const DependentCollapse>> pattern = DependentCollapse::build(a, severity_);
     if (!pattern) return bad(spec(), pattern.error());
     for (std::size_t l = 0; l < a.lungs.size(); ++l) {
-      BakedLung& lung = a.lungs[l];
-      keep_healthy_volumes(lung);
+      LungState& lung = patient.lungs[l];
+      keep_healthy_volumes(a.lungs[l], lung);
       lung.collapse = *pattern;
       lung.collapse_index = l;
     }

@@ -45,7 +45,7 @@ class Consolidation final : public Pathology {
 
   /// Scales the response of the region's vertices and the lung's swept volumes with it, keeping the healthy ones
   /// for its weight in the split (breath_share.h); an error when its swept volume is not positive.
-  Status apply(BakedAsset& a) const override {
+  Status apply(BakedAsset& a, PatientState& patient) const override {
     Result<std::size_t> l = lung_of(a, side(), spec());
     if (!l) return l.with_context("");
     BakedLung& lung = a.lungs[*l];
@@ -56,7 +56,7 @@ class Consolidation final : public Pathology {
       const double w = region_weight(a.positions[3 * i + 2], lo, hi, third_);
       if (w != 0) scale_response(a, i, static_cast<float>(1.0 - (1.0 - kConsolidatedResponse) * w));
     }
-    keep_healthy_volumes(lung);
+    keep_healthy_volumes(lung, patient.lungs[*l]);
     resum_swept_volumes(a, lung, before);
     return {};
   }

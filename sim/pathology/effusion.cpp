@@ -26,7 +26,7 @@ class Effusion final : public Pathology {
   Effusion(const PathologyModel& m, std::string_view spec, std::string side, double ml)
       : Pathology(m, spec, std::move(side)), ml_(ml) {}
 
-  Status apply(BakedAsset& a) const override {
+  Status apply(BakedAsset& a, PatientState& patient) const override {
     Result<std::size_t> l = lung_of(a, side(), spec());
     if (!l) return l.with_context("");
     BakedLung& lung = a.lungs[*l];
@@ -36,7 +36,7 @@ class Effusion final : public Pathology {
                              std::to_string(static_cast<long>(lung.rest_volume_ml)) + " mL");
     const double apex = extent(a, lung, 2).second;
     scale_along_axis(a, *l, 2, apex, 1.0 - share);
-    lung.breath_weight *= 1.0 - share;
+    patient.lungs[*l].breath_weight *= 1.0 - share;
     return {};
   }
 

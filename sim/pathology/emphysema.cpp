@@ -20,14 +20,14 @@ class Emphysema final : public Pathology {
   Emphysema(const PathologyModel& m, std::string_view spec, std::string side, double severity)
       : Pathology(m, spec, std::move(side)), severity_(severity) {}
 
-  Status apply(BakedAsset& a) const override {
+  Status apply(BakedAsset& a, PatientState& patient) const override {
     if (!side().empty()) {
       Result<std::size_t> l = lung_of(a, side(), spec());
       if (!l) return l.with_context("");
-      scale_about_hilum(a, *l, 1.0 + kFrcGain * severity_);
+      scale_about_hilum(a, patient, *l, 1.0 + kFrcGain * severity_);
       return {};
     }
-    for (std::size_t l = 0; l < a.lungs.size(); ++l) scale_about_hilum(a, l, 1.0 + kFrcGain * severity_);
+    for (std::size_t l = 0; l < a.lungs.size(); ++l) scale_about_hilum(a, patient, l, 1.0 + kFrcGain * severity_);
     return {};
   }
 

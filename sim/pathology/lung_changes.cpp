@@ -90,9 +90,9 @@ double midline_x(const BakedAsset& a) {
   return shares > 0 ? x / shares : 0.0;
 }
 
-void keep_healthy_volumes(BakedLung& lung) {
-  if (!lung.healthy_volumes)
-    lung.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
+void keep_healthy_volumes(const BakedLung& lung, LungState& now) {
+  if (!now.healthy_volumes)
+    now.healthy_volumes = {lung.volume_const, lung.volume_grad[0], lung.volume_grad[1], lung.volume_grad[2]};
 }
 
 void resum_swept_volumes(const BakedAsset& a, BakedLung& lung, double before) {
@@ -117,7 +117,7 @@ Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l) {
   return area > 0 ? Eigen::Vector3d(sum / area) : vec3(lung.centre.data());
 }
 
-void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor) {
+void scale_about_hilum(BakedAsset& a, PatientState& patient, std::size_t l, double volume_factor) {
   BakedLung& lung = a.lungs[l];
   const double s = std::cbrt(volume_factor);
   const Eigen::Vector3d h = hilum(a, l);
@@ -129,8 +129,8 @@ void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor) {
   lung.rest_volume_ml *= s * s * s;
   lung.volume_const *= s * s;
   for (double& v : lung.volume_grad) v *= s * s;
-  if (lung.healthy_volumes)
-    for (double& v : *lung.healthy_volumes) v *= s * s;
+  if (std::optional<std::array<double, 4>>& healthy = patient.lungs[l].healthy_volumes)
+    for (double& v : *healthy) v *= s * s;
 }
 
 void scale_along_axis(BakedAsset& a, std::size_t l, int axis, double about, double k) {

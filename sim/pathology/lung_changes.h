@@ -13,6 +13,7 @@
 
 #include "config/base/result.h"
 #include "sim/asset/baked_asset.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim::pathology {
 
@@ -52,9 +53,9 @@ std::pair<double, double> extent(const BakedAsset& a, const BakedLung& lung, int
 /// The pair's volume-weighted mean x: the body's midline as the lungs give it.
 double midline_x(const BakedAsset& a);
 
-/// Before a change of the lung's response: its swept volumes as they were, for its weight in the split
-/// (breath_share.h), unless an earlier pathology kept them already.
-void keep_healthy_volumes(BakedLung& lung);
+/// Before a change of the lung's response: its swept volumes as they were (`lung`'s), kept in its state `now` for
+/// its weight in the split (breath_share.h), unless an earlier pathology kept them already.
+void keep_healthy_volumes(const BakedLung& lung, LungState& now);
 
 /// After the lung's response or surface changed: its swept volumes summed again from the arrays, the bake's
 /// per-lung factor to the enclosed volume (about 1.03) kept; `before` is the first-order sum from before the
@@ -67,8 +68,8 @@ Eigen::Vector3d hilum(const BakedAsset& a, std::size_t l);
 
 /// Scales lung l about its hilum to `volume_factor` of its volume, keeping its shape. The first-order swept
 /// volumes scale with the area (s^2): the per-vertex response T is kept, so a unit of force moves the same
-/// millimetres over a smaller (or larger) surface.
-void scale_about_hilum(BakedAsset& a, std::size_t l, double volume_factor);
+/// millimetres over a smaller (or larger) surface. The healthy volumes a pathology kept in `patient` scale too.
+void scale_about_hilum(BakedAsset& a, PatientState& patient, std::size_t l, double volume_factor);
 
 /// Scales lung l along lung-frame axis `axis` (0 x, 1 y, 2 z) by k about the plane at `about`: its positions,
 /// centre, areas and normals (a surface element under u -> k u: its area times sqrt(n_u^2 + k^2 (1 - n_u^2)), its

@@ -37,12 +37,13 @@ bool same_response(const BakedAsset& a, const BakedAsset& b, std::size_t l) {
 
 }  // namespace
 
-Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const BakedAsset& changed) {
-  if (!same_layout(loaded, changed)) return fail("lung shapes: expected two states of the same bake");
+Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const BakedAsset& changed,
+                                           const PatientState& changed_patient) {
+  if (!same_layout(loaded, changed) || changed_patient.lungs.size() != changed.lungs.size())
+    return fail("lung shapes: expected two states of the same bake");
   std::vector<LungShape> out;
   for (std::size_t l = 0; l < loaded.lungs.size(); ++l) {
     const BakedLung& before = loaded.lungs[l];
-    const BakedLung& after = changed.lungs[l];
     if (!same_response(loaded, changed, l))
       return fail("lung '" + before.name + "': its response changed, not only its shape");
     const std::size_t n = std::min<std::size_t>(kFitPoints, before.vertex_count);
@@ -61,7 +62,7 @@ Result<std::vector<LungShape>> lung_shapes(const BakedAsset& loaded, const Baked
     LungShape s;
     s.from_loaded.linear() = x.topRows(3).transpose();
     s.from_loaded.translation() = x.row(3).transpose();
-    s.figures = LungFigures::of(after);
+    s.figures = changed_patient.lungs[l];
     out.push_back(s);
   }
   return out;
@@ -74,8 +75,8 @@ std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vect
   for (std::size_t l = 0; l < out.size() && l < from.size() && l < to.size(); ++l) {
     out[l].from_loaded.matrix() =
         from[l].from_loaded.matrix() + w * (to[l].from_loaded.matrix() - from[l].from_loaded.matrix());
-    LungFigures& f = out[l].figures;
-    const LungFigures &a = from[l].figures, &b = to[l].figures;
+    LungState& f = out[l].figures;
+    const LungState &a = from[l].figures, &b = to[l].figures;
     for (int k = 0; k < 3; ++k) f.centre[k] = static_cast<float>(mix(a.centre[k], b.centre[k]));
     f.rest_volume_ml = mix(a.rest_volume_ml, b.rest_volume_ml);
     f.volume_const = mix(a.volume_const, b.volume_const);
@@ -83,26 +84,6 @@ std::vector<LungShape> blend(const std::vector<LungShape>& from, const std::vect
     f.breath_weight = mix(a.breath_weight, b.breath_weight);
   }
   return out;
-}
-
-LungFigures LungFigures::of(const BakedLung& lung) {
-  return {lung.centre,         lung.rest_volume_ml,  lung.volume_const, lung.volume_grad,
-          lung.breath_weight,  lung.healthy_volumes, lung.collapse,      lung.collapse_index};
-}
-
-void LungFigures::put_into(BakedLung& lung) const {
-  lung.centre = centre;
-  lung.rest_volume_ml = rest_volume_ml;
-  lung.volume_const = volume_const;
-  lung.volume_grad = volume_grad;
-  lung.breath_weight = breath_weight;
-  lung.healthy_volumes = healthy_volumes;
-  lung.collapse = collapse;
-  lung.collapse_index = collapse_index;
-}
-
-void take_figures(const std::vector<LungShape>& shapes, BakedAsset& asset) {
-  for (std::size_t l = 0; l < shapes.size() && l < asset.lungs.size(); ++l) shapes[l].figures.put_into(asset.lungs[l]);
 }
 
 }  // namespace lungar::sim

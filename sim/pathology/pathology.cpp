@@ -82,15 +82,22 @@ Status check_pathologies(const std::vector<std::string>& specs) {
   return {};
 }
 
-Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs) {
+Status apply_pathologies(BakedAsset& asset, PatientState& patient, const std::vector<std::string>& specs) {
   if (specs.empty()) return {};
+  if (patient.lungs.size() != asset.lungs.size())
+    return fail("pathologies: expected a patient state of the asset's " + std::to_string(asset.lungs.size()) +
+                " lungs, got " + std::to_string(patient.lungs.size()));
   Result<std::vector<std::shared_ptr<const Pathology>>> parsed = parse_distinct(specs);
   if (!parsed) return parsed.with_context("");
   std::stable_partition(parsed->begin(), parsed->end(), [](const auto& p) { return !p->model().applied_last(); });
   BakedAsset changed = asset;
-  for (const auto& p : *parsed)
-    if (Status s = p->apply(changed); !s) return s;
+  PatientState now = patient;
+  for (const auto& p : *parsed) {
+    if (Status s = p->apply(changed, now); !s) return s;
+    for (std::size_t l = 0; l < changed.lungs.size(); ++l) now.lungs[l].take_shape_of(changed.lungs[l]);
+  }
   asset = std::move(changed);
+  patient = std::move(now);
   return {};
 }
 

@@ -19,6 +19,7 @@
 
 #include "config/base/result.h"
 #include "sim/asset/baked_asset.h"
+#include "sim/patient/patient_state.h"
 
 namespace lungar::sim {
 
@@ -42,9 +43,10 @@ class Pathology {
   virtual bool overlaps(const Pathology& other) const {
     return side_.empty() || other.side_.empty() || side_ == other.side_;
   }
-  /// Changes `asset` at load (its per-vertex response, per-lung figures, or the force it takes per posture); on an
-  /// error the caller drops the asset it was given (apply_pathologies works on a copy).
-  virtual Status apply(BakedAsset& asset) const = 0;
+  /// Changes the patient at load: `asset`, its shape and per-vertex response (the asset is not written after
+  /// load), and `patient`, what the patient is now (a lung's weight in the split, the force it takes per posture).
+  /// On an error the caller drops both (apply_pathologies works on copies).
+  virtual Status apply(BakedAsset& asset, PatientState& patient) const = 0;
 
  private:
   const PathologyModel* model_;
@@ -103,9 +105,10 @@ Result<std::shared_ptr<const Pathology>> parse_pathology(std::string_view spec);
 /// expected.
 Status check_pathologies(const std::vector<std::string>& specs);
 
-/// Parses and applies each spec in order (those applied_last() last); the error names the spec (a repeated one,
-/// check_pathologies, too). All or nothing: on an error `asset` is unchanged.
-Status apply_pathologies(BakedAsset& asset, const std::vector<std::string>& specs);
+/// Parses and applies each spec in order (those applied_last() last) to `asset` and `patient` (one state per lung
+/// of the asset; the lungs' shape figures in it follow the asset's after each); the error names the spec (a
+/// repeated one, check_pathologies, too). All or nothing: on an error both are unchanged.
+Status apply_pathologies(BakedAsset& asset, PatientState& patient, const std::vector<std::string>& specs);
 
 /// The breathing a pathology asks for: the first of `specs` whose model has a preset (an emphysema: "emphysema"),
 /// and that spec; both "" when none has.

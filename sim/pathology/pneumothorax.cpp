@@ -53,11 +53,11 @@ class Pneumothorax final : public Pathology {
   Pneumothorax(const PathologyModel& m, std::string_view spec, std::string side, double percent, bool tension)
       : Pathology(m, spec, std::move(side)), percent_(percent), tension_(tension) {}
 
-  Status apply(BakedAsset& a) const override {
+  Status apply(BakedAsset& a, PatientState& patient) const override {
     Result<std::size_t> l = lung_of(a, side(), spec());
     if (!l) return l.with_context("");
-    scale_about_hilum(a, *l, 1.0 - percent_ / 100.0);
-    a.lungs[*l].breath_weight *= kCollapsedLungBreathWeight;
+    scale_about_hilum(a, patient, *l, 1.0 - percent_ / 100.0);
+    patient.lungs[*l].breath_weight *= kCollapsedLungBreathWeight;
     if (tension_) push_mediastinum(a, *l);
     return {};
   }

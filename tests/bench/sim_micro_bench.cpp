@@ -56,9 +56,10 @@ void set_counters(benchmark::State& state, const BakedAsset& a) {
 void BM_ForceShExact(benchmark::State& state) {
   const BakedAsset& a = asset(static_cast<std::uint32_t>(state.range(0)));
   std::vector<float> force(a.lungs.size() * a.coefficients());
+  const lungar::sim::PatientState patient = lungar::sim::PatientState::of(a);
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::Exact, turn(k++), force.data());
+    lungar::sim::force_sh(a, patient, lungar::sim::ForceMode::Exact, turn(k++), force.data());
     benchmark::DoNotOptimize(force.data());
   }
 }
@@ -66,9 +67,10 @@ void BM_ForceShExact(benchmark::State& state) {
 void BM_ForceShPaper(benchmark::State& state) {
   const BakedAsset& a = asset(static_cast<std::uint32_t>(state.range(0)));
   std::vector<float> force(a.lungs.size() * a.coefficients());
+  const lungar::sim::PatientState patient = lungar::sim::PatientState::of(a);
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::Paper, turn(k++), force.data());
+    lungar::sim::force_sh(a, patient, lungar::sim::ForceMode::Paper, turn(k++), force.data());
     benchmark::DoNotOptimize(force.data());
   }
 }
@@ -77,11 +79,12 @@ void BM_ForceShPaper(benchmark::State& state) {
 void BM_CpuEq7(benchmark::State& state) {
   const BakedAsset& a = asset(static_cast<std::uint32_t>(state.range(0)));
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(a.positions.size());
+  const lungar::sim::PatientState patient = lungar::sim::PatientState::of(a);
   long k = 0;
   for (auto _ : state) {
-    lungar::sim::force_sh(a, lungar::sim::ForceMode::Exact, turn(k), force.data());
-    lungar::sim::deform_eq7(a, force, lungar::sim::gravity_in_lung_frame(turn(k)), 250.0 + 0.01 * static_cast<double>(k),
-                            positions);
+    lungar::sim::force_sh(a, patient, lungar::sim::ForceMode::Exact, turn(k), force.data());
+    lungar::sim::deform_eq7(a, patient, force, lungar::sim::gravity_in_lung_frame(turn(k)),
+                            250.0 + 0.01 * static_cast<double>(k), positions);
     ++k;
     benchmark::DoNotOptimize(positions.data());
   }
@@ -93,9 +96,10 @@ void BM_CpuEq1(benchmark::State& state) {
   const BakedAsset& a = asset(static_cast<std::uint32_t>(state.range(0)));
   lungar::sim::Eq1Deformer eq1(a);
   std::vector<float> positions(a.positions.size());
+  const lungar::sim::PatientState patient = lungar::sim::PatientState::of(a);
   long k = 0;
   for (auto _ : state) {
-    eq1.deform(lungar::sim::gravity_in_lung_frame(turn(k)), 250.0 + 0.01 * static_cast<double>(k), positions);
+    eq1.deform(patient, lungar::sim::gravity_in_lung_frame(turn(k)), 250.0 + 0.01 * static_cast<double>(k), positions);
     ++k;
     benchmark::DoNotOptimize(positions.data());
   }

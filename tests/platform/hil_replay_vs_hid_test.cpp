@@ -114,7 +114,7 @@ class HardwareInTheLoop : public ::testing::Test {
     f.g = {g.x(), g.y(), g.z()};
     const std::uint32_t c = asset.coefficients();
     std::vector<float> force(asset.lungs.size() * c);
-    platform::patient_force_sh(asset, sim::ForceMode::Exact, lung_q, force);
+    platform::patient_force_sh(asset, sim::PatientState::of(asset), sim::ForceMode::Exact, lung_q, force);
     std::vector<render::LungFrame> lungs(asset.lungs.size());
     for (std::size_t l = 0; l < lungs.size(); ++l) {
       lungs[l].force = std::span<const float>(force.data() + l * c, c);

@@ -79,7 +79,8 @@ TEST(PathologyCourse, ATensionPneumothoraxComesThenANeedleLetsItGo) {
   EXPECT_EQ(shown(55.0), "none");
   const std::size_t right = right_of(healthy());
   sim::BakedAsset sick = healthy();
-  ASSERT_TRUE(sim::apply_pathologies(sick, {"pneumothorax:right:40:tension"}));
+  sim::PatientState sick_patient = sim::PatientState::of(sick);
+  ASSERT_TRUE(sim::apply_pathologies(sick, sick_patient, {"pneumothorax:right:40:tension"}));
   auto weight = [&](double t) { return (*course)->at_seconds(t)[right].figures.breath_weight; };
   auto centre_x = [&](double t) { return double{(*course)->at_seconds(t)[right].figures.centre[0]}; };
   EXPECT_EQ(weight(5.0), 1.0) << "healthy before";
@@ -119,11 +120,13 @@ TEST(PathologyCourse, StartsFromLungsDrawnOtherwiseAndTakesAnArdsFromTheStart) {
   // an ARDS from the start. The pneumothorax is a map of the drawn lungs, the ARDS their force's collapse.
   const sim::PathologyTimeline instructor{{"pneumothorax:right:30", "ards:0.6"}, {}};
   sim::BakedAsset drawn = healthy();
-  ASSERT_TRUE(sim::apply_pathologies(drawn, {"emphysema:0.5"}));  // the trainee's own, overruled
+  sim::PatientState drawn_patient = sim::PatientState::of(drawn);
+  ASSERT_TRUE(sim::apply_pathologies(drawn, drawn_patient, {"emphysema:0.5"}));  // the trainee's own, overruled
   auto course = platform::PathologyCourse::create(healthy(), drawn, instructor);
   ASSERT_TRUE(course) << course.error();
   sim::BakedAsset sick = healthy();
-  ASSERT_TRUE(sim::apply_pathologies(sick, instructor.start));
+  sim::PatientState sick_patient = sim::PatientState::of(sick);
+  ASSERT_TRUE(sim::apply_pathologies(sick, sick_patient, instructor.start));
   const std::size_t right = right_of(healthy());
   const auto& now = (*course)->at_seconds(1.0);
   EXPECT_NEAR(now[right].figures.rest_volume_ml, sick.lungs[right].rest_volume_ml, 1e-6);
@@ -134,7 +137,8 @@ TEST(PathologyCourse, StartsFromLungsDrawnOtherwiseAndTakesAnArdsFromTheStart) {
   const Eigen::Vector3d to(sick.positions[3 * i], sick.positions[3 * i + 1], sick.positions[3 * i + 2]);
   EXPECT_LT((now[right].from_loaded * from - to).norm(), 0.05) << "mapped from the emphysema to the pneumothorax";
   sim::BakedAsset consolidated = healthy();
-  ASSERT_TRUE(sim::apply_pathologies(consolidated, {"consolidation:left:lower"}));
+  sim::PatientState consolidated_patient = sim::PatientState::of(consolidated);
+  ASSERT_TRUE(sim::apply_pathologies(consolidated, consolidated_patient, {"consolidation:left:lower"}));
   auto refused = platform::PathologyCourse::create(healthy(), consolidated, instructor);
   ASSERT_FALSE(refused) << "the drawn lungs' consolidation is baked into their response";
   EXPECT_NE(refused.error().find("pathology at the start"), std::string::npos) << refused.error();

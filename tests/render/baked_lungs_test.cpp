@@ -66,7 +66,7 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
     // Random forces of the physical force's size per coefficient.
     std::vector<float> physical(force.size());
-    sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), physical.data());
+    sim::force_sh(a, sim::PatientState::of(a), sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), physical.data());
     float scale = 0;
     for (float x : physical) scale = std::max(scale, std::abs(x));
     std::mt19937 rng(seed);
@@ -75,11 +75,13 @@ TEST_F(BakedLungsTest, TransformFeedbackMatchesSimCpuEq7) {
     const double dv = 500.0;
     const Eigen::Vector3d g = Eigen::Vector3d(seed, 1.0, -2.0).normalized();  // the off-axis part's orientation
     std::vector<float> expected(a.positions.size());
-    sim::deform_eq7(a, force, g, dv, expected);
+    sim::deform_eq7(a, sim::PatientState::of(a), force, g, dv, expected);
     std::vector<LungFrame> lungs;
     for (std::size_t i = 0; i < a.lungs.size(); ++i) {
       lungs.push_back({std::span<const float>(force).subspan(i * nc, nc),
-                       static_cast<float>(dv * sim::breath_share(a, i, g)), {}, sim::linear_weights(a, a.lungs[i], g)});
+                       static_cast<float>(dv * sim::breath_share(a, sim::PatientState::of(a), i, g)),
+                       {},
+                       sim::linear_weights(a, sim::LungState::healthy(a.lungs[i]), g)});
     }
     std::vector<float> captured;
     ASSERT_TRUE(renderer->capture_deformed(*drawable, lungs, captured));
@@ -99,7 +101,8 @@ TEST_F(BakedLungsTest, UprightSilhouetteGrowsMostAtTheBase) {
   Renderer* renderer = &*renderer_;
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
-  sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());  // upright
+  sim::force_sh(a, sim::PatientState::of(a), sim::ForceMode::Exact, Eigen::Quaterniond::Identity(),
+                force.data());  // upright
 
   // A narrow field (30 degrees at 700 mm: ~2.5 px per mm) so that millimetres of breathing show as pixels.
   constexpr int kW = 960, kH = 960;
@@ -255,7 +258,7 @@ TEST(ReadmeSnapshot, StereoPairAtEndInspiration) {
   ASSERT_TRUE(renderer);
   const std::uint32_t nc = a.coefficients();
   std::vector<float> force(a.lungs.size() * nc);
-  sim::force_sh(a, sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
+  sim::force_sh(a, sim::PatientState::of(a), sim::ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
   const glm::vec3 colours[2] = {{0.45f, 0.60f, 0.95f}, {0.90f, 0.45f, 0.45f}};
   std::vector<LungFrame> lungs;
   for (std::size_t i = 0; i < a.lungs.size(); ++i) {

@@ -35,8 +35,8 @@ struct Where {
   double ventral_share = 0;
 };
 
-Where breathe(const BakedAsset& a, const Eigen::Vector3d& g, double ml) {
-  const std::vector<float> d = displacement_vectors(a, g, ml);
+Where breathe(const test::Sick& a, const Eigen::Vector3d& g, double ml) {
+  const std::vector<float> d = displacement_vectors(a, a.patient, g, ml);
   std::vector<float> moved(a.positions.size());
   for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
   Where w;
@@ -70,7 +70,7 @@ double total(const Where& w) { return w.change_ml[0] + w.change_ml[1]; }
 std::size_t left_of(const BakedAsset& a) { return a.lungs[0].name == "left" ? 0 : 1; }
 
 TEST(Ards, SupineTheBreathMovesVentralAndProneTheDorsalLungTakesItBack) {
-  const BakedAsset healthy = test::sliding_asset(), ards = with({"ards:0.6"});
+  const test::Sick healthy = with({}), ards = with({"ards:0.6"});
   const Where healthy_supine = breathe(healthy, kSupine, 500), supine = breathe(ards, kSupine, 500),
               prone = breathe(ards, kProne, 500);
   EXPECT_GE(supine.ventral_share, healthy_supine.ventral_share + 0.05)
@@ -83,7 +83,7 @@ TEST(Ards, SupineTheBreathMovesVentralAndProneTheDorsalLungTakesItBack) {
 }
 
 TEST(Ards, LyingOnASideTheLowerLungCollapsesAndTheUpperTakesMore) {
-  const BakedAsset healthy = test::sliding_asset(), ards = with({"ards:0.6"});
+  const test::Sick healthy = with({}), ards = with({"ards:0.6"});
   const std::size_t left = left_of(healthy);
   const Where before = breathe(healthy, kLeftSideDown, 500), after = breathe(ards, kLeftSideDown, 500);
   EXPECT_LT(after.change_ml[left] / total(after), before.change_ml[left] / total(before) - 0.05)
@@ -92,18 +92,19 @@ TEST(Ards, LyingOnASideTheLowerLungCollapsesAndTheUpperTakesMore) {
 }
 
 TEST(Ards, ProneCollapsesLessOfTheLungThanSupineAsThePorcineCtShows) {
-  const BakedAsset ards = with({"ards:0.6"});
-  const DependentCollapse& c = *ards.lungs[0].collapse;
+  const test::Sick ards = with({"ards:0.6"});
+  const DependentCollapse& c = *ards.patient.lungs[0].collapse;
   EXPECT_NEAR(c.collapsed_share(kSupine), 0.51, 0.005) << "non- and poorly aerated, supine: 4 + 47 %";
   EXPECT_NEAR(c.collapsed_share(kProne), 0.31, 0.005) << "prone: 1 + 30 %";
   // The plane lies deeper (further along gravity) the less collapses: supine it cuts the back at depth t.
-  EXPECT_LT(c.threshold_mm(kSupine), with({"ards:0.2"}).lungs[0].collapse->threshold_mm(kSupine));
+  EXPECT_LT(c.threshold_mm(kSupine), with({"ards:0.2"}).patient.lungs[0].collapse->threshold_mm(kSupine));
 }
 
 TEST(Ards, SeverityZeroIsTheHealthyForceWithinTheSamplesFit) {
-  const BakedAsset healthy = test::sliding_asset(), none = with({"ards:0"});
+  const test::Sick healthy = with({}), none = with({"ards:0"});
   for (const Eigen::Vector3d& g : {kSupine, kProne, kLeftSideDown, Eigen::Vector3d(0, 0, -1)}) {
-    const std::vector<float> a = displacement_vectors(healthy, g, 500), b = displacement_vectors(none, g, 500);
+    const std::vector<float> a = displacement_vectors(healthy, healthy.patient, g, 500),
+                             b = displacement_vectors(none, none.patient, g, 500);
     double diff = 0, norm = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
       diff += (a[i] - b[i]) * (a[i] - b[i]);
@@ -114,21 +115,20 @@ TEST(Ards, SeverityZeroIsTheHealthyForceWithinTheSamplesFit) {
 }
 
 TEST(Ards, TheShCarriesThePatternWhereTheLinearBasisCannot) {
-  const BakedAsset ards = with({"ards:0.6"});
+  const test::Sick ards = with({"ards:0.6"});
   for (const Eigen::Vector3d& g : {kSupine, kProne}) {
-    const CollapseFitError e = ards.lungs[0].collapse->fit_error(ards, g);
+    const CollapseFitError e = ards.patient.lungs[0].collapse->fit_error(ards, g);
     EXPECT_LT(e.sh_rms_rel, 0.5 * e.linear_rms_rel) << "SH " << e.sh_rms_rel << ", linear " << e.linear_rms_rel;
     EXPECT_GT(e.linear_rms_rel, 0.15) << "a collapse is not linear in position";
   }
 }
 
 TEST(Ards, TheEq1BaselineTakesTheSamePatternAtEachVertex) {
-  const BakedAsset& healthy = test::sliding_asset();
-  const BakedAsset ards = with({"ards:0.6"});
+  const test::Sick healthy = with({}), ards = with({"ards:0.6"});
   std::vector<float> healthy_f(ards.vertex_count()), sick_f(ards.vertex_count());
-  applied_force(healthy, kSupine, healthy_f);
-  applied_force(ards, kSupine, sick_f);
-  const double t = ards.lungs[0].collapse->threshold_mm(kSupine);
+  applied_force(healthy, healthy.patient, kSupine, healthy_f);
+  applied_force(ards, ards.patient, kSupine, sick_f);
+  const double t = ards.patient.lungs[0].collapse->threshold_mm(kSupine);
   for (const BakedLung& lung : ards.lungs) {
     // Each lung's force is normalised by its own swept volume, so compare deep against shallow within a lung.
     double deep = 0, shallow = 0;
@@ -149,7 +149,7 @@ TEST(Ards, SittingUpOrHeadDownTheBreathStaysTheBreath) {
   // Gravity along the body's axis: the pressure's gradient is along z, which the off-axis part's z column carries,
   // and each lung's swept volume (what its force is scaled by) must count that column for the breath to be 500 mL.
   // Measured: within 6.5 mL of 500 (the healthy pair within 2.3); without the z column 537, 491 and 534 mL.
-  const BakedAsset ards = with({"ards:0.6"});
+  const test::Sick ards = with({"ards:0.6"});
   for (const Eigen::Vector3d& g :
        {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0.6, -0.8)}) {
     EXPECT_NEAR(total(breathe(ards, g, 500)), 500.0, 15.0) << "g " << g.transpose();
@@ -160,10 +160,10 @@ TEST(Ards, WithoutACollapseBothFitsCarryThePressureInEveryPosture) {
   // Severity 0 leaves the healthy pressure, linear in position: the linear fit carries it to rounding, and the SH
   // as closely as the bake's own fit does, whichever way gravity runs through the lungs. Measured: linear 1e-15,
   // SH at most 0.0081 (upright); a fit error that read a vertex's z from the vertex before gave SH 0.20 upright.
-  const BakedAsset none = with({"ards:0"});
+  const test::Sick none = with({"ards:0"});
   for (const Eigen::Vector3d& g :
        {kSupine, kProne, kLeftSideDown, Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 1)}) {
-    const CollapseFitError e = none.lungs[0].collapse->fit_error(none, g);
+    const CollapseFitError e = none.patient.lungs[0].collapse->fit_error(none, g);
     EXPECT_LT(e.linear_rms_rel, 1e-4) << "g " << g.transpose();
     EXPECT_LT(e.sh_rms_rel, 0.05) << "g " << g.transpose();
   }
@@ -182,12 +182,14 @@ TEST(Ards, ALungWithFewerVerticesThanTheFitHasUnknownsIsRefused) {
 TEST(Ards, AnAssetWithoutSpherePointsIsRefusedWithWhatToDo) {
   BakedAsset old = test::sliding_asset();
   old.sphere_dirs.clear();
-  const Status s = apply_pathologies(old, {"ards:0.5"});
+  PatientState old_patient = PatientState::of(old);
+  const Status s = apply_pathologies(old, old_patient, {"ards:0.5"});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("'ards:0.5'"), std::string::npos) << s.error();
   EXPECT_NE(s.error().find("re-bake"), std::string::npos) << s.error();
   BakedAsset twice = test::sliding_asset();
-  const Status s2 = apply_pathologies(twice, {"ards:0.5", "ards:0.2"});
+  PatientState twice_patient = PatientState::of(twice);
+  const Status s2 = apply_pathologies(twice, twice_patient, {"ards:0.5", "ards:0.2"});
   ASSERT_FALSE(s2);
   EXPECT_NE(s2.error().find("twice"), std::string::npos) << s2.error();
 }

@@ -37,7 +37,7 @@ std::vector<double> exact_eq1(const BakedAsset& a, const Eigen::Vector3d& g) {
     for (std::size_t j = 0; j < m.positions.size(); ++j)
       f(j, 0) = geo.areas[j] * (a.p0 + a.gamma_per_mm * g.dot(m.positions[j] - c));
     const Eigen::MatrixXd x = solver.solve(f, 1);
-    const double scale = 1000.0 / swept_volume_mm3(a, lung, g);
+    const double scale = 1000.0 / swept_volume_mm3(a, LungState::healthy(lung), g);
     for (std::size_t j = 0; j < m.positions.size(); ++j) d[lung.first_vertex + j] = x(j, 0) * scale;
   }
   return d;
@@ -60,10 +60,11 @@ TEST(Bake, Eq7LinearBasisAndTruncatedRowsMatchAFreshExactEq1) {
     const std::vector<double> exact = exact_eq1(a, g);
     std::vector<float> force(a.lungs.size() * c), d7(a.vertex_count()), dl(a.vertex_count()), f1(a.vertex_count()),
         d1(a.vertex_count());
-    for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
+    for (std::size_t l = 0; l < a.lungs.size(); ++l)
+      force_sh_exact(a, a.lungs[l], LungState::healthy(a.lungs[l]), g, force.data() + l * c);
     displacement_eq7(a, force, d7);
-    displacement_linear(a, g, dl);
-    applied_force(a, g, f1);
+    displacement_linear(a, PatientState::of(a), g, dl);
+    applied_force(a, PatientState::of(a), g, f1);
     displacement_eq1(a, f1, d1);
     EXPECT_LT(rms_rel(d7, exact), 0.03) << "eq. (7) with 16 coefficients, g = " << g.transpose();
     EXPECT_LT(rms_rel(dl, exact), 1e-5) << "linear basis";
@@ -115,7 +116,7 @@ TEST(Bake, PaperInterpolationFollowsEq8And9AsWritten) {
   const std::uint32_t c = a.coefficients();
   std::vector<float> exact(c), paper(c);
   // Upright: each axis contributes a third of the 2pi (= identity) array, which is the exact upright force.
-  force_sh_exact(a, lung, Eigen::Vector3d(0, 0, -1), exact.data());
+  force_sh_exact(a, lung, LungState::healthy(lung), Eigen::Vector3d(0, 0, -1), exact.data());
   force_sh_paper(lung, c, Eigen::Quaterniond::Identity(), paper.data());
   for (std::uint32_t i = 0; i < c; ++i) EXPECT_NEAR(paper[i], exact[i], 1e-5 * std::abs(exact[0]));
   // A quarter turn about axis k: that axis gives its pi/2 array, the other two their 2pi arrays, a third each.
@@ -148,17 +149,17 @@ TEST(Deform, PositionsMoveAlongNormalsByTheirShareOfTheVolume) {
   const std::uint32_t c = a.coefficients();
   const Eigen::Vector3d g(0, 0, -1);
   std::vector<float> force(a.lungs.size() * c), d(a.vertex_count()), moved(3 * a.vertex_count());
-  force_sh(a, ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
+  force_sh(a, PatientState::of(a), ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
   displacement_eq7(a, force, d);
-  deform_eq7(a, force, g, 250.0, moved);
+  deform_eq7(a, PatientState::of(a), force, g, 250.0, moved);
   for (std::uint32_t i = 0; i < a.vertex_count(); i += 97) {
-    const double share = breath_share(a, a.lung_of_vertex[i], g);
+    const double share = breath_share(a, PatientState::of(a), a.lung_of_vertex[i], g);
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(moved[3 * i + k], a.positions[3 * i + k] + 250.0 * share * d[i] * a.directions[3 * i + k], 1e-3);
   }
   Eq1Deformer eq1(a);
   std::vector<float> moved1(3 * a.vertex_count());
-  eq1.deform(g, 250.0, moved1);
+  eq1.deform(PatientState::of(a), g, 250.0, moved1);
   double diff = 0, norm = 0;
   for (std::size_t i = 0; i < moved.size(); ++i) {
     diff += std::pow(moved1[i] - moved[i], 2);

@@ -28,8 +28,8 @@ std::pair<double, double> heights(const BakedAsset& a, const BakedLung& lung) {
 TEST(Effusion, TheLungLosesTheFluidsVolumeFromItsBaseAndItsApexStays) {
   const BakedAsset& healthy = test::sliding_asset();
   const std::size_t right = test::index_of(healthy, "right"), left = test::index_of(healthy, "left");
-  const BakedAsset sick = test::with({"effusion:right:400"});
-  const test::Breath before = test::breathe(healthy, 500), after = test::breathe(sick, 500);
+  const test::Sick sick = test::with({"effusion:right:400"});
+  const test::Breath before = test::breathe(test::with({}), 500), after = test::breathe(sick, 500);
   // Measured on the surface itself, not on the figures the plug-in set.
   EXPECT_NEAR(before.rest_ml[right] - after.rest_ml[right], 400.0, 0.005 * before.rest_ml[right]);
   EXPECT_NEAR(after.rest_ml[left], before.rest_ml[left], 1e-9) << "the other lung is untouched";
@@ -46,8 +46,8 @@ TEST(Effusion, TheLungLosesTheFluidsVolumeFromItsBaseAndItsApexStays) {
 
 TEST(Effusion, ItCanComeAndGoWhileTheLungsAreDrawn) {
   const BakedAsset& healthy = test::sliding_asset();
-  const BakedAsset sick = test::with({"effusion:left:300"});
-  Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick);
+  const test::Sick sick = test::with({"effusion:left:300"});
+  Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick, sick.patient);
   ASSERT_TRUE(shapes) << shapes.error();
   auto p = parse_pathology("effusion:left:300");
   ASSERT_TRUE(p) << p.error();
@@ -55,7 +55,7 @@ TEST(Effusion, ItCanComeAndGoWhileTheLungsAreDrawn) {
   for (std::size_t l = 0; l < healthy.lungs.size(); ++l) {
     const BakedLung& lung = healthy.lungs[l];
     EXPECT_LT(test::worst_map_error(healthy, sick, (*shapes)[l].from_loaded, lung), 0.01) << lung.name;
-    EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.lungs[l].breath_weight);
+    EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.patient.lungs[l].breath_weight);
   }
 }
 
@@ -65,7 +65,8 @@ TEST(Effusion, WhatCannotBeIsRefusedInOneLine) {
   const std::size_t right = test::index_of(a, "right");
   const std::string too_much =
       "effusion:right:" + std::to_string(static_cast<int>(0.9 * a.lungs[right].rest_volume_ml));
-  const Status s = apply_pathologies(a, {too_much});
+  PatientState patient = PatientState::of(a);
+  const Status s = apply_pathologies(a, patient, {too_much});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("'" + too_much + "'"), std::string::npos) << s.error();
   EXPECT_NE(s.error().find("ML: expected at most 80 %"), std::string::npos) << s.error();

@@ -28,7 +28,8 @@ const InteriorDisplacement& field() {
 }
 
 const std::vector<float>& supine_surface() {
-  static const std::vector<float> d = displacement_vectors(sliding_asset(), kSupine, 500.0);
+  static const std::vector<float> d =
+      displacement_vectors(sliding_asset(), PatientState::of(sliding_asset()), kSupine, 500.0);
   return d;
 }
 

@@ -31,7 +31,7 @@ std::pair<double, double> x_range(const BakedAsset& a, const BakedLung& lung) {
 }
 
 TEST(TensionPneumothorax, TheMediastinumMovesOverAndPressesTheOtherLungFromItsMedialSide) {
-  const BakedAsset plain = with({"pneumothorax:right:40"}), tension = with({"pneumothorax:right:40:tension"});
+  const test::Sick plain = with({"pneumothorax:right:40"}), tension = with({"pneumothorax:right:40:tension"});
   const std::size_t right = index_of(plain, "right"), left = index_of(plain, "left");
   // LPS: +x is the patient's left. The collapsed right lung moves towards the left by the shift.
   EXPECT_NEAR(tension.lungs[right].centre[0] - plain.lungs[right].centre[0], kTensionShiftMm, 1e-3);
@@ -53,15 +53,17 @@ TEST(TensionPneumothorax, TheMediastinumMovesOverAndPressesTheOtherLungFromItsMe
 }
 
 TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
-  const BakedAsset healthy = test::sliding_asset(), sick = with({"pneumothorax:right:40:tension"});
-  Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick);
+  const BakedAsset& healthy = test::sliding_asset();
+  const test::Sick sick = with({"pneumothorax:right:40:tension"});
+  Result<std::vector<LungShape>> shapes = lung_shapes(healthy, sick, sick.patient);
   ASSERT_TRUE(shapes) << shapes.error();
   for (std::size_t l = 0; l < healthy.lungs.size(); ++l) {
     const BakedLung& lung = healthy.lungs[l];
     EXPECT_LT(test::worst_map_error(healthy, sick, (*shapes)[l].from_loaded, lung), 0.01) << lung.name;
-    EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.lungs[l].breath_weight);
+    EXPECT_EQ((*shapes)[l].figures.breath_weight, sick.patient.lungs[l].breath_weight);
+    EXPECT_EQ((*shapes)[l].figures.volume_const, sick.lungs[l].volume_const) << "the shape's figures follow it";
   }
-  const std::vector<LungShape> same = lung_shapes(healthy, healthy).take();
+  const std::vector<LungShape> same = lung_shapes(healthy, healthy, PatientState::of(healthy)).take();
   const std::vector<LungShape> half = blend(same, *shapes, 0.5);
   const std::size_t right = index_of(healthy, "right");
   // Every coordinate of the centre blends; the collapse moved z (and x) by millimetres, so one left out shows.
@@ -74,19 +76,17 @@ TEST(LungShapes, EachLungsNewShapeIsAMapOfItsLoadedOneAndTheBlendGoesBetween) {
   EXPECT_NEAR(half[right].figures.breath_weight, 0.5 * (1.0 + kCollapsedLungBreathWeight), 1e-9);
   EXPECT_TRUE(blend(same, *shapes, 1.0)[right].from_loaded.isApprox((*shapes)[right].from_loaded));
   EXPECT_TRUE(blend(same, *shapes, 0.0)[right].from_loaded.isApprox(Eigen::Affine3d::Identity(), 1e-9));
-  BakedAsset figures = healthy;
-  take_figures(*shapes, figures);
-  EXPECT_EQ(figures.lungs[right].volume_const, sick.lungs[right].volume_const);
-  EXPECT_EQ(figures.positions, healthy.positions) << "the positions are the drawing's map";
 }
 
 TEST(LungShapes, AChangeOfResponseIsRefusedByLungAndArdsRidesWithTheFigures) {
-  const BakedAsset healthy = test::sliding_asset();
-  Result<std::vector<LungShape>> c = lung_shapes(healthy, with({"consolidation:left:lower"}));
+  const BakedAsset& healthy = test::sliding_asset();
+  const test::Sick consolidated = with({"consolidation:left:lower"});
+  Result<std::vector<LungShape>> c = lung_shapes(healthy, consolidated, consolidated.patient);
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().find("lung 'left'"), std::string::npos) << c.error();
   // ARDS changes the force, not the response: its collapse goes with the figures (a trainee takes it so).
-  Result<std::vector<LungShape>> ards = lung_shapes(healthy, with({"ards:0.5", "pneumothorax:right:20"}));
+  const test::Sick sick = with({"ards:0.5", "pneumothorax:right:20"});
+  Result<std::vector<LungShape>> ards = lung_shapes(healthy, sick, sick.patient);
   ASSERT_TRUE(ards) << ards.error();
   for (const LungShape& lung : *ards) {
     ASSERT_TRUE(lung.figures.collapse);

@@ -76,7 +76,7 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
   const BakedAsset& a = sliding_asset();
   ASSERT_EQ(a.motion_model, MotionModel::sliding);
   const auto regions = asset_regions(a);
-  const MotionFigures supine = motion_figures(a, displacement_vectors(a, kSupine, 500), regions);
+  const MotionFigures supine = motion_figures(a, displacement_vectors(a, PatientState::of(a), kSupine, 500), regions);
   EXPECT_GE(supine.si_share, 0.80) << "mostly cranio-caudal, as the diaphragm drives it";
   EXPECT_LE(supine.apex_base_ratio, 0.45) << "the apex barely moves";
   EXPECT_GT(supine.dorsal_ventral_ratio, 1.3) << "the dependent, dorsal lung moves more";
@@ -89,7 +89,7 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
   EXPECT_LT(face(SurfaceRegion::apical).mean_displacement_mm,
             0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "held in the cupola";
 
-  const MotionFigures prone = motion_figures(a, displacement_vectors(a, kProne, 500), regions);
+  const MotionFigures prone = motion_figures(a, displacement_vectors(a, PatientState::of(a), kProne, 500), regions);
   EXPECT_LT(prone.dorsal_ventral_ratio, supine.dorsal_ventral_ratio) << "gravity keeps its role";
 }
 
@@ -97,7 +97,7 @@ TEST(SlidingModel, ThePapersModelOnTheSameLungsMovesLikeABalloon) {
   const BakedAsset& paper = test::small_asset();
   ASSERT_EQ(paper.motion_model, MotionModel::paper);
   for (std::size_t i = 0; i < paper.normals.size(); ++i) ASSERT_EQ(paper.directions[i], paper.normals[i]);
-  const MotionFigures f = motion_figures(paper, displacement_vectors(paper, kSupine, 500), {});
+  const MotionFigures f = motion_figures(paper, displacement_vectors(paper, PatientState::of(paper), kSupine, 500), {});
   EXPECT_LT(f.si_share, 0.5);
   EXPECT_GT(f.apex_base_ratio, 0.45);
 }
@@ -134,7 +134,7 @@ std::vector<double> exact_sliding(const BakedAsset& a, const Eigen::Vector3d& g,
       f.row(static_cast<Eigen::Index>(j)) =
           geo.areas[j] * (a.p0 + a.gamma_per_mm * g.dot(m.positions[j] - c)) * b.drive.row(static_cast<Eigen::Index>(j));
     const Eigen::MatrixXd u = solver.solve(f, 1);
-    const double scale = 1000.0 / swept_volume_mm3(a, lung, g);
+    const double scale = 1000.0 / swept_volume_mm3(a, LungState::healthy(lung), g);
     for (std::size_t j = 0; j < m.positions.size(); ++j) {
       const float* e = &a.directions[3 * (lung.first_vertex + j)];
       const auto row = static_cast<Eigen::Index>(j);
@@ -150,7 +150,8 @@ TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
   const std::uint32_t c = a.coefficients();
   for (const Eigen::Vector3d& g : {kSupine, kUpright, Eigen::Vector3d(1, 1, -1).normalized()}) {
     std::vector<float> force(a.lungs.size() * c), d7(a.vertex_count());
-    for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
+    for (std::size_t l = 0; l < a.lungs.size(); ++l)
+      force_sh_exact(a, a.lungs[l], LungState::healthy(a.lungs[l]), g, force.data() + l * c);
     displacement_eq7(a, force, d7);
     std::vector<double> u;
     const std::vector<double> exact = exact_sliding(a, g, &u);
@@ -161,10 +162,11 @@ TEST(SlidingModel, Eq7MatchesAFreshSolveOfTheVectorGreensFunction) {
     }
     EXPECT_LT(std::sqrt(num / den), 0.02) << "along e_I, g = " << g.transpose();
     // The whole vector the runtime moves a vertex by (D e_I plus the off-axis part) against the exact u.
-    const std::vector<float> moved = displacement_vectors(a, g, 1.0);
+    const PatientState healthy = PatientState::of(a);
+    const std::vector<float> moved = displacement_vectors(a, healthy, g, 1.0);
     double vnum = 0, vden = 0, along_num = 0;
     for (std::size_t i = 0; i < a.vertex_count(); ++i) {
-      const double share = breath_share(a, a.lung_of_vertex[i], g);
+      const double share = breath_share(a, healthy, a.lung_of_vertex[i], g);
       for (int k = 0; k < 3; ++k) {
         const double exact_k = share * u[3 * i + k];
         vnum += (moved[3 * i + k] - exact_k) * (moved[3 * i + k] - exact_k);
@@ -185,7 +187,7 @@ TEST(SlidingModel, TidalVolumeIsExactInEveryPosture) {
   const BakedAsset& a = sliding_asset();
   const double rest = enclosed_volume(a.triangles, a.positions.data());
   for (const Eigen::Vector3d& g : {kSupine, kProne, kUpright, Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0)}) {
-    const std::vector<float> d = displacement_vectors(a, g, 500);
+    const std::vector<float> d = displacement_vectors(a, PatientState::of(a), g, 500);
     std::vector<float> moved(a.positions.size());
     for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
     EXPECT_NEAR((enclosed_volume(a.triangles, moved.data()) - rest) / 1000.0, 500.0, 10.0) << "g = " << g.transpose();
@@ -198,11 +200,11 @@ TEST(SlidingModel, TheCpuEq1RowsFollowTheSlidingModel) {
   EXPECT_LT(out.report.eq1_truncated_rms_rel_error, 0.15);
   Eq1Deformer eq1(out.asset);
   std::vector<float> moved1(out.asset.positions.size()), moved7(out.asset.positions.size());
-  eq1.deform(kUpright, 500, moved1);
+  eq1.deform(PatientState::of(out.asset), kUpright, 500, moved1);
   const std::uint32_t c = out.asset.coefficients();
   std::vector<float> force(out.asset.lungs.size() * c);
-  force_sh(out.asset, ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
-  deform_eq7(out.asset, force, kUpright, 500, moved7);
+  force_sh(out.asset, PatientState::of(out.asset), ForceMode::Exact, Eigen::Quaterniond::Identity(), force.data());
+  deform_eq7(out.asset, PatientState::of(out.asset), force, kUpright, 500, moved7);
   double num = 0, den = 0;
   for (std::size_t i = 0; i < moved1.size(); ++i) {
     const double d7 = moved7[i] - out.asset.positions[i], d1 = moved1[i] - out.asset.positions[i];

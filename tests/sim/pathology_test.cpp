@@ -19,22 +19,22 @@
 namespace lungar::sim {
 namespace {
 
-using test::kSupine;
+using test::Breath;
+using test::breathe;
 using test::index_of;
-using test::with;
 using test::kConsolidatedResponse;
 using test::kConsolidationRamp;
 using test::kEmphysemaFrcGain;
-using test::Breath;
-using test::breathe;
+using test::kSupine;
+using test::Sick;
 using test::triangles_of;
-
+using test::with;
 
 TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTheBreath) {
   const BakedAsset healthy = test::sliding_asset();
-  const BakedAsset ptx = with({"pneumothorax:right:30"});
+  const Sick ptx = with({"pneumothorax:right:30"});
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
-  const Breath before = breathe(healthy, 500), after = breathe(ptx, 500);
+  const Breath before = breathe(with({}), 500), after = breathe(ptx, 500);
   EXPECT_NEAR(after.rest_ml[right] / before.rest_ml[right], 0.70, 0.005) << "Light's index: 70 % of the volume left";
   EXPECT_NEAR(after.rest_ml[left], before.rest_ml[left], 1e-9) << "the other lung keeps its shape";
   EXPECT_NEAR(after.change_ml[right] + after.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
@@ -56,9 +56,9 @@ TEST(Pathology, PneumothoraxShrinksTheLungByItsPercentAndLeavesItUnderATenthOfTh
 TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKeepsBreathing) {
   const BakedAsset healthy = test::sliding_asset();
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
-  const Breath before = breathe(healthy, 500);
+  const Breath before = breathe(with({}), 500);
   for (const auto& [third, t] : {std::pair<std::string, int>{"lower", 0}, {"upper", 2}}) {
-    const BakedAsset sick = with({"consolidation:right:" + third});
+    const Sick sick = with({"consolidation:right:" + third});
     const Breath after = breathe(sick, 500);
     SCOPED_TRACE(third);
     ASSERT_GT(before.thirds_ml[right][t], 1.0);
@@ -77,7 +77,7 @@ TEST(Pathology, ConsolidatedThirdSweepsUnderAFifthOfItsHealthyVolumeAndTheRestKe
 // surface does not tear where the region ends. A step passed every other test (issue 42).
 TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
   const BakedAsset healthy = test::sliding_asset();
-  const BakedAsset sick = with({"consolidation:right:middle"});
+  const Sick sick = with({"consolidation:right:middle"});
   const BakedLung& lung = healthy.lungs[index_of(healthy, "right")];
   double lo = 1e300, hi = -1e300;
   for (std::size_t i = lung.first_vertex; i < std::size_t{lung.first_vertex} + lung.vertex_count; ++i) {
@@ -109,14 +109,14 @@ TEST(Pathology, ConsolidationRampsTheResponseLinearlyAcrossTheRegionsBorders) {
 TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath) {
   const BakedAsset healthy = test::sliding_asset();
   const std::size_t right = index_of(healthy, "right"), left = index_of(healthy, "left");
-  const Breath before = breathe(healthy, 500);
+  const Breath before = breathe(with({}), 500);
   const Breath both = breathe(with({"emphysema:0.75"}), 500);
   for (std::size_t l : {right, left}) {
     EXPECT_NEAR(both.rest_ml[l] / before.rest_ml[l], 1.0 + kEmphysemaFrcGain * 0.75, 0.005) << l;
   }
   EXPECT_NEAR(both.change_ml[right] + both.change_ml[left], 500.0, 15.0) << "the breath stays the breath";
   // Each lung's centre moves with its vertices: the scaling about the hilum scales every vector between them alike.
-  const BakedAsset larger = with({"emphysema:0.75"});
+  const Sick larger = with({"emphysema:0.75"});
   const double scale = std::cbrt(1.0 + kEmphysemaFrcGain * 0.75);
   for (std::size_t l : {right, left}) {
     const auto point = [](const BakedAsset& a, std::size_t i) {
@@ -142,7 +142,8 @@ TEST(Pathology, EmphysemaRestsEachLungLargerBySeverityAndTheBreathStaysTheBreath
 // Emphysema scales each lung about its hilum (pathology.h): the map's fixed point is the area-weighted centre of
 // the lung's medial face (normals within 60 degrees of the midline) in the middle third of its height.
 TEST(Pathology, EmphysemaScalesEachLungAboutItsHilum) {
-  const BakedAsset healthy = test::sliding_asset(), larger = with({"emphysema:1"});
+  const BakedAsset& healthy = test::sliding_asset();
+  const Sick larger = with({"emphysema:1"});
   const double s = std::cbrt(1.0 + kEmphysemaFrcGain);
   const auto point = [](const BakedAsset& a, std::size_t i) {
     return Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
@@ -216,15 +217,18 @@ TEST(Pathology, SpecsAreReadOrRefusedInOneLineNamingThePart) {
 
 TEST(Pathology, AListWithOneBadSpecLeavesTheAssetAsItWas) {
   BakedAsset a = test::sliding_asset();
-  const Status s = apply_pathologies(a, {"pneumothorax:right:30", "consolidation:left:side"});
+  PatientState patient = PatientState::of(a);
+  const Status s = apply_pathologies(a, patient, {"pneumothorax:right:30", "consolidation:left:side"});
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("consolidation:left:side"), std::string::npos) << s.error();
   EXPECT_EQ(a.positions, test::sliding_asset().positions);
-  EXPECT_EQ(a.lungs[index_of(a, "right")].breath_weight, 1.0);
+  EXPECT_EQ(patient.lungs[index_of(a, "right")].breath_weight, 1.0);
+  EXPECT_EQ(patient.lungs[index_of(a, "right")].rest_volume_ml, a.lungs[index_of(a, "right")].rest_volume_ml);
   BakedAsset one = a;
   one.lungs.resize(1);  // a single lung named by the bake: "left" or "right", not both
+  PatientState one_patient = PatientState::of(one);
   const std::string missing = one.lungs[0].name == "left" ? "right" : "left";
-  const Status no_lung = apply_pathologies(one, {"pneumothorax:" + missing + ":20"});
+  const Status no_lung = apply_pathologies(one, one_patient, {"pneumothorax:" + missing + ":20"});
   ASSERT_FALSE(no_lung);
   EXPECT_NE(no_lung.error().find("no lung named '" + missing + "'"), std::string::npos) << no_lung.error();
 }
@@ -240,7 +244,8 @@ TEST(Pathology, TheSamePathologyTwiceIsRefusedNamingBothAndLeavesTheAssetAsItWas
       {{"ards:0.6", "ards:0.3"}, "one ARDS"}};
   for (const auto& [specs, why] : repeated) {
     BakedAsset a = test::sliding_asset();
-    const Status s = apply_pathologies(a, specs);
+    PatientState patient = PatientState::of(a);
+    const Status s = apply_pathologies(a, patient, specs);
     ASSERT_FALSE(s) << specs.back();
     EXPECT_NE(s.error().find(why), std::string::npos) << s.error();
     EXPECT_NE(s.error().find("'" + specs.back() + "': repeats '" + specs.front() + "'"), std::string::npos)

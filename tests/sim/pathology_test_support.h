@@ -32,13 +32,22 @@ inline const Eigen::Vector3d kSupine(0, 1, 0), kProne(0, -1, 0), kLeftSideDown(1
 inline constexpr double kCollapsedLungBreathWeight = 0.05, kTensionShiftMm = 20.0, kConsolidatedResponse = 0.1,
                         kConsolidationRamp = 0.05, kEmphysemaFrcGain = 0.4;
 
-/// The sliding bake with `specs` applied (a failed spec fails the test that asked).
-inline BakedAsset with(const std::vector<std::string>& specs) {
-  BakedAsset a = sliding_asset();
-  const Status s = apply_pathologies(a, specs);
+/// An asset as lungar loads one, with the patient its pathologies make (sim/patient/patient_state.h). A test
+/// hands both to what it measures; a Sick is not converted back to a bare asset, whose patient would be healthy.
+struct Sick : BakedAsset {
+  PatientState patient;
+};
+
+/// `a` with `specs` applied (a failed spec fails the test that asked).
+inline Sick sick(const BakedAsset& a, const std::vector<std::string>& specs) {
+  Sick out{a, PatientState::of(a)};
+  const Status s = apply_pathologies(out, out.patient, specs);
   EXPECT_TRUE(s) << s.error();
-  return a;
+  return out;
 }
+
+/// The sliding bake with `specs` applied.
+inline Sick with(const std::vector<std::string>& specs) { return sick(sliding_asset(), specs); }
 
 /// The index of the lung called `name` (0, with a failure, when there is none).
 inline std::size_t index_of(const BakedAsset& a, const std::string& name) {
@@ -74,8 +83,8 @@ struct Breath {
   std::vector<std::array<double, 3>> thirds_ml;
 };
 
-inline Breath breathe(const BakedAsset& a, double ml) {
-  const std::vector<float> d = displacement_vectors(a, kSupine, ml);
+inline Breath breathe(const Sick& a, double ml) {
+  const std::vector<float> d = displacement_vectors(a, a.patient, kSupine, ml);
   std::vector<float> moved(a.positions.size());
   for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = a.positions[i] + d[i];
   Breath b;

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "pathology_test_support.h"
 #include "sim/force/force_sh.h"
 #include "sim/motion/motion_figures.h"
 #include "sim/motion/ventral_share.h"
@@ -15,8 +16,8 @@ namespace lungar::sim {
 namespace {
 
 /// The anterior half's first-order swept volume over the whole pair's, vertex by vertex from the displacement.
-double ventral_by_vertex(const BakedAsset& a, const Eigen::Vector3d& g) {
-  const std::vector<float> d = displacement_vectors(a, g, 500);
+double ventral_by_vertex(const BakedAsset& a, const PatientState& patient, const Eigen::Vector3d& g) {
+  const std::vector<float> d = displacement_vectors(a, patient, g, 500);
   double lo = 1e300, hi = -1e300;
   for (std::size_t i = 0; i < a.vertex_count(); ++i) {
     lo = std::min(lo, double{a.positions[3 * i + 1]});
@@ -32,22 +33,23 @@ double ventral_by_vertex(const BakedAsset& a, const Eigen::Vector3d& g) {
   return front / all;
 }
 
-double ventral_folded(const BakedAsset& a, const Eigen::Vector3d& g) {
+double ventral_folded(const BakedAsset& a, const PatientState& patient, const Eigen::Vector3d& g) {
   const std::uint32_t c = a.coefficients();
   std::vector<float> force(a.lungs.size() * c);
-  for (std::size_t l = 0; l < a.lungs.size(); ++l) force_sh_exact(a, a.lungs[l], g, force.data() + l * c);
-  return VentralShare(a).share(a, force, g);
+  for (std::size_t l = 0; l < a.lungs.size(); ++l)
+    force_sh_exact(a, a.lungs[l], patient.lungs[l], g, force.data() + l * c);
+  return VentralShare(a).share(a, patient, force, g);
 }
 
 TEST(VentralShare, FoldedFromTheForceItIsTheVertexSumAndProneRaisesIt) {
-  BakedAsset a = test::sliding_asset();
+  const test::Sick a = test::with({});
   const Eigen::Vector3d supine(0, 1, 0), prone(0, -1, 0), left_down(1, 0, 0);
   for (const Eigen::Vector3d& g : {supine, prone, left_down})
-    EXPECT_NEAR(ventral_folded(a, g), ventral_by_vertex(a, g), 1e-4) << g.transpose();
-  EXPECT_GT(ventral_folded(a, prone), ventral_folded(a, supine) + 0.03);
+    EXPECT_NEAR(ventral_folded(a, a.patient, g), ventral_by_vertex(a, a.patient, g), 1e-4) << g.transpose();
+  EXPECT_GT(ventral_folded(a, a.patient, prone), ventral_folded(a, a.patient, supine) + 0.03);
   // A pathology changes the rows and the split: the fold still matches the vertex sum.
-  ASSERT_TRUE(apply_pathologies(a, {"consolidation:right:lower", "pneumothorax:left:20"}));
-  EXPECT_NEAR(ventral_folded(a, supine), ventral_by_vertex(a, supine), 1e-4);
+  const test::Sick sick = test::with({"consolidation:right:lower", "pneumothorax:left:20"});
+  EXPECT_NEAR(ventral_folded(sick, sick.patient, supine), ventral_by_vertex(sick, sick.patient, supine), 1e-4);
 }
 
 }  // namespace

@@ -127,10 +127,13 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
   std::vector<float> force(a.lungs.size() * a.coefficients()), positions(a.positions.size());
   std::optional<sim::Eq1Deformer> eq1;
   if (a.has_transfer_rows()) eq1.emplace(a);
+  const sim::PatientState healthy = sim::PatientState::of(a);
   sim::BakedAsset ards;
+  sim::PatientState ards_patient;
   if (work == CpuWork::ForceShArds) {
     ards = a;
-    if (Status s = sim::apply_pathologies(ards, {"ards:0.6"}); !s) return {};
+    ards_patient = healthy;
+    if (Status s = sim::apply_pathologies(ards, ards_patient, {"ards:0.6"}); !s) return {};
   }
   return time_reps(timing, [&](long k) {
     const double t = static_cast<double>(k * kFrameStepNs) * 1e-9;
@@ -138,17 +141,17 @@ RepStats BenchScene::measure_cpu(CpuWork work, const Timing& timing) {
     const double dv = scripted_volume_ml(t);
     switch (work) {
       case CpuWork::ForceSh:
-        sim::force_sh(a, sim::ForceMode::Exact, q, force.data());
+        sim::force_sh(a, healthy, sim::ForceMode::Exact, q, force.data());
         break;
       case CpuWork::ForceShArds:
-        sim::force_sh(ards, sim::ForceMode::Exact, q, force.data());
+        sim::force_sh(ards, ards_patient, sim::ForceMode::Exact, q, force.data());
         break;
       case CpuWork::Eq7:
-        sim::force_sh(a, sim::ForceMode::Exact, q, force.data());
-        sim::deform_eq7(a, force, sim::gravity_in_lung_frame(q), dv, positions);
+        sim::force_sh(a, healthy, sim::ForceMode::Exact, q, force.data());
+        sim::deform_eq7(a, healthy, force, sim::gravity_in_lung_frame(q), dv, positions);
         break;
       case CpuWork::Eq1:
-        if (eq1) eq1->deform(sim::gravity_in_lung_frame(q), dv, positions);
+        if (eq1) eq1->deform(healthy, sim::gravity_in_lung_frame(q), dv, positions);
         break;
     }
   });

@@ -66,7 +66,8 @@ struct Room {
     EXPECT_TRUE(trainee) << trainee.error();
     learner = std::make_shared<ClassroomStation>(trainee.take());
     course = std::make_unique<platform::ClassroomCourse>(
-        nullptr, learner, platform::LoadedLungs{healthy(), healthy(), {}}, [this](const std::string& line) {
+        nullptr, learner, platform::LoadedLungs{healthy(), healthy(), sim::PatientState::of(*healthy()), {}},
+        [this](const std::string& line) {
           std::lock_guard lock(lines_mutex);
           lines.push_back(line);
         });
@@ -108,7 +109,8 @@ TEST(ClassroomCourse, ATraineeDrawsTheInstructorsPathologiesOnTheInstructorsTime
   EXPECT_EQ(stats_of(*room.course)["sync_lungs"], "own");
 
   sim::BakedAsset sick = *healthy();
-  ASSERT_TRUE(sim::apply_pathologies(sick, {"ards:0.6", "pneumothorax:right:30:tension"}));
+  sim::PatientState sick_patient = sim::PatientState::of(sick);
+  ASSERT_TRUE(sim::apply_pathologies(sick, sick_patient, {"ards:0.6", "pneumothorax:right:30:tension"}));
   const double collapsed_ml = sick.lungs[right].rest_volume_ml;
   ASSERT_LT(collapsed_ml, 0.8 * healthy()->lungs[right].rest_volume_ml);
   // The pneumothorax came 1 s into the instructor's breathing and was whole at 1.5 s: the trainee, joining 2 s

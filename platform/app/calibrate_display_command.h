@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "platform/app/spaam_session.h"
+#include "platform/registration/spaam_session.h"
 #include "platform/registration/display_calibration.h"
 
 namespace lungar::platform {

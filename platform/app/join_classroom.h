@@ -11,7 +11,7 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "platform/app/classroom_course.h"
+#include "platform/sync/classroom_course.h"
 #include "platform/app/settings.h"
 #include "platform/runtime/runtime.h"
 #include "platform/sync/classroom_station.h"

@@ -14,8 +14,8 @@
 #include "lungar/version.h"
 #include "platform/app/calibrate_command.h"
 #include "platform/app/calibrate_display_command.h"
-#include "platform/app/classroom_keys.h"
-#include "platform/app/doctor/doctor.h"
+#include "platform/sync/classroom_keys.h"
+#include "platform/doctor/doctor.h"
 #include "platform/app/run.h"
 #include "platform/app/settings_load.h"
 

@@ -83,7 +83,7 @@ Result<sim::BreathingScript> make_breathing_script(const config::Scenario& sc) {
         events.push_back({sim::Event::of(e.at_s, sim::EventKind::ApnoeaStart), &e});
         events.push_back({sim::Event::of(e.at_s + e.duration_s, sim::EventKind::ApnoeaEnd), &e});
         break;
-      case config::ScenarioEventKind::Pathology:  // the lungs', not the breathing's (platform/app/pathology_course.h)
+      case config::ScenarioEventKind::Pathology:  // the lungs', not the breathing's (platform/runtime/pathology_course.h)
         break;
     }
   }

@@ -14,7 +14,7 @@
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/open_output.h"
 #include "platform/app/settings_load.h"
-#include "platform/app/spaam_screen.h"
+#include "platform/registration/spaam_screen.h"
 
 namespace lungar::platform {
 

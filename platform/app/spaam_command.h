@@ -13,7 +13,7 @@
 #include "config/base/result.h"
 #include "drivers/pose/pose_sample.h"
 #include "platform/app/calibrate_display_command.h"
-#include "platform/app/spaam_session.h"
+#include "platform/registration/spaam_session.h"
 
 namespace lungar::platform {
 

@@ -15,7 +15,7 @@
 
 #include <Eigen/Geometry>
 
-#include "platform/app/bench/bench_assets.h"
+#include "platform/bench/bench_assets.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/force/gravity.h"
 #include "sim/deform/deform_eq7.h"

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "platform/app/classroom_keys.h"
+#include "platform/sync/classroom_keys.h"
 #include "tests/file_text.h"
 
 namespace lungar::platform {

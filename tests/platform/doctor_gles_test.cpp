@@ -12,8 +12,8 @@
 #include <fstream>
 #include <string>
 
-#include "platform/app/doctor/checks.h"
-#include "platform/app/doctor/doctor.h"
+#include "platform/doctor/checks.h"
+#include "platform/doctor/doctor.h"
 #include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <string>
 
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "tests/scratch_dir.h"
 #include "umockdev_tracker.h"
 

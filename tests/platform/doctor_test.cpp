@@ -13,7 +13,7 @@
 #include "config/config_paths.h"
 #include "drivers/igtl/tcp_socket.h"
 #include "platform/app/demo_asset.h"
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"
 #include "tests/scratch_dir.h"
 

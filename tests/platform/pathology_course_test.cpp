@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/scenario_load.h"
-#include "platform/app/pathology_course.h"
+#include "platform/runtime/pathology_course.h"
 #include "sim/bake/bake.h"
 #include "sim/force/dependent_collapse.h"
 #include "sim/pathology/pathology.h"

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "platform/app/spaam_screen.h"
+#include "platform/registration/spaam_screen.h"
 #include "render/frame_target.h"
 #include "tests/render/gl_fixture.h"
 

@@ -12,7 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "platform/app/spaam_command.h"
-#include "platform/app/spaam_session.h"
+#include "platform/registration/spaam_session.h"
 #include "platform/registration/display_calibration.h"
 
 namespace lungar::platform {

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
-#include "platform/app/classroom_course.h"
+#include "platform/sync/classroom_course.h"
 #include "platform/app/scenario_adapter.h"
 #include "sim/bake/bake.h"
 #include "sim/force/dependent_collapse.h"

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "platform/app/classroom_keys.h"
+#include "platform/sync/classroom_keys.h"
 #include "platform/sync/dds_security.h"
 #include "sync_test_support.h"
 

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/app/classroom_keys.h"
+#include "platform/sync/classroom_keys.h"
 #include "station_process.h"
 #include "stations_test.h"
 #include "sync_test_support.h"

@@ -1,6 +1,6 @@
 /// @file bench_assets.cpp
 /// @brief Bake-once cache of benchmark assets, with a JSON record of each bake's timings beside the asset.
-#include "platform/app/bench/bench_assets.h"
+#include "platform/bench/bench_assets.h"
 
 #include "config/base/atomic_file.h"
 #include "config/base/clock.h"
@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/app/bench/system_info.h"
+#include "platform/bench/system_info.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
 

@@ -1,6 +1,6 @@
 /// @file spaam_screen.cpp
 /// @brief The crosshair and the prompt by scissored clears and the status line (spaam_screen.h).
-#include "platform/app/spaam_screen.h"
+#include "platform/registration/spaam_screen.h"
 
 #include <algorithm>
 #include <cmath>

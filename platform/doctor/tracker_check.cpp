@@ -20,7 +20,7 @@
 #include "drivers/hid/hid_interface.h"
 #include "drivers/igtl/tcp_socket.h"
 #include "drivers/trk/trk_reader.h"
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 
 namespace lungar::platform::doctor {
 

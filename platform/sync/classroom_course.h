@@ -20,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "platform/app/pathology_course.h"
+#include "platform/runtime/pathology_course.h"
 #include "platform/runtime/lung_course.h"
 #include "platform/sync/classroom_station.h"
 #include "sim/asset/baked_asset.h"

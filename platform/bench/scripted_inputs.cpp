@@ -1,6 +1,6 @@
 /// @file scripted_inputs.cpp
 /// @brief The bench's script.
-#include "platform/app/bench/scripted_inputs.h"
+#include "platform/bench/scripted_inputs.h"
 
 #include <cmath>
 #include <numbers>

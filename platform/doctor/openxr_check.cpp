@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 
 namespace lungar::platform::doctor {
 

@@ -1,6 +1,6 @@
 /// @file bench_targets.cpp
 /// @brief Each target: its value, its limit, met or not, and what was measured.
-#include "platform/app/bench/bench_targets.h"
+#include "platform/bench/bench_targets.h"
 
 #include <cmath>
 #include <string>

@@ -1,6 +1,6 @@
 /// @file doctor_check.cpp
 /// @brief The doctor's line format and the environment its checks read.
-#include "platform/app/doctor/doctor_check.h"
+#include "platform/doctor/doctor_check.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,13 +1,13 @@
 /// @file bench_frame.cpp
 /// @brief One Runtime per configuration over a shared scene, driven by the scripted clock.
-#include "platform/app/bench/bench_frame.h"
+#include "platform/bench/bench_frame.h"
 
 #include <algorithm>
 #include <array>
 #include <limits>
 
-#include "platform/app/bench/scripted_inputs.h"
-#include "platform/app/bench/system_info.h"
+#include "platform/bench/scripted_inputs.h"
+#include "platform/bench/system_info.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/output/headless_output.h"
 #include "sim/deform/deform_eq1.h"

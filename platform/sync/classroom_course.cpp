@@ -1,6 +1,6 @@
 /// @file classroom_course.cpp
 /// @brief The instructor's course built off the frame, and the frame's choice between it and this station's own.
-#include "platform/app/classroom_course.h"
+#include "platform/sync/classroom_course.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 /// @file spaam_session.cpp
 /// @brief The crosshair's positions, confirm and undo (spaam_session.h).
-#include "platform/app/spaam_session.h"
+#include "platform/registration/spaam_session.h"
 
 #include <algorithm>
 #include <cmath>

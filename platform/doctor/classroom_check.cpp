@@ -1,7 +1,7 @@
 /// @file classroom_check.cpp
 /// @brief The classroom check: off, open (anyone on the network can join: a warning), or secure with a complete
 /// station folder.
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "platform/sync/dds_security.h"
 
 namespace lungar::platform::doctor {

@@ -1,6 +1,6 @@
 /// @file classroom_keys.cpp
 /// @brief The authority, the identities and the signed documents of classroom_keys.h, through `openssl`.
-#include "platform/app/classroom_keys.h"
+#include "platform/sync/classroom_keys.h"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -10,7 +10,7 @@
 
 #include "config/base/command_line.h"
 #include "lungar/version.h"
-#include "platform/app/bench/bench_run.h"
+#include "platform/bench/bench_run.h"
 
 int main(int argc, char** argv) {
   using lungar::platform::bench::BenchOptions;

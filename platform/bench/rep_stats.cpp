@@ -1,6 +1,6 @@
 /// @file rep_stats.cpp
 /// @brief Median and range of repetition times.
-#include "platform/app/bench/rep_stats.h"
+#include "platform/bench/rep_stats.h"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #include "config/base/result.h"
 #include "config/config_paths.h"
 #include "platform/app/settings.h"
-#include "platform/app/doctor/doctor_check.h"
+#include "platform/doctor/doctor_check.h"
 
 namespace lungar::platform::doctor {
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "platform/app/demo_asset.h"
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "sim/asset/asset_io.h"
 
 namespace lungar::platform::doctor {

@@ -7,7 +7,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "platform/app/bench/rep_stats.h"
+#include "platform/bench/rep_stats.h"
 
 namespace lungar::platform::bench {
 

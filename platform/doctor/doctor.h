@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/app/doctor/doctor_check.h"
+#include "platform/doctor/doctor_check.h"
 #include "platform/app/runtime_options.h"
 
 namespace lungar::platform::doctor {

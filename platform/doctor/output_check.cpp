@@ -5,7 +5,7 @@
 #include <string>
 #include <thread>
 
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "platform/egl/x11_outputs.h"
 
 #include <X11/Xlib.h>  // last: it defines Status, which lungar's headers use as a type name

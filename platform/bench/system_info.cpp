@@ -1,6 +1,6 @@
 /// @file system_info.cpp
 /// @brief Reads /proc/cpuinfo and /proc/loadavg (Linux); missing files leave the fields empty, never fail.
-#include "platform/app/bench/system_info.h"
+#include "platform/bench/system_info.h"
 
 #include "config/base/clock.h"
 

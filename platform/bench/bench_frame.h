@@ -11,7 +11,7 @@
 
 #include "config/base/result.h"
 #include "platform/app/settings.h"
-#include "platform/app/bench/rep_timer.h"
+#include "platform/bench/rep_timer.h"
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/runtime.h"

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "platform/egl/egl_context.h"
 
 namespace lungar::platform::doctor {

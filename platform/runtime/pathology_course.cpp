@@ -1,6 +1,6 @@
 /// @file pathology_course.cpp
 /// @brief The course's states, built once at load, and the blend in the frame.
-#include "platform/app/pathology_course.h"
+#include "platform/runtime/pathology_course.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 /// @file scenario_patient.cpp
 /// @brief The scenario's orientation track replaces the patient's measured orientation.
-#include "platform/app/scenario_patient.h"
+#include "platform/runtime/scenario_patient.h"
 
 #include "config/base/clock.h"
 

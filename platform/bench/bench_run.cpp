@@ -2,7 +2,7 @@
 /// @brief The run plan (which asset, which configurations) and the JSON it writes. What is timed is the shipped
 /// Runtime's frame (bench_frame.h), assets come from bench_assets; this file only decides what to measure and
 /// records it with the conditions.
-#include "platform/app/bench/bench_run.h"
+#include "platform/bench/bench_run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,11 +16,11 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/atomic_file.h"
-#include "platform/app/bench/bench_assets.h"
-#include "platform/app/bench/bench_frame.h"
-#include "platform/app/bench/bench_targets.h"
-#include "platform/app/bench/scripted_inputs.h"
-#include "platform/app/bench/system_info.h"
+#include "platform/bench/bench_assets.h"
+#include "platform/bench/bench_frame.h"
+#include "platform/bench/bench_targets.h"
+#include "platform/bench/scripted_inputs.h"
+#include "platform/bench/system_info.h"
 #include "platform/app/log.h"
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/runtime.h"

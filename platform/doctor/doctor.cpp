@@ -1,10 +1,10 @@
 /// @file doctor.cpp
 /// @brief `lungar doctor`: the settings the runtime would use, every check against them, one line each.
-#include "platform/app/doctor/doctor.h"
+#include "platform/doctor/doctor.h"
 
 #include <cstdio>
 
-#include "platform/app/doctor/checks.h"
+#include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"
 
 namespace lungar::platform::doctor {

@@ -17,16 +17,15 @@
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
 #include "platform/app/open_output.h"
-#include "platform/runtime/pathology_course.h"
 #include "platform/app/plus_recording.h"
 #include "platform/app/run_limit.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
-#include "platform/runtime/scenario_patient.h"
 #include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
-#include "platform/physiology/physiology_feed.h"
+#include "platform/runtime/pathology_course.h"
 #include "platform/runtime/runtime.h"
+#include "platform/runtime/scenario_patient.h"
 #include "platform/sync/classroom_station.h"
 #include "sim/asset/asset_io.h"
 #include "sim/pathology/pathology.h"
@@ -87,17 +86,12 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
                            {.half_float = s.render.half_float});
 }
 
-/// The breath source's options: the model, a trace's settings, the DDS sources' opener (their readers sit with the
-/// DDS layer in platform/physiology/).
-breath::BreathSourceOptions breath_options(const Settings& s, std::shared_ptr<const sim::BreathingScript> script,
-                                           std::int64_t t0) {
+/// The breath source's options: the model, a trace's settings, the Cyclone configuration the DDS sources join with.
+breath::BreathSourceOptions breath_options(const Settings& s, std::shared_ptr<const sim::BreathingScript> script) {
   breath::BreathSourceOptions options;
   options.script = std::move(script);
   options.trace.skip_flagged = s.breathing.rpm_flagged == "skip";
-  options.open_dds = [configured = s.sync.cyclonedds_xml, t0](const std::string& source) {
-    const std::string xml = configured.empty() ? sync::default_cyclonedds_xml() : configured;
-    return physiology::open_physiology_breath(source, xml, t0, [](const std::string& line) { log_line(line); });
-  };
+  options.cyclonedds_xml = s.sync.cyclonedds_xml.empty() ? sync::default_cyclonedds_xml() : s.sync.cyclonedds_xml;
   options.log = [](const std::string& line) { log_line(line); };
   return options;
 }
@@ -142,7 +136,7 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
                 "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
                 "--breath, and run the trainee without it (breathing.source = \"model\")");
   }
-  auto breathing = breath::make_breath_source(*chosen, breath_options(s, shared_script, t0), t0);
+  auto breathing = breath::make_breath_source(*chosen, breath_options(s, shared_script), t0);
   if (!breathing) return breathing.with_context(where);
   parts.breathing = breathing.take();
   auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs,

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "config/base/log_line.h"
-#include "platform/sync/dds_security.h"
+#include "drivers/dds/dds_security.h"
 #include "platform/sync/wire.h"
 
 namespace lungar::platform::sync {
@@ -51,9 +51,9 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
   if (name.size() > 63) return fail("sync.station: expected at most 63 characters, got \"" + name + "\"");
   dds::Qos participant_qos;
   if (!options.security_dir.empty()) {
-    auto files = find_security_files(options.security_dir);
+    auto files = dds::find_security_files(options.security_dir);
     if (!files) return Error{files.error()};
-    if (Status s = add_security_properties(*files, options.domain, participant_qos); !s) return Error{s.error()};
+    if (Status s = dds::add_security_properties(*files, options.domain, participant_qos); !s) return Error{s.error()};
   }
   auto domain = dds::Domain::create(options.domain, options.cyclonedds_xml,
                                     options.security_dir.empty() ? nullptr : &participant_qos);
@@ -82,7 +82,7 @@ Result<std::unique_ptr<ClassroomLink>> ClassroomLink::open(const SyncOptions& op
   link->station_reader_.emplace(reader.take());
   link->waitset_.emplace(waitset.take());
   if (!options.security_dir.empty()) {
-    auto refused = RefusedPeers::create(p, options.refuse_after_ns);
+    auto refused = dds::RefusedPeers::create(p, options.refuse_after_ns);
     if (!refused) return fail("sync: " + refused.error());
     link->refused_ = refused.take();
     link->log("sync: classroom \"" + options.classroom + "\" is secure: DDS Security with " + options.security_dir +

@@ -14,9 +14,10 @@
 #include <utility>
 
 #include "config/base/result.h"
+#include "drivers/dds/dds.h"
+#include "drivers/dds/refused_peers.h"
+#include "drivers/dds/wait_thread.h"
 #include "platform/sync/classroom_topics.h"
-#include "platform/sync/dds.h"
-#include "platform/sync/refused_peers.h"
 #include "platform/sync/station_clock.h"
 #include "platform/sync/sync_types.h"
 
@@ -113,33 +114,7 @@ class ClassroomLink {
   std::optional<dds::Writer<lungar_sync_Station>> station_writer_;
   std::optional<dds::Reader<lungar_sync_Station>> station_reader_;
   std::optional<dds::WaitSet> waitset_;
-  std::unique_ptr<RefusedPeers> refused_;  ///< only in a secure classroom
-};
-
-/// A station's sync thread (neither copied nor moved: its atomic flag and thread are not). stop() sets the flag
-/// its loop checks, wakes the waitset the loop waits on and joins; the owner calls it before the members the loop
-/// uses go (and it is the owner's last member, so that its own destructor, which stops it too, runs first).
-class SyncThread {
- public:
-  ~SyncThread() { stop(); }
-
-  /// Runs `loop` on a new thread; the loop waits on `waitset` and returns once stopping() is true.
-  template <class F>
-  void start(dds::WaitSet& waitset, F&& loop) {
-    waitset_ = &waitset;
-    thread_ = std::thread(std::forward<F>(loop));
-  }
-  bool stopping() const { return stop_.load(); }
-  void stop() {
-    stop_.store(true);
-    if (waitset_) waitset_->trigger();
-    if (thread_.joinable()) thread_.join();
-  }
-
- private:
-  std::atomic<bool> stop_{false};
-  dds::WaitSet* waitset_ = nullptr;
-  std::thread thread_;
+  std::unique_ptr<dds::RefusedPeers> refused_;  ///< only in a secure classroom
 };
 
 /// A random 64-bit session id for this run of a station.

@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "platform/sync/dds.h"
+#include "drivers/dds/dds.h"
 #include "lungar/sync/classroom.h"
 
 namespace lungar::platform::sync {

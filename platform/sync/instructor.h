@@ -109,7 +109,7 @@ class Instructor {
   mutable std::mutex fatal_mutex_;  ///< guards fatal_ and last_orientation_, which report() reads
   std::string fatal_;
   std::array<double, 4> last_orientation_{1, 0, 0, 0};
-  SyncThread thread_;  ///< last: stopped before the members its loop uses go
+  dds::WaitThread thread_;  ///< last: stopped before the members its loop uses go
 };
 
 }  // namespace lungar::platform::sync

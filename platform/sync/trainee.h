@@ -136,7 +136,7 @@ class Trainee {
   LogHistogram pose_age_ms_;
   std::vector<SyncTransition> transitions_;
 
-  SyncThread thread_;  ///< last: stopped before the members its loop uses go
+  dds::WaitThread thread_;  ///< last: stopped before the members its loop uses go
 };
 
 }  // namespace lungar::platform::sync

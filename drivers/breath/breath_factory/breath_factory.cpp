@@ -2,6 +2,8 @@
 /// @brief Choosing a breath source by its name and building its clock (breath_factory.h).
 #include "drivers/breath/breath_factory/breath_factory.h"
 
+#include "drivers/breath/physiology/physiology_feed.h"
+
 #include "drivers/breath/model/script_breathing.h"
 #include "drivers/breath/source/followed_breathing.h"
 
@@ -34,14 +36,15 @@ Result<ChosenBreath> choose_breath_source(const std::string& source, std::int64_
 namespace {
 
 /// The surrogate a followed source gives its samples through.
-Result<std::shared_ptr<SurrogateFeed>> open_feed(const ChosenBreath& chosen, const BreathSourceOptions& options) {
+Result<std::shared_ptr<SurrogateFeed>> open_feed(const ChosenBreath& chosen, const BreathSourceOptions& options,
+                                                 std::int64_t t0_ns) {
   switch (chosen.kind) {
     case BreathKind::Marker:
       options.log(marker_following(chosen.source));
       return std::shared_ptr<SurrogateFeed>(chosen.marker);
     case BreathKind::Dds:
-      if (!options.open_dds) return fail("'" + chosen.source + "': no reader for breath sources over DDS here");
-      return options.open_dds(chosen.source);
+      if (options.open_dds) return options.open_dds(chosen.source);
+      return physiology::open_physiology_breath(chosen.source, options.cyclonedds_xml, t0_ns, options.log);
     case BreathKind::Trace: {
       auto trace = open_trace_feed(chosen.source, options.trace, options.log);
       if (!trace) return Error{trace.error()};
@@ -60,7 +63,7 @@ Result<std::unique_ptr<BreathingClock>> make_breath_source(const ChosenBreath& c
   if (!chosen.followed()) {
     return std::unique_ptr<BreathingClock>(std::make_unique<ScriptBreathing>(options.script, t0_ns));
   }
-  auto feed = open_feed(chosen, options);
+  auto feed = open_feed(chosen, options, t0_ns);
   if (!feed) return Error{feed.error()};
   return std::unique_ptr<BreathingClock>(std::make_unique<FollowedBreathing>(feed.take(), options.script, t0_ns));
 }

@@ -29,8 +29,8 @@ enum class BreathKind { Model, Trace, Marker, Dds };
 BreathKind breath_kind(const std::string& source);
 
 /// Opens a source over DDS (`amm[@DOMAIN]`, `openice[:volume|flow|pressure][@DOMAIN]`) and says in the log what it
-/// follows, or names what is wrong with the spec. Their readers sit with the DDS layer the classroom shares
-/// (platform/physiology/), above this library, so the wiring hands this in.
+/// follows, or names what is wrong with the spec: by default their readers' own (physiology/physiology_feed.h);
+/// a test hands in a stand-in.
 using OpenDdsFeed = std::function<Result<std::shared_ptr<SurrogateFeed>>(const std::string& source)>;
 
 /// A breath source chosen and checked before the tracker starts: a live marker's feed must exist for the tracker
@@ -52,7 +52,9 @@ Result<ChosenBreath> choose_breath_source(const std::string& source, std::int64_
 struct BreathSourceOptions {
   std::shared_ptr<const sim::BreathingScript> script;  ///< the model: the whole breath, or a followed one's fallback
   TraceSettings trace;
-  OpenDdsFeed open_dds;  ///< for BreathKind::Dds; without it such a source is refused
+  /// The Cyclone DDS configuration file the sources over DDS join their domain with (the classroom's by default).
+  std::string cyclonedds_xml;
+  OpenDdsFeed open_dds;  ///< for BreathKind::Dds: a stand-in for the readers (tests); empty, the readers
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 

@@ -19,11 +19,11 @@
 
 #include "config/base/clock.h"
 #include "config/base/command_line.h"
+#include "drivers/breath/physiology/physiology_feed.h"
 #include "drivers/breath/trace/clearest_trace.h"
 #include "lungar/version.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/settings_load.h"
-#include "platform/physiology/physiology_feed.h"
 #include "platform/sync/classroom_station.h"
 #include "sim/breathing/breath_follower.h"
 #include "sim/breathing/breath_trace.h"
@@ -143,10 +143,10 @@ int print_followed(const sim::BreathingScript& script, const std::string& trace_
 
 /// --breath amm|openice: the follower driven live by a mannequin or a ventilator over DDS for `seconds`, a row
 /// every dt as it happens (time zero: the start), then what came and what was dropped on stderr.
-int print_followed_live(const sim::BreathingScript& script, const platform::physiology::PhysiologySpec& spec,
+int print_followed_live(const sim::BreathingScript& script, const breath::physiology::PhysiologySpec& spec,
                         const std::string& cyclonedds_xml, double tidal_ml, double seconds, double dt) {
   const std::int64_t t0 = monotonic_ns();
-  auto feed = platform::physiology::PhysiologyFeed::open(spec, cyclonedds_xml, t0);
+  auto feed = breath::physiology::PhysiologyFeed::open(spec, cyclonedds_xml, t0);
   if (!feed) return fail_with(feed.error());
   sim::FollowerParams fp = follower_params(script, tidal_ml);
   fp.in_ml = (*feed)->in_ml();
@@ -177,7 +177,7 @@ int follow(const sim::BreathingScript& script, const std::vector<std::string>& b
   const double tidal_ml = settings.breathing.tidal_volume_ml;
   if (breaths.size() > 1) {
     for (const std::string& b : breaths) {
-      auto live = platform::physiology::parse_physiology_spec(b);
+      auto live = breath::physiology::parse_physiology_spec(b);
       if (!live) return fail_with("--breath: " + live.error());
       if (*live) return fail_with("--breath: several sources are compared only as recordings, got '" + b + "'");
     }
@@ -187,7 +187,7 @@ int follow(const sim::BreathingScript& script, const std::vector<std::string>& b
     std::fprintf(stderr, "lungar-breathe: %s\n", said.c_str());
     return print_followed(script, *best, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
   }
-  auto live = platform::physiology::parse_physiology_spec(breath);
+  auto live = breath::physiology::parse_physiology_spec(breath);
   if (!live) return fail_with("--breath: " + live.error());
   if (!*live) return print_followed(script, breath, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
   const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()

@@ -6,25 +6,25 @@
 #include <cmath>
 #include <vector>
 
-#include "platform/physiology/physiology_sample.h"
-#include "platform/physiology/physiology_spec.h"
+#include "drivers/breath/physiology/physiology_sample.h"
+#include "drivers/breath/physiology/physiology_spec.h"
 
 namespace lungar::platform {
 namespace {
 
-using physiology::Channel;
-using physiology::Drop;
-using physiology::parse_physiology_spec;
-using physiology::PhysiologySpec;
-using physiology::Quantity;
-using physiology::Sample;
+using breath::physiology::Channel;
+using breath::physiology::Drop;
+using breath::physiology::parse_physiology_spec;
+using breath::physiology::PhysiologySpec;
+using breath::physiology::Quantity;
+using breath::physiology::Sample;
 
 struct Seen {
   std::vector<Sample> kept;
   std::vector<Drop> dropped;
 };
 
-std::optional<Sample> amm(physiology::AmmChecks& c, Seen& seen, const char* name, const char* unit, long t_ms,
+std::optional<Sample> amm(breath::physiology::AmmChecks& c, Seen& seen, const char* name, const char* unit, long t_ms,
                           double v) {
   auto s = c.check(name, unit, t_ms, v, [&](Drop d) { seen.dropped.push_back(d); });
   if (s) seen.kept.push_back(*s);
@@ -32,7 +32,7 @@ std::optional<Sample> amm(physiology::AmmChecks& c, Seen& seen, const char* name
 }
 
 TEST(AmmChecks, TakesTheLungVolumesInMillilitresAndIgnoresOtherNodes) {
-  physiology::AmmChecks c;
+  breath::physiology::AmmChecks c;
   Seen seen;
   auto total = amm(c, seen, "Respiratory_LungTotal_Volume", "L", 1500, 2.4);
   ASSERT_TRUE(total);
@@ -48,7 +48,7 @@ TEST(AmmChecks, TakesTheLungVolumesInMillilitresAndIgnoresOtherNodes) {
 }
 
 TEST(AmmChecks, DropsEachBadSampleUnderItsReason) {
-  physiology::AmmChecks c;
+  breath::physiology::AmmChecks c;
   Seen seen;
   const char* total = "Respiratory_LungTotal_Volume";
   ASSERT_TRUE(amm(c, seen, total, "mL", 1000, 2400.0));
@@ -65,7 +65,7 @@ TEST(AmmChecks, DropsEachBadSampleUnderItsReason) {
 }
 
 TEST(OpenIceChecks, SpacesAnArraysSamplesByItsFrequencyEndingAtItsTime) {
-  physiology::OpenIceChecks c(Quantity::flow_ml_per_s);
+  breath::physiology::OpenIceChecks c(Quantity::flow_ml_per_s);
   Seen seen;
   const std::vector<float> v = {60.0f, 120.0f, -60.0f};  // L/min; expiration negative
   c.check({"MDC_FLOW_AWAY", "MDC_DIM_L_PER_MIN", 50, v, 10.0}, [&](const Sample& s) { seen.kept.push_back(s); },
@@ -83,7 +83,7 @@ TEST(OpenIceChecks, SpacesAnArraysSamplesByItsFrequencyEndingAtItsTime) {
 }
 
 TEST(OpenIceChecks, DropsBadValuesOneByOneAndBadArraysWhole) {
-  physiology::OpenIceChecks c(Quantity::volume_ml);
+  breath::physiology::OpenIceChecks c(Quantity::volume_ml);
   Seen seen;
   const auto keep = [&](const Sample& s) { seen.kept.push_back(s); };
   const auto drop = [&](Drop d) { seen.dropped.push_back(d); };

@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "drivers/dds/dds.h"
 #include "platform/sync/classroom_link.h"
 #include "platform/sync/classroom_topics.h"
-#include "platform/sync/dds.h"
 #include "platform/sync/wire.h"
 #include "station_process.h"
 #include "stations_test.h"

@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "drivers/dds/dds_security.h"
 #include "platform/sync/classroom_keys.h"
-#include "platform/sync/dds_security.h"
 #include "sync_test_support.h"
 
 using namespace lungar;
@@ -36,10 +36,10 @@ class DdsSecurity : public ::testing::Test {
 
   /// Joins the test domain as `folder`'s station: the error line, or "" when Cyclone let it in.
   std::string join(const fs::path& folder) const {
-    auto files = sync::find_security_files(folder.string());
+    auto files = dds::find_security_files(folder.string());
     if (!files) return files.error();
     dds::Qos qos;
-    if (Status s = sync::add_security_properties(*files, lungar::testing::test_domain(), qos); !s) return s.error();
+    if (Status s = dds::add_security_properties(*files, lungar::testing::test_domain(), qos); !s) return s.error();
     auto d = dds::Domain::create(lungar::testing::test_domain(), lungar::testing::kLoopbackXml, &qos);
     return d ? "" : d.error();
   }
@@ -61,7 +61,7 @@ class DdsSecurity : public ::testing::Test {
 
 TEST_F(DdsSecurity, ACompleteFolderJoins) {
   EXPECT_EQ(join(station), "");
-  auto files = sync::find_security_files(station.string());
+  auto files = dds::find_security_files(station.string());
   ASSERT_TRUE(files);
   EXPECT_EQ(files->identity_key, (station / "identity_key.pem").string());
   EXPECT_EQ(fs::path(files->dir).filename(), "t1");
@@ -84,13 +84,13 @@ TEST_F(DdsSecurity, AKeyOthersCanReadIsRefusedWithTheCommandThatMendsIt) {
 }
 
 TEST_F(DdsSecurity, ADomainNoGovernanceCanNameIsRefused) {
-  auto files = sync::find_security_files(station.string());
+  auto files = dds::find_security_files(station.string());
   ASSERT_TRUE(files);
   dds::Qos qos;
-  Status s = sync::add_security_properties(*files, 231, qos);
+  Status s = dds::add_security_properties(*files, 231, qos);
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().find("a secure classroom needs a DDS domain id in [0, 230]"), std::string::npos) << s.error();
-  EXPECT_TRUE(sync::add_security_properties(*files, 230, qos));
+  EXPECT_TRUE(dds::add_security_properties(*files, 230, qos));
 }
 
 TEST_F(DdsSecurity, ExpiredPermissionsAreRefusedByCyclone) {
@@ -124,7 +124,7 @@ TEST_F(DdsSecurity, ARevokedIdentityIsRefusedWhereTheRevocationListIs) {
   fs::copy_file(dir / "keys" / "ca" / "crl.pem", dir / "keys" / "instr" / "crl.pem");
   EXPECT_EQ(join(dir / "keys" / "instr"), "") << "instr is not on the list";
   fs::copy_file(dir / "keys" / "ca" / "crl.pem", station / "crl.pem");
-  auto files = sync::find_security_files(station.string());
+  auto files = dds::find_security_files(station.string());
   ASSERT_TRUE(files);
   EXPECT_EQ(files->crl, (station / "crl.pem").string());
   const std::string e = join(station);

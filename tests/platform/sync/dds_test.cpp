@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "config/base/clock.h"
+#include "drivers/dds/dds.h"
 #include "platform/sync/classroom_topics.h"
-#include "platform/sync/dds.h"
 #include "sync_test_support.h"
 
 using namespace lungar;

@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "config/base/result.h"
-#include "platform/sync/dds.h"
+#include "drivers/dds/dds.h"
 
-namespace lungar::platform::sync {
+namespace lungar::dds {
 
 class RefusedPeers {
  public:
@@ -61,4 +61,4 @@ class RefusedPeers {
 /// "1a2b3c4d:..." : a participant's GUID as Cyclone's log writes it, so the two can be matched by eye.
 std::string guid_text(const dds_guid_t& g);
 
-}  // namespace lungar::platform::sync
+}  // namespace lungar::dds

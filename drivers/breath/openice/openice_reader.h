@@ -11,13 +11,13 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "platform/physiology/physiology_inbox.h"
-#include "platform/sync/classroom_link.h"
-#include "platform/sync/dds.h"
+#include "drivers/breath/physiology/physiology_inbox.h"
+#include "drivers/dds/dds.h"
+#include "drivers/dds/wait_thread.h"
 
 struct ice_SampleArray;
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 /// OpenICE's topic of sampled waveforms.
 inline constexpr const char* kOpenIceTopic = "SampleArray";
@@ -43,7 +43,7 @@ class OpenIceReader {
   std::optional<dds::WaitSet> waitset_;
   OpenIceChecks checks_;  ///< the reader's thread only
   PhysiologyInbox& inbox_;
-  sync::SyncThread thread_;  ///< stopped first
+  dds::WaitThread thread_;  ///< stopped first
 };
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -19,7 +19,7 @@
 
 #include "config/base/enum_names.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 /// What a sample measures: the whole breath, or one lung.
 enum class Channel : std::uint8_t { breath, left_lung, right_lung };
@@ -95,4 +95,4 @@ class OpenIceChecks {
   double last_end_s_ = -std::numeric_limits<double>::infinity();
 };
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -1,11 +1,11 @@
 /// @file openice_reader.cpp
 /// @brief OpenICE's sample arrays on Cyclone DDS (openice_reader.h).
-#include "platform/physiology/openice_reader.h"
+#include "drivers/breath/openice/openice_reader.h"
 
 #include "config/base/clock.h"
 #include "lungar/physiology/openice.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 namespace {
 /// How long the reader's thread waits for data before it looks at its stop flag again.
@@ -55,4 +55,4 @@ void OpenIceReader::take() {
   }
 }
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

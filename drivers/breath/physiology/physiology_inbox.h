@@ -13,9 +13,9 @@
 
 #include "config/base/log_line.h"
 #include "config/base/spsc_ring.h"
-#include "platform/physiology/physiology_sample.h"
+#include "drivers/breath/physiology/physiology_sample.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 class PhysiologyInbox {
  public:
@@ -32,7 +32,7 @@ class PhysiologyInbox {
   void drop(Drop why) {
     if (drops_[static_cast<std::size_t>(why)].fetch_add(1, std::memory_order_relaxed) == 0) {
       ::lungar::log_line("lungar", "breath: " + source_ + ": dropped a sample (" + kDropNames.name(why) +
-                             "); each such is counted in the stats JSON's breath_dropped");
+                                       "); each such is counted in the stats JSON's breath_dropped");
     }
   }
   /// The frame thread: `on(item)` for each sample pushed since the last call, oldest first.
@@ -41,7 +41,9 @@ class PhysiologyInbox {
     ring_.drain(on);
   }
   /// Any thread.
-  std::uint64_t dropped(Drop why) const { return drops_[static_cast<std::size_t>(why)].load(std::memory_order_relaxed); }
+  std::uint64_t dropped(Drop why) const {
+    return drops_[static_cast<std::size_t>(why)].load(std::memory_order_relaxed);
+  }
   /// Samples lost because the frame thread did not take them in time (a full ring), not because they were bad.
   std::uint64_t overflowed() const { return ring_.dropped(); }
 
@@ -51,4 +53,4 @@ class PhysiologyInbox {
   std::array<std::atomic<std::uint64_t>, kDropReasons> drops_{};
 };
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -9,18 +9,18 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "platform/physiology/physiology_sample.h"
+#include "drivers/breath/physiology/physiology_sample.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 struct PhysiologySpec {
   enum class Source { Amm, OpenIce };
   Source source = Source::Amm;
   Quantity quantity = Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
-  std::uint32_t domain = 0;                                          ///< the DDS domain id, [0, 232]
+  std::uint32_t domain = 0;                 ///< the DDS domain id, [0, 232]
 };
 
 /// The spec `breath` names, nullopt when it names no DDS source (a file, a marker), or what is wrong with it.
 Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& breath);
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -1,13 +1,13 @@
 /// @file refused_peers.cpp
 /// @brief Discovery's participants against the authenticated ones: who was refused.
-#include "platform/sync/refused_peers.h"
+#include "drivers/dds/refused_peers.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
 
-namespace lungar::platform::sync {
+namespace lungar::dds {
 
 namespace {
 
@@ -90,4 +90,4 @@ void RefusedPeers::poll(dds_entity_t station_reader, std::int64_t now_ns,
   count_.store(refused, std::memory_order_relaxed);
 }
 
-}  // namespace lungar::platform::sync
+}  // namespace lungar::dds

@@ -22,12 +22,12 @@
 #include <string>
 
 #include "config/base/result.h"
+#include "drivers/breath/amm/amm_reader.h"
+#include "drivers/breath/openice/openice_reader.h"
+#include "drivers/breath/physiology/physiology_spec.h"
 #include "drivers/breath/source/surrogate_feed.h"
-#include "platform/physiology/amm_reader.h"
-#include "platform/physiology/openice_reader.h"
-#include "platform/physiology/physiology_spec.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 class PhysiologyFeed final : public breath::SurrogateFeed {
  public:
@@ -55,9 +55,9 @@ class PhysiologyFeed final : public breath::SurrogateFeed {
   std::unique_ptr<AmmReader> amm_;
   std::unique_ptr<OpenIceReader> openice_;
   // The frame thread.
-  std::optional<double> offset_s_;  ///< run time minus source time: the smallest seen
-  std::array<double, kChannels> last_t_{};  ///< each channel's last fed time, so it never goes back
-  bool total_seen_ = false;                           ///< the source publishes the whole breath itself
+  std::optional<double> offset_s_;                           ///< run time minus source time: the smallest seen
+  std::array<double, kChannels> last_t_{};                   ///< each channel's last fed time, so it never goes back
+  bool total_seen_ = false;                                  ///< the source publishes the whole breath itself
   std::array<double, 2> lung_ml_{}, lung_source_t_{-1, -1};  ///< without a total: the two lungs summed
   double flow_volume_ml_ = 0, flow_t_ = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t fed_ = 0;
@@ -65,9 +65,8 @@ class PhysiologyFeed final : public breath::SurrogateFeed {
 
 /// `source` (amm..., openice...) opened for make_breath_source() (BreathSourceOptions::open_dds), the log told what
 /// it follows; or what is wrong with the spec or the reader.
-Result<std::shared_ptr<breath::SurrogateFeed>> open_physiology_breath(const std::string& source,
-                                                                      const std::string& cyclonedds_xml,
-                                                                      std::int64_t t0_ns,
-                                                                      const std::function<void(const std::string&)>& log);
+Result<std::shared_ptr<breath::SurrogateFeed>> open_physiology_breath(
+    const std::string& source, const std::string& cyclonedds_xml, std::int64_t t0_ns,
+    const std::function<void(const std::string&)>& log);
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

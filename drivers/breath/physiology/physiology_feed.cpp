@@ -1,6 +1,6 @@
 /// @file physiology_feed.cpp
 /// @brief A mannequin's or a ventilator's breath over DDS to the follower (physiology_feed.h).
-#include "platform/physiology/physiology_feed.h"
+#include "drivers/breath/physiology/physiology_feed.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,7 @@
 
 #include "config/base/clock.h"
 
-namespace lungar::platform::physiology {
-
+namespace lungar::breath::physiology {
 
 PhysiologyFeed::PhysiologyFeed(const PhysiologySpec& spec, std::int64_t t0_ns)
     : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::Amm ? "amm" : "openice") {}
@@ -98,4 +97,4 @@ Result<std::shared_ptr<breath::SurrogateFeed>> open_physiology_breath(
   return std::shared_ptr<breath::SurrogateFeed>(dds.take());
 }
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -12,10 +12,10 @@
 #include <cstring>
 #include <vector>
 
+#include "drivers/breath/physiology/physiology_sample.h"
 #include "lungar/physiology/openice.h"
-#include "platform/physiology/physiology_sample.h"
 
-namespace ph = lungar::platform::physiology;
+namespace ph = lungar::breath::physiology;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
@@ -39,13 +39,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ph::OpenIceChecks checks(followed);
   double last_t = -INFINITY;
   const double end = static_cast<double>(a.device_time.sec) + 1e-9 * static_cast<double>(a.device_time.nanosec);
-  checks.check({a.metric_id, a.unit_id, a.frequency, {a.values._buffer, a.values._length}, end},
-               [&](const ph::Sample& s) {
-                 if (!std::isfinite(s.value) || !std::isfinite(s.t_s) || s.t_s < last_t) std::abort();
-                 if (followed == ph::Quantity::volume_ml && s.value < 0) std::abort();
-                 last_t = s.t_s;
-               },
-               [](ph::Drop) {});
+  checks.check(
+      {a.metric_id, a.unit_id, a.frequency, {a.values._buffer, a.values._length}, end},
+      [&](const ph::Sample& s) {
+        if (!std::isfinite(s.value) || !std::isfinite(s.t_s) || s.t_s < last_t) std::abort();
+        if (followed == ph::Quantity::volume_ml && s.value < 0) std::abort();
+        last_t = s.t_s;
+      },
+      [](ph::Drop) {});
   dds_stream_free_sample(&a, ice_SampleArray_desc.m_ops);
   dds_istream_fini(&is);
   return 0;

@@ -1,11 +1,10 @@
 /// @file physiology_spec.cpp
 /// @brief Reading a DDS breath source's spec (physiology_spec.h).
-#include "platform/physiology/physiology_spec.h"
+#include "drivers/breath/physiology/physiology_spec.h"
 
 #include <cstdlib>
 
-namespace lungar::platform::physiology {
-
+namespace lungar::breath::physiology {
 
 namespace {
 
@@ -20,9 +19,12 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   const std::size_t colon = head.find(':');
   const std::string source = head.substr(0, colon);
   PhysiologySpec spec;
-  if (source == "amm") spec.source = PhysiologySpec::Source::Amm;
-  else if (source == "openice") spec.source = PhysiologySpec::Source::OpenIce;
-  else return std::optional<PhysiologySpec>{};
+  if (source == "amm")
+    spec.source = PhysiologySpec::Source::Amm;
+  else if (source == "openice")
+    spec.source = PhysiologySpec::Source::OpenIce;
+  else
+    return std::optional<PhysiologySpec>{};
   if (colon != std::string::npos) {
     const std::optional<Quantity> q = kQuantityNames.parse(head.substr(colon + 1));
     if (spec.source == PhysiologySpec::Source::Amm || !q) return fail("'" + breath + "': " + kSpecHelp);
@@ -38,4 +40,4 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   return std::optional<PhysiologySpec>{spec};
 }
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

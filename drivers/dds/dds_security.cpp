@@ -1,6 +1,6 @@
 /// @file dds_security.cpp
 /// @brief A station folder -> Cyclone's "dds.sec.*" participant properties.
-#include "platform/sync/dds_security.h"
+#include "drivers/dds/dds_security.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <array>
 #include <filesystem>
 
-namespace lungar::platform::sync {
+namespace lungar::dds {
 
 namespace fs = std::filesystem;
 
@@ -84,4 +84,4 @@ Status add_security_properties(const SecurityFiles& f, std::uint32_t domain, dds
   return ok();
 }
 
-}  // namespace lungar::platform::sync
+}  // namespace lungar::dds

@@ -13,9 +13,9 @@
 #include <memory>
 
 #include "config/base/result.h"
-#include "platform/physiology/physiology_inbox.h"
+#include "drivers/breath/physiology/physiology_inbox.h"
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 /// AMM's topic, reliable, transient-local (a late joiner gets the last samples), exclusive ownership (one
 /// physiology engine drives a mannequin).
@@ -31,4 +31,4 @@ class AmmReader {
   virtual int matched() const = 0;
 };
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -24,7 +24,7 @@
 
 #include "config/base/result.h"
 
-namespace lungar::platform::dds {
+namespace lungar::dds {
 
 /// "dds_create_writer: Precondition not met" style text for a Cyclone return code.
 std::string describe(const char* call, dds_return_t rc);
@@ -282,4 +282,4 @@ class WaitSet {
   std::size_t condition_count_ = 0;
 };
 
-}  // namespace lungar::platform::dds
+}  // namespace lungar::dds

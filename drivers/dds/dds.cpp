@@ -1,13 +1,13 @@
 /// @file dds.cpp
 /// @brief The RAII layer's non-template half: deleting entities, the domain from an XML file, the waitset.
-#include "platform/sync/dds.h"
+#include "drivers/dds/dds.h"
 
 #include <fstream>
 #include <mutex>
 #include <set>
 #include <sstream>
 
-namespace lungar::platform::dds {
+namespace lungar::dds {
 
 namespace {
 
@@ -162,4 +162,4 @@ bool WaitSet::wait(std::int64_t timeout_ns) {
   return rc >= 0;
 }
 
-}  // namespace lungar::platform::dds
+}  // namespace lungar::dds

@@ -1,17 +1,17 @@
 /// @file physiology_sample.cpp
 /// @brief The checks of AMM and OpenICE waveform samples (physiology_sample.h).
-#include "platform/physiology/physiology_sample.h"
+#include "drivers/breath/physiology/physiology_sample.h"
 
 #include <cmath>
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 namespace {
 
 /// Each quantity's metric, as OpenICE names it (IEEE 11073 MDC).
 constexpr EnumNames<Quantity, 3> kOpenIceMetrics{{{{Quantity::volume_ml, "MDC_VOL_AWAY_TIDAL"},
-                                                  {Quantity::flow_ml_per_s, "MDC_FLOW_AWAY"},
-                                                  {Quantity::pressure_cmh2o, "MDC_PRESS_AWAY"}}}};
+                                                   {Quantity::flow_ml_per_s, "MDC_FLOW_AWAY"},
+                                                   {Quantity::pressure_cmh2o, "MDC_PRESS_AWAY"}}}};
 
 /// The factor to lungar's unit of `q` for a unit as OpenICE names it (IEEE 11073 MDC), or nullopt.
 std::optional<double> openice_unit_factor(Quantity q, std::string_view unit) {
@@ -50,11 +50,16 @@ std::optional<Sample> AmmChecks::check(std::string_view name, std::string_view u
   const double ml = value * factor;
   const auto c = static_cast<std::size_t>(*channel);
   std::optional<Drop> why;
-  if (!std::isfinite(value)) why = Drop::not_finite;
-  else if (factor == 0.0) why = Drop::unit;
-  else if (value < 0) why = Drop::negative_volume;
-  else if (t < last_t_[c]) why = Drop::time;
-  else if (t > last_t_[c] && std::abs(ml - last_ml_[c]) > kMaxVolumeRateMlPerS * (t - last_t_[c])) why = Drop::rate;
+  if (!std::isfinite(value))
+    why = Drop::not_finite;
+  else if (factor == 0.0)
+    why = Drop::unit;
+  else if (value < 0)
+    why = Drop::negative_volume;
+  else if (t < last_t_[c])
+    why = Drop::time;
+  else if (t > last_t_[c] && std::abs(ml - last_ml_[c]) > kMaxVolumeRateMlPerS * (t - last_t_[c]))
+    why = Drop::rate;
   if (why) {
     dropped(*why);
     return std::nullopt;
@@ -78,10 +83,13 @@ void OpenIceChecks::check(const OpenIceArray& a, const std::function<void(const 
   const std::size_t n = a.values.size();
   for (std::size_t i = 0; i < n; ++i) {
     const double v = static_cast<double>(a.values[i]) * *factor;
-    if (!std::isfinite(v)) dropped(Drop::not_finite);
-    else if (followed_ == Quantity::volume_ml && v < 0) dropped(Drop::negative_volume);
-    else keep({a.end_s - static_cast<double>(n - 1 - i) * dt, v, Channel::breath, followed_});
+    if (!std::isfinite(v))
+      dropped(Drop::not_finite);
+    else if (followed_ == Quantity::volume_ml && v < 0)
+      dropped(Drop::negative_volume);
+    else
+      keep({a.end_s - static_cast<double>(n - 1 - i) * dt, v, Channel::breath, followed_});
   }
 }
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "platform/sync/dds.h"
+#include "drivers/dds/dds.h"
 
-namespace lungar::platform::sync {
+namespace lungar::dds {
 
 /// The six files of a station's folder, as absolute paths.
 struct SecurityFiles {
@@ -38,4 +38,4 @@ std::string security_plugin_dir();
 /// the domain is outside what a governance document can name (0 to 230).
 Status add_security_properties(const SecurityFiles& files, std::uint32_t domain, dds::Qos& qos);
 
-}  // namespace lungar::platform::sync
+}  // namespace lungar::dds

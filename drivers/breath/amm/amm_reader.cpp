@@ -1,6 +1,6 @@
 /// @file amm_reader.cpp
 /// @brief AMM's waveforms on Fast DDS (amm_reader.h); without Fast DDS in the build, a refusal that says so.
-#include "platform/physiology/amm_reader.h"
+#include "drivers/breath/amm/amm_reader.h"
 
 #if LUNGAR_WITH_FASTDDS
 #include <atomic>
@@ -18,7 +18,7 @@
 #include "config/base/clock.h"
 #endif
 
-namespace lungar::platform::physiology {
+namespace lungar::breath::physiology {
 
 #if LUNGAR_WITH_FASTDDS
 namespace {
@@ -90,4 +90,4 @@ Result<std::unique_ptr<AmmReader>> AmmReader::open(std::uint32_t, PhysiologyInbo
 }
 #endif
 
-}  // namespace lungar::platform::physiology
+}  // namespace lungar::breath::physiology

@@ -2,21 +2,22 @@
 /// @brief [sync] -> the station, wrapped around the Runtime's pose source and breathing clock.
 #include "platform/app/join_classroom.h"
 
+#include "drivers/breath/classroom/classroom_breathing.h"
 #include "platform/runtime/patient_force.h"
-#include "platform/sync/classroom_breathing.h"
 #include "platform/sync/instructor_publisher.h"
 #include "platform/sync/trainee_poses.h"
 
 namespace lungar::platform::sync {
 
-Result<std::shared_ptr<ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
-                                                         const sim::BreathingScript& script, const LoadedLungs& lungs,
-                                                         std::int64_t t0_ns, RuntimeParts& parts,
-                                                         std::function<void(const std::string&)> log) {
-  auto opened = ClassroomStation::open(s.sync, log, clock_skew_ns);
+Result<std::shared_ptr<classroom::ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
+                                                                    const sim::BreathingScript& script,
+                                                                    const LoadedLungs& lungs, std::int64_t t0_ns,
+                                                                    RuntimeParts& parts,
+                                                                    std::function<void(const std::string&)> log) {
+  auto opened = classroom::ClassroomStation::open(s.sync, log, clock_skew_ns);
   if (!opened) return Error{opened.error()};
-  auto station = std::make_shared<ClassroomStation>(opened.take());
-  if (Instructor* instructor = station->instructor()) {
+  auto station = std::make_shared<classroom::ClassroomStation>(opened.take());
+  if (classroom::Instructor* instructor = station->instructor()) {
     if (Status shared = instructor->share_breathing(script.start, script.events, lungs.own, t0_ns); !shared)
       return shared.with_context("");
     parts.listeners.push_back(std::make_shared<InstructorPublisher>(station));
@@ -28,7 +29,7 @@ Result<std::shared_ptr<ClassroomStation>> join_classroom(const Settings& s, std:
     if (!lungs.healthy || !lungs.drawn) return fail("classroom: a trainee needs the loaded lungs to draw the instructor's");
     parts.course = std::make_shared<ClassroomCourse>(parts.course, station, lungs, log);
   }
-  parts.breathing = std::make_unique<ClassroomBreathing>(std::move(parts.breathing), station);
+  parts.breathing = std::make_unique<classroom::ClassroomBreathing>(std::move(parts.breathing), station);
   return station;
 }
 

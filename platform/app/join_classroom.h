@@ -11,10 +11,10 @@
 #include <string>
 
 #include "config/base/result.h"
-#include "platform/sync/classroom_course.h"
+#include "drivers/classroom/classroom_station.h"
 #include "platform/app/settings.h"
 #include "platform/runtime/runtime.h"
-#include "platform/sync/classroom_station.h"
+#include "platform/sync/classroom_course.h"
 #include "sim/breathing/script.h"
 
 namespace lungar::platform::sync {
@@ -23,9 +23,10 @@ namespace lungar::platform::sync {
 /// the same time (the instructor shares both; a trainee needs `lungs`' assets to draw the instructor's);
 /// `clock_skew_ns` lets a test pretend this station's clock is off. The station is returned for the run loop
 /// (an instructor may have to stop when an older one turns up).
-Result<std::shared_ptr<ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
-                                                         const sim::BreathingScript& script, const LoadedLungs& lungs,
-                                                         std::int64_t t0_ns, RuntimeParts& parts,
-                                                         std::function<void(const std::string&)> log);
+Result<std::shared_ptr<classroom::ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
+                                                                    const sim::BreathingScript& script,
+                                                                    const LoadedLungs& lungs, std::int64_t t0_ns,
+                                                                    RuntimeParts& parts,
+                                                                    std::function<void(const std::string&)> log);
 
 }  // namespace lungar::platform::sync

@@ -11,13 +11,13 @@
 #include "config/base/command_line.h"
 #include "config/base/log_line.h"
 #include "config/config_paths.h"
+#include "drivers/classroom/classroom_keys.h"
 #include "lungar/version.h"
 #include "platform/app/calibrate_command.h"
 #include "platform/app/calibrate_display_command.h"
-#include "platform/sync/classroom_keys.h"
-#include "platform/doctor/doctor.h"
 #include "platform/app/run.h"
 #include "platform/app/settings_load.h"
+#include "platform/doctor/doctor.h"
 
 namespace {
 
@@ -34,9 +34,9 @@ struct Commands {
   lungar::platform::CalibrateDisplayOptions display;
   std::vector<double> display_tip, display_fiducial;  ///< calibrate-display's three numbers, when given
   CLI::App* display_app = nullptr;
-  lungar::platform::ClassroomKeysOptions keys;
+  lungar::classroom::ClassroomKeysOptions keys;
   CLI::App* keys_app = nullptr;
-  lungar::platform::ClassroomRevokeOptions revoke;
+  lungar::classroom::ClassroomRevokeOptions revoke;
   CLI::App* revoke_app = nullptr;
 };
 
@@ -104,7 +104,7 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   display->add_option("--grid", m.display.grid, "interactive: N x N crosshair positions an eye (3-10)")
       ->capture_default_str();
 
-  lungar::platform::ClassroomKeysOptions& k = m.keys;
+  lungar::classroom::ClassroomKeysOptions& k = m.keys;
   CLI::App* keys = m.keys_app =
       app.add_subcommand("classroom-keys",
                          "make a secure classroom's authority, each station's identity and the signed DDS Security "
@@ -136,7 +136,7 @@ std::optional<int> run_command(Commands& m, const lungar::platform::RuntimeOptio
     return lungar::platform::run_calibrate_display(m.display);
   }
   if (*m.keys_app) {
-    auto made = lungar::platform::make_classroom_keys(m.keys);
+    auto made = lungar::classroom::make_classroom_keys(m.keys);
     if (!made) {
       std::fprintf(stderr, "lungar classroom-keys: %s\n", made.error().c_str());
       return 2;
@@ -145,7 +145,7 @@ std::optional<int> run_command(Commands& m, const lungar::platform::RuntimeOptio
     return 0;
   }
   if (*m.revoke_app) {
-    auto said = lungar::platform::revoke_classroom_stations(m.revoke);
+    auto said = lungar::classroom::revoke_classroom_stations(m.revoke);
     if (!said) {
       std::fprintf(stderr, "lungar classroom-revoke: %s\n", said.error().c_str());
       return 2;

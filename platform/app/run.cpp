@@ -12,6 +12,7 @@
 #include "config/scenario_load.h"
 #include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/breath/trace/clearest_trace.h"
+#include "drivers/classroom/classroom_station.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
 #include "platform/app/join_classroom.h"
@@ -26,7 +27,6 @@
 #include "platform/runtime/pathology_course.h"
 #include "platform/runtime/runtime.h"
 #include "platform/runtime/scenario_patient.h"
-#include "platform/sync/classroom_station.h"
 #include "sim/asset/asset_io.h"
 #include "sim/pathology/pathology.h"
 
@@ -62,7 +62,7 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   if (centre_demo_lungs(*drawn, s.registration)) log_line("demo: the CT lungs' centre put on the patient tracker");
   // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
   lungs.own = timeline_of(s.sim.pathologies, scenario ? &*scenario : nullptr);
-  const bool trainee = s.sync.role == sync::SyncRole::Trainee;
+  const bool trainee = s.sync.role == classroom::SyncRole::Trainee;
   if (!lungs.own.events.empty() || trainee)  // each state of a course is built from it
     lungs.healthy = std::make_shared<const sim::BakedAsset>(drawn->asset);
   sim::PatientState patient = sim::PatientState::of(drawn->asset);
@@ -91,7 +91,7 @@ breath::BreathSourceOptions breath_options(const Settings& s, std::shared_ptr<co
   breath::BreathSourceOptions options;
   options.script = std::move(script);
   options.trace.skip_flagged = s.breathing.rpm_flagged == "skip";
-  options.cyclonedds_xml = s.sync.cyclonedds_xml.empty() ? sync::default_cyclonedds_xml() : s.sync.cyclonedds_xml;
+  options.cyclonedds_xml = s.sync.cyclonedds_xml.empty() ? classroom::default_cyclonedds_xml() : s.sync.cyclonedds_xml;
   options.log = [](const std::string& line) { log_line(line); };
   return options;
 }
@@ -108,8 +108,9 @@ Result<std::string> given_breath(const RuntimeOptions& o) {
 
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
-Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0, const LoadedLungs& lungs,
-                   RuntimeParts& parts, std::shared_ptr<sync::ClassroomStation>& classroom) {
+Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
+                   const LoadedLungs& lungs, RuntimeParts& parts,
+                   std::shared_ptr<classroom::ClassroomStation>& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
@@ -131,7 +132,7 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
-  if (chosen->followed() && s.sync.role == sync::SyncRole::Trainee) {
+  if (chosen->followed() && s.sync.role == classroom::SyncRole::Trainee) {
     return fail(where +
                 "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
                 "--breath, and run the trainee without it (breathing.source = \"model\")");
@@ -143,7 +144,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
                                      t0, parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");
   classroom = joined.take();
-  if (sync::Instructor* instructor = classroom ? classroom->instructor() : nullptr; instructor && chosen->followed()) {
+  if (classroom::Instructor* instructor = classroom ? classroom->instructor() : nullptr;
+      instructor && chosen->followed()) {
     instructor->share_followed_breath();
     log_line("classroom: sharing the followed breath: every frame's dV goes to the trainees");
   }
@@ -168,7 +170,7 @@ Status open_output_and_scene(Settings& s, bool procedural, const std::optional<c
 
 /// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
 Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                  const sync::ClassroomStation& classroom) {
+                  const classroom::ClassroomStation& classroom) {
   while (!g_stop_requested.load()) {
     if (const std::string refused = classroom.fatal_error(); !refused.empty()) return fail(refused);
     if (o.frames && runtime.frames() >= *o.frames) break;
@@ -271,7 +273,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     course->start_at(t0);
     parts.course = course;
   }
-  std::shared_ptr<sync::ClassroomStation> classroom;
+  std::shared_ptr<classroom::ClassroomStation> classroom;
   if (Status sources = add_sources(s, o, limit_s, t0, lungs, parts, classroom); !sources) {
     log_line("error: " + sources.error());
     return 1;

@@ -162,7 +162,7 @@ void add_output_options(CLI::App& app, RuntimeOptions& o) {
 
 void add_classroom_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--sync", o.sync, "classroom role: off | instructor | trainee (default: the config's sync.role)")
-      ->check(CLI::IsMember(names_of(sync::kSyncRoleNames)));
+      ->check(CLI::IsMember(names_of(classroom::kSyncRoleNames)));
   app.add_option("--classroom", o.classroom, "the classroom's name, a DDS partition (default: sync.classroom)");
   app.add_option("--sync-domain", o.sync_domain, "the DDS domain id [0, 232] (default: sync.domain)");
   app.add_option("--station", o.station,
@@ -206,7 +206,7 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (o.seconds && !(*o.seconds >= 0)) {
     return fail("--seconds: expected a duration >= 0 (0: until stopped), got " + std::to_string(*o.seconds));
   }
-  if (Status r = override_choice("--sync", o.sync, sync::kSyncRoleNames, s.sync.role); !r) return r;
+  if (Status r = override_choice("--sync", o.sync, classroom::kSyncRoleNames, s.sync.role); !r) return r;
   if (!o.classroom.empty()) s.sync.classroom = o.classroom;
   if (o.sync_domain) {
     if (*o.sync_domain < 0 || *o.sync_domain > 232) {

@@ -35,7 +35,7 @@ struct RuntimeOptions {
   std::string snapshot_path;      ///< PNG of the last frame
   std::string stats_json_path;
   std::string record_path;         ///< raw tracker reports into a .trk
-  std::string sync;                ///< a name of sync::kSyncRoleNames; empty: from the config
+  std::string sync;                ///< a name of classroom::kSyncRoleNames; empty: from the config
   std::string classroom;           ///< the classroom's name; empty: from the config
   std::optional<int> sync_domain;  ///< the DDS domain id
   std::string station;             ///< this station's name in the classroom

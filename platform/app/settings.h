@@ -12,10 +12,10 @@
 
 #include "config/base/enum_names.h"
 #include "config/breathing_settings.h"
+#include "drivers/classroom/sync_settings.h"
 #include "drivers/tracker/tracker_config.h"
 #include "platform/output/output_settings.h"
 #include "platform/runtime/runtime_config.h"
-#include "platform/sync/sync_settings.h"
 #include "render/draw_modes.h"
 #include "sim/force/force_sh.h"
 
@@ -69,7 +69,7 @@ struct Settings {
   drivers::TrackerConfig trackers;
   RegistrationSettings registration;
   SimSettings sim;
-  sync::SyncSettings sync;
+  classroom::SyncSettings sync;
   std::string source = "<defaults>";
 };
 

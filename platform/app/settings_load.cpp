@@ -85,7 +85,7 @@ Result<Settings> read_tree(const toml::table& tree, const std::string& name) {
     drivers::visit(trackers, s.trackers);
     read_registration(top.section("registration"), s.registration);
     read_sim(top.section("sim"), s.sim);
-    sync::read_sync_settings(top.section("sync"), s.sync);
+    classroom::read_sync_settings(top.section("sync"), s.sync);
     top.finish();
   } catch (const config::ConfigError& e) {
     return fail(e.what());

@@ -7,8 +7,8 @@
 namespace lungar::platform::doctor {
 
 Check check_classroom(const Settings& s) {
-  const sync::SyncSettings& y = s.sync;
-  if (y.role == sync::SyncRole::Off) return passed("sync", "not in a classroom (sync.role = off)");
+  const classroom::SyncSettings& y = s.sync;
+  if (y.role == classroom::SyncRole::Off) return passed("sync", "not in a classroom (sync.role = off)");
   const std::string room = "classroom \"" + y.classroom + "\" (" + to_string(y.role) + ")";
   if (y.security.empty()) {
     return warned("sync", room + " is open: any DDS participant on this network can join it and publish to it",

@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/runtime/log_histogram.h"
+#include "config/base/log_histogram.h"
 
 namespace lungar::platform {
 

@@ -6,7 +6,7 @@
 
 namespace lungar::platform {
 
-ClassroomCourse::ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<sync::ClassroomStation> station,
+ClassroomCourse::ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<classroom::ClassroomStation> station,
                                  LoadedLungs lungs, std::function<void(const std::string&)> log)
     : own_(std::move(own)), station_(std::move(station)), lungs_(std::move(lungs)), log_(std::move(log)) {
   // A station that loaded no pathologies may leave the drawn patient out: it is then the drawn asset's healthy one.
@@ -22,7 +22,7 @@ ClassroomCourse::~ClassroomCourse() {
 
 void ClassroomCourse::take_new_timeline() {
   if (building_.load(std::memory_order_acquire)) return;
-  sync::Trainee* trainee = station_->trainee();
+  classroom::Trainee* trainee = station_->trainee();
   sim::PathologyTimeline timeline;
   if (trainee == nullptr || !trainee->lungs_since(seen_version_, timeline)) return;
   if (followed_ && followed_->timeline() == timeline) return;  // a restarted instructor with the same patient

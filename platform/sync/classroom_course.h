@@ -20,9 +20,9 @@
 #include <thread>
 #include <vector>
 
-#include "platform/runtime/pathology_course.h"
+#include "drivers/classroom/classroom_station.h"
 #include "platform/runtime/lung_course.h"
-#include "platform/sync/classroom_station.h"
+#include "platform/runtime/pathology_course.h"
 #include "sim/asset/baked_asset.h"
 #include "sim/pathology/pathology_timeline.h"
 #include "sim/patient/patient_state.h"
@@ -41,7 +41,7 @@ struct LoadedLungs {
 class ClassroomCourse final : public LungCourse {
  public:
   /// `own`: this station's course (none: its lungs as loaded); `station` a trainee's.
-  ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<sync::ClassroomStation> station,
+  ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<classroom::ClassroomStation> station,
                   LoadedLungs lungs, std::function<void(const std::string&)> log);
   ~ClassroomCourse() override;
   ClassroomCourse(const ClassroomCourse&) = delete;
@@ -63,7 +63,7 @@ class ClassroomCourse final : public LungCourse {
   void build(sim::PathologyTimeline timeline);  ///< the builder thread
 
   std::shared_ptr<LungCourse> own_;
-  std::shared_ptr<sync::ClassroomStation> station_;
+  std::shared_ptr<classroom::ClassroomStation> station_;
   LoadedLungs lungs_;
   std::function<void(const std::string&)> log_;
   std::vector<sim::LungShape> as_loaded_;

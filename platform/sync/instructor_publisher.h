@@ -6,17 +6,17 @@
 
 #include <memory>
 
+#include "drivers/classroom/classroom_station.h"
 #include "platform/runtime/frame_listener.h"
-#include "platform/sync/classroom_station.h"
 
 namespace lungar::platform::sync {
 
 class InstructorPublisher final : public FrameListener {
  public:
-  explicit InstructorPublisher(std::shared_ptr<ClassroomStation> station) : station_(std::move(station)) {}
+  explicit InstructorPublisher(std::shared_ptr<classroom::ClassroomStation> station) : station_(std::move(station)) {}
 
   void on_frame(const FrameState& s) override {
-    Instructor& i = *station_->instructor();
+    classroom::Instructor& i = *station_->instructor();
     const Eigen::Quaterniond& q = s.lung_in_world;
     i.publish_pose({s.lung_origin_mm.x(), s.lung_origin_mm.y(), s.lung_origin_mm.z()}, {q.w(), q.x(), q.y(), q.z()},
                    s.patient.t_arrival_ns);
@@ -24,7 +24,7 @@ class InstructorPublisher final : public FrameListener {
   }
 
  private:
-  std::shared_ptr<ClassroomStation> station_;
+  std::shared_ptr<classroom::ClassroomStation> station_;
 };
 
 }  // namespace lungar::platform::sync

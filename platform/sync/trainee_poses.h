@@ -12,15 +12,15 @@
 
 #include <Eigen/Geometry>
 
+#include "drivers/classroom/classroom_station.h"
 #include "drivers/pose/mailbox.h"
 #include "platform/runtime/pose_source.h"
-#include "platform/sync/classroom_station.h"
 
 namespace lungar::platform::sync {
 
 class TraineePoses final : public PoseSource {
  public:
-  TraineePoses(std::unique_ptr<PoseSource> own, std::shared_ptr<ClassroomStation> station,
+  TraineePoses(std::unique_ptr<PoseSource> own, std::shared_ptr<classroom::ClassroomStation> station,
                const Eigen::Isometry3d& registration)
       : own_(std::move(own)),
         station_(std::move(station)),
@@ -41,7 +41,7 @@ class TraineePoses final : public PoseSource {
 
  private:
   std::unique_ptr<PoseSource> own_;
-  std::shared_ptr<ClassroomStation> station_;
+  std::shared_ptr<classroom::ClassroomStation> station_;
   Eigen::Isometry3d registration_, registration_inverse_;
   mutable drivers::LatestMailbox<drivers::PoseSample> handed_;  ///< the last patient pose handed to the frame
 };

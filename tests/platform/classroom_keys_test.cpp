@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "platform/sync/classroom_keys.h"
+#include "drivers/classroom/classroom_keys.h"
 #include "tests/file_text.h"
 
-namespace lungar::platform {
+namespace lungar::classroom {
 namespace {
 namespace fs = std::filesystem;
 
@@ -195,4 +195,4 @@ TEST(ClassroomKeys, RevokingListsTheStationAndRefusesAnotherAuthoritysCertificat
 }
 
 }  // namespace
-}  // namespace lungar::platform
+}  // namespace lungar::classroom

@@ -8,11 +8,11 @@
 #include <random>
 #include <vector>
 
+#include "config/base/log_histogram.h"
 #include "platform/runtime/frame_stats.h"
-#include "platform/runtime/log_histogram.h"
 
+using lungar::LogHistogram;
 using lungar::platform::FrameStats;
-using lungar::platform::LogHistogram;
 
 namespace {
 

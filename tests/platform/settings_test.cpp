@@ -284,7 +284,7 @@ TEST(BadConfig, MissingFile) {
 TEST(Settings, AClassroomStationIsConfigured) {
   auto r = load_settings_from_string("[sync]\nrole = \"trainee\"\nclassroom = \"ward-3\"\ndomain = 17\n", "x.toml");
   ASSERT_TRUE(r) << r.error();
-  EXPECT_EQ(r->sync.role, lungar::platform::sync::SyncRole::Trainee);
+  EXPECT_EQ(r->sync.role, lungar::classroom::SyncRole::Trainee);
   EXPECT_EQ(r->sync.classroom, "ward-3");
   EXPECT_EQ(r->sync.domain, 17);
 }

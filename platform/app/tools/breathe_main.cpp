@@ -21,10 +21,10 @@
 #include "config/base/command_line.h"
 #include "drivers/breath/physiology/physiology_feed.h"
 #include "drivers/breath/trace/clearest_trace.h"
+#include "drivers/classroom/classroom_station.h"
 #include "lungar/version.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/settings_load.h"
-#include "platform/sync/classroom_station.h"
 #include "sim/breathing/breath_follower.h"
 #include "sim/breathing/breath_trace.h"
 #include "sim/breathing/exhale_path.h"
@@ -190,8 +190,8 @@ int follow(const sim::BreathingScript& script, const std::vector<std::string>& b
   auto live = breath::physiology::parse_physiology_spec(breath);
   if (!live) return fail_with("--breath: " + live.error());
   if (!*live) return print_followed(script, breath, tidal_ml, settings.breathing.rpm_flagged, seconds, dt);
-  const std::string xml = settings.sync.cyclonedds_xml.empty() ? platform::sync::default_cyclonedds_xml()
-                                                                : settings.sync.cyclonedds_xml;
+  const std::string xml =
+      settings.sync.cyclonedds_xml.empty() ? classroom::default_cyclonedds_xml() : settings.sync.cyclonedds_xml;
   return print_followed_live(script, **live, xml, tidal_ml, seconds.value_or(60.0), dt);
 }
 

@@ -17,12 +17,12 @@
 #include "config/base/clock.h"
 #include "config/base/command_line.h"
 #include "config/base/log_line.h"
-#include "platform/sync/instructor.h"
-#include "platform/sync/sync_report_json.h"
-#include "platform/sync/trainee.h"
+#include "drivers/classroom/instructor.h"
+#include "drivers/classroom/sync_report_json.h"
+#include "drivers/classroom/trainee.h"
 
 using namespace lungar;
-using namespace lungar::platform::sync;
+using namespace lungar::classroom;
 
 namespace {
 

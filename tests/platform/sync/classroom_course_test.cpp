@@ -18,7 +18,7 @@
 #include "sync_test_support.h"
 
 using namespace lungar;
-using platform::sync::ClassroomStation;
+using classroom::ClassroomStation;
 
 namespace {
 
@@ -33,13 +33,13 @@ std::shared_ptr<const sim::BakedAsset> healthy() {
   return a;
 }
 
-platform::sync::SyncSettings sync_settings(platform::sync::SyncRole role, const std::string& room) {
-  platform::sync::SyncSettings s;
+classroom::SyncSettings sync_settings(classroom::SyncRole role, const std::string& room) {
+  classroom::SyncSettings s;
   s.role = role;
   s.classroom = room;
   s.domain = static_cast<int>(lungar::testing::test_domain());
   s.cyclonedds_xml = lungar::testing::kLoopbackXml;
-  s.station = role == platform::sync::SyncRole::Instructor ? "instructor" : "trainee";
+  s.station = role == classroom::SyncRole::Instructor ? "instructor" : "trainee";
   return s;
 }
 
@@ -55,14 +55,14 @@ struct Room {
   explicit Room(const sim::PathologyTimeline& lungs, const std::string& name) {
     const std::string room = lungar::testing::test_classroom(name);
     auto quiet = [](const std::string&) {};
-    auto instructor = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Instructor, room), quiet);
+    auto instructor = ClassroomStation::open(sync_settings(classroom::SyncRole::Instructor, room), quiet);
     EXPECT_TRUE(instructor) << instructor.error();
     teacher = std::make_shared<ClassroomStation>(instructor.take());
     auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
     EXPECT_TRUE(script);
     const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
     EXPECT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, lungs, t0));
-    auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee, room), quiet);
+    auto trainee = ClassroomStation::open(sync_settings(classroom::SyncRole::Trainee, room), quiet);
     EXPECT_TRUE(trainee) << trainee.error();
     learner = std::make_shared<ClassroomStation>(trainee.take());
     course = std::make_unique<platform::ClassroomCourse>(

@@ -14,16 +14,17 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "drivers/classroom/classroom_link.h"
+#include "drivers/classroom/classroom_topics.h"
+#include "drivers/classroom/wire.h"
 #include "drivers/dds/dds.h"
-#include "platform/sync/classroom_link.h"
-#include "platform/sync/classroom_topics.h"
-#include "platform/sync/wire.h"
 #include "station_process.h"
 #include "stations_test.h"
 #include "sync_test_support.h"
 
 using namespace lungar;
 using namespace lungar::platform;
+using namespace lungar::classroom;
 using lungar::testing::StationProcess;
 using lungar::testing::realtime_ns;
 using lungar::testing::sleep_s;
@@ -59,12 +60,12 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
   auto d = dds::Domain::create(static_cast<std::uint32_t>(std::stoul(domain)), lungar::testing::kLoopbackXml);
   ASSERT_TRUE(d) << d.error();
   auto pose_topic = dds::Topic<lungar_sync_PatientPose>::create(d->participant(), lungar_sync_PatientPose_desc,
-                                                                sync::TopicInfo<lungar_sync_PatientPose>::name);
+                                                                classroom::TopicInfo<lungar_sync_PatientPose>::name);
   auto state_topic = dds::Topic<lungar_sync_BreathingState>::create(
-      d->participant(), lungar_sync_BreathingState_desc, sync::TopicInfo<lungar_sync_BreathingState>::name);
+      d->participant(), lungar_sync_BreathingState_desc, classroom::TopicInfo<lungar_sync_BreathingState>::name);
   dds::Qos pose_qos, state_qos;
-  sync::classroom_qos<lungar_sync_PatientPose>(pose_qos, room);
-  sync::classroom_qos<lungar_sync_BreathingState>(state_qos, room);
+  classroom::classroom_qos<lungar_sync_PatientPose>(pose_qos, room);
+  classroom::classroom_qos<lungar_sync_BreathingState>(state_qos, room);
   auto pose_writer = dds::Writer<lungar_sync_PatientPose>::create(d->participant(), *pose_topic, pose_qos);
   auto state_writer = dds::Writer<lungar_sync_BreathingState>::create(d->participant(), *state_topic, state_qos);
   ASSERT_TRUE(pose_writer && state_writer);
@@ -101,16 +102,16 @@ TEST_F(ClassroomProbe, MalformedSamplesAreDroppedAndCounted) {
 TEST_F(ClassroomProbe, AStationNameOfMoreThan63CharactersIsRefusedAtOpen) {
   // The Station topic carries the name in 64 bytes with its terminating zero: 63 characters open, 64 are refused
   // before any DDS entity is made, naming the setting.
-  sync::SyncOptions o;
+  classroom::SyncOptions o;
   o.classroom = room;
   o.domain = static_cast<std::uint32_t>(std::stoul(domain));
   o.cyclonedds_xml = lungar::testing::kLoopbackXml;
   o.log = [](const std::string&) {};
   o.station = std::string(63, 's');
-  auto fits = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  auto fits = classroom::ClassroomLink::open(o, classroom::kWireTrainee);
   ASSERT_TRUE(fits) << fits.error();
   o.station = std::string(64, 's');
-  auto long_name = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  auto long_name = classroom::ClassroomLink::open(o, classroom::kWireTrainee);
   ASSERT_FALSE(long_name);
   EXPECT_NE(long_name.error().find("sync.station: expected at most 63 characters"), std::string::npos)
       << long_name.error();
@@ -120,13 +121,13 @@ TEST_F(ClassroomProbe, MalformedSamplesAreLoggedTheFirstFiveThenEveryHundredth) 
   // A rogue stream of malformed samples must not flood the log: each is counted, the first five are logged, then
   // one in a hundred, with the count so far.
   std::vector<std::string> lines;
-  sync::SyncOptions o;
+  classroom::SyncOptions o;
   o.classroom = room;
   o.domain = static_cast<std::uint32_t>(std::stoul(domain));
   o.cyclonedds_xml = lungar::testing::kLoopbackXml;
   o.station = "logged";
   o.log = [&](const std::string& line) { lines.push_back(line); };
-  auto link = sync::ClassroomLink::open(o, sync::kWireTrainee);
+  auto link = classroom::ClassroomLink::open(o, classroom::kWireTrainee);
   ASSERT_TRUE(link) << link.error();
   lines.clear();
   for (int i = 0; i < 250; ++i) (*link)->malformed("rate_bpm: expected [2, 60]");
@@ -145,9 +146,10 @@ TEST_F(ClassroomProbe, ATraineeNeverPublishesSharedState) {
   ASSERT_TRUE(d) << d.error();
   auto reader_of = [&](auto tag) {
     using T = decltype(tag);
-    auto t = dds::Topic<T>::create(d->participant(), sync::TopicInfo<T>::descriptor(), sync::TopicInfo<T>::name);
+    auto t =
+        dds::Topic<T>::create(d->participant(), classroom::TopicInfo<T>::descriptor(), classroom::TopicInfo<T>::name);
     dds::Qos q;
-    sync::classroom_qos<T>(q, room);
+    classroom::classroom_qos<T>(q, room);
     auto r = dds::Reader<T>::create(d->participant(), *t, q);
     EXPECT_TRUE(r) << r.error();
     return std::make_pair(t.take(), r.take());

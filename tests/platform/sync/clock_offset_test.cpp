@@ -2,10 +2,10 @@
 // exchanges it must refuse.
 #include <gtest/gtest.h>
 
-#include "platform/sync/clock_offset.h"
+#include "drivers/classroom/clock_offset.h"
 
-using lungar::platform::sync::ClockExchange;
-using lungar::platform::sync::ClockOffsetEstimator;
+using lungar::classroom::ClockExchange;
+using lungar::classroom::ClockOffsetEstimator;
 
 namespace {
 

@@ -11,12 +11,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "drivers/classroom/classroom_keys.h"
 #include "drivers/dds/dds_security.h"
-#include "platform/sync/classroom_keys.h"
 #include "sync_test_support.h"
 
 using namespace lungar;
 using namespace lungar::platform;
+using namespace lungar::classroom;
 namespace fs = std::filesystem;
 
 namespace {

@@ -5,12 +5,13 @@
 #include <fstream>
 
 #include "config/base/clock.h"
+#include "drivers/classroom/classroom_topics.h"
 #include "drivers/dds/dds.h"
-#include "platform/sync/classroom_topics.h"
 #include "sync_test_support.h"
 
 using namespace lungar;
 using namespace lungar::platform;
+using namespace lungar::classroom;
 using lungar::testing::kLoopbackXml;
 using lungar::testing::test_domain;
 
@@ -21,14 +22,14 @@ using State = lungar_sync_BreathingState;
 
 template <class T>
 dds::Topic<T> topic(const dds::Domain& d) {
-  auto t = dds::Topic<T>::create(d.participant(), sync::TopicInfo<T>::descriptor(), sync::TopicInfo<T>::name);
+  auto t = dds::Topic<T>::create(d.participant(), classroom::TopicInfo<T>::descriptor(), classroom::TopicInfo<T>::name);
   EXPECT_TRUE(t) << t.error();
   return t.take();
 }
 
 template <class T>
 void qos_for(dds::Qos& q, const std::string& partition) {
-  sync::classroom_qos<T>(q, partition);
+  classroom::classroom_qos<T>(q, partition);
 }
 
 /// Takes one sample within `timeout_ns` (the waitset wakes on its arrival).
@@ -51,7 +52,7 @@ struct RoundTrip {
     auto d = dds::Domain::create(test_domain(), kLoopbackXml);
     if (!d) return Error{d.error()};
     const dds_entity_t p = d->participant();
-    auto t = dds::Topic<T>::create(p, sync::TopicInfo<T>::descriptor(), sync::TopicInfo<T>::name);
+    auto t = dds::Topic<T>::create(p, classroom::TopicInfo<T>::descriptor(), classroom::TopicInfo<T>::name);
     if (!t) return Error{t.error()};
     dds::Qos wq, rq;
     qos_for<T>(wq, writer_partition);

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "platform/sync/followed_breath_share.h"
+#include "drivers/classroom/followed_breath_share.h"
 #include "sim/breathing/breath_follower.h"
 
-namespace lungar::platform::sync {
+namespace lungar::classroom {
 namespace {
 
 sim::BreathingSample model_at(double t, double dv = 100.0) {
@@ -74,4 +74,4 @@ TEST(FollowedBreathShare, WhenThePointsStopTheModelTakesOverWithoutAJump) {
 }
 
 }  // namespace
-}  // namespace lungar::platform::sync
+}  // namespace lungar::classroom

@@ -12,11 +12,11 @@
 #define LUNGAR_ALLOCATION_COUNTERS_ONLY
 #include "../../sim/allocation_counter.h"
 #include "config/base/clock.h"
-#include "platform/app/scenario_adapter.h"
+#include "drivers/breath/classroom/classroom_breathing.h"
 #include "drivers/breath/model/script_breathing.h"
+#include "platform/app/scenario_adapter.h"
 #include "platform/runtime/gl_math.h"
 #include "platform/runtime/patient_force.h"
-#include "platform/sync/classroom_breathing.h"
 #include "platform/sync/instructor_publisher.h"
 #include "platform/sync/trainee_poses.h"
 #include "sync_test_support.h"
@@ -24,6 +24,7 @@
 using namespace lungar;
 using namespace lungar::platform;
 using namespace lungar::platform::sync;
+using namespace lungar::classroom;
 
 namespace {
 
@@ -47,13 +48,13 @@ class StillPoses final : public PoseSource {
   void stop() override {}
 };
 
-platform::sync::SyncSettings sync_settings(platform::sync::SyncRole role) {
-  platform::sync::SyncSettings s;
+classroom::SyncSettings sync_settings(classroom::SyncRole role) {
+  classroom::SyncSettings s;
   s.role = role;
   s.classroom = lungar::testing::test_classroom("frame-side");
   s.domain = static_cast<int>(lungar::testing::test_domain());
   s.cyclonedds_xml = lungar::testing::kLoopbackXml;
-  s.station = role == platform::sync::SyncRole::Instructor ? "instructor" : "trainee";
+  s.station = role == classroom::SyncRole::Instructor ? "instructor" : "trainee";
   return s;
 }
 
@@ -61,7 +62,7 @@ platform::sync::SyncSettings sync_settings(platform::sync::SyncRole role) {
 
 TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAllocating) {
   auto quiet = [](const std::string&) {};
-  auto instructor = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Instructor), quiet);
+  auto instructor = ClassroomStation::open(sync_settings(classroom::SyncRole::Instructor), quiet);
   ASSERT_TRUE(instructor) << instructor.error();
   auto teacher = std::make_shared<ClassroomStation>(instructor.take());
   const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
@@ -75,7 +76,7 @@ TEST(ClassroomFrameSide, TheTraineeDrawsTheInstructorsLungAndBreathWithoutAlloca
     std::lock_guard lock(log_mutex);
     trainee_log += line + "\n";
   };
-  auto trainee = ClassroomStation::open(sync_settings(platform::sync::SyncRole::Trainee), keep);
+  auto trainee = ClassroomStation::open(sync_settings(classroom::SyncRole::Trainee), keep);
   ASSERT_TRUE(trainee) << trainee.error();
   auto learner = std::make_shared<ClassroomStation>(trainee.take());
 

@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/sync/classroom_keys.h"
+#include "drivers/classroom/classroom_keys.h"
 #include "station_process.h"
 #include "stations_test.h"
 #include "sync_test_support.h"
@@ -33,11 +33,11 @@ class SecureClassroom : public lungar::testing::StationsTest {
 
   /// Keys for this test's classroom: an authority with `stations` (the first teaches) into dir/`folder`.
   void make_keys(const std::string& folder, std::vector<std::string> stations) {
-    lungar::platform::ClassroomKeysOptions o;
+    lungar::classroom::ClassroomKeysOptions o;
     o.classroom = room;
     o.stations = std::move(stations);
     o.out_dir = (dir / folder).string();
-    auto made = lungar::platform::make_classroom_keys(o);
+    auto made = lungar::classroom::make_classroom_keys(o);
     ASSERT_TRUE(made) << made.error();
   }
 
@@ -118,10 +118,10 @@ TEST_F(SecureClassroom, ATraineesKeysCannotTeach) {
 
 TEST_F(SecureClassroom, ARevokedTraineeIsRefusedByAnInstructorThatHasTheRevocationList) {
   make_keys("keys", {"instr", "t1"});
-  lungar::platform::ClassroomRevokeOptions r;
+  lungar::classroom::ClassroomRevokeOptions r;
   r.ca_dir = (dir / "keys" / "ca").string();
   r.certs = {(dir / "keys" / "t1" / "identity_cert.pem").string()};
-  auto said = lungar::platform::revoke_classroom_stations(r);
+  auto said = lungar::classroom::revoke_classroom_stations(r);
   ASSERT_TRUE(said) << said.error();
   fs::copy_file(dir / "keys" / "ca" / "crl.pem", dir / "keys" / "instr" / "crl.pem");  // t1's own folder: none
   auto instr = start("instr", "instructor", 9, "keys/instr");

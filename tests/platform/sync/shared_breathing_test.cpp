@@ -2,10 +2,10 @@
 // instructor's time base through the applied offset, which steps on large changes and smooths small ones.
 #include <gtest/gtest.h>
 
-#include "platform/sync/shared_breathing.h"
+#include "drivers/classroom/shared_breathing.h"
 
 using namespace lungar;
-using namespace lungar::platform::sync;
+using namespace lungar::classroom;
 
 namespace {
 constexpr std::int64_t kBase = 1'700'000'000'000'000'000;

@@ -6,10 +6,10 @@
 #include <cstring>
 #include <limits>
 
-#include "platform/sync/wire.h"
+#include "drivers/classroom/wire.h"
 
 using namespace lungar;
-using namespace lungar::platform::sync;
+using namespace lungar::classroom;
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -5,7 +5,7 @@
 namespace lungar::config {
 
 void read_breathing_settings(TomlSection s, BreathingSettings& b) {
-  s.choice("preset", b.preset, {"normal", "emphysema", "fibrosis"});
+  s.choice("preset", b.preset, kPresetNames);
   s.number("rate_bpm", b.rate_bpm, 2.0, 60.0, "breaths/min");
   s.number("ie_ratio", b.ie_ratio, 0.1, 4.0, "(inspiration:expiration)");
   s.number("tidal_volume_ml", b.tidal_volume_ml, 50.0, 3000.0, "mL");

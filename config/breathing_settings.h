@@ -5,12 +5,13 @@
 
 #include <string>
 
+#include "config/base/patient_names.h"
 #include "config/toml_section.h"
 
 namespace lungar::config {
 
 struct BreathingSettings {
-  std::string preset = "normal";  ///< normal | emphysema | fibrosis
+  std::string preset = kPresetNames.name(Preset::Normal);  ///< a name of kPresetNames (config/base/patient_names.h)
   double rate_bpm = 12.0;
   double ie_ratio = 0.5;          ///< inspiration : expiration time, 1:2 = 0.5
   double tidal_volume_ml = 500.0;

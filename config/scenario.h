@@ -66,7 +66,7 @@ struct Scenario {
   /// loaded), added to the settings' [sim] pathology: "a patient with ARDS, turned prone".
   std::vector<std::string> pathologies;
   BreathingSettings start;  ///< preset, rate, I:E and tidal volume at t = 0
-  std::string start_pose = "upright";
+  std::string start_pose = kPoseNames.name(Pose::Upright);
   std::array<double, 4> start_rotation_wxyz = {1.0, 0.0, 0.0, 0.0};  ///< used when start_pose is empty
   std::vector<ScenarioEvent> events;  ///< in time order (stable: file order among equal times)
 

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "config/base/number_text.h"
+#include "config/base/patient_names.h"
 #include "config/toml_section.h"
 
 namespace lungar::config {
@@ -17,13 +18,6 @@ namespace {
 
 constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMaxScenarioS = 86400.0;  // a day
-
-// The spellings below must match sim/breathing (pv_curve.cpp, orientation.cpp); config/ does not depend on sim/,
-// and tests/platform/scenario_adapter_test.cpp checks that every name here is known there.
-const std::initializer_list<std::string_view> kPresetNames = {"normal", "emphysema", "fibrosis"};
-const std::initializer_list<std::string_view> kPoseNames = {"upright", "supine", "prone", "left_lateral",
-                                                            "right_lateral"};
-
 
 std::optional<double> optional_number(TomlSection& s, std::string_view key, double lo, double hi,
                                       std::string_view unit) {

@@ -43,6 +43,9 @@ class TomlSection {
   /// A string that must be one of the names in `names` (each owner's table, config/base/enum_names.h).
   template <typename E, std::size_t N>
   void choice(std::string_view key, E& out, const EnumNames<E, N>& names);
+  /// The same, kept as the name (settings that carry the name on to another layer, as the breathing preset does).
+  template <typename E, std::size_t N>
+  void choice(std::string_view key, std::string& out, const EnumNames<E, N>& names);
   /// A fixed-length array of numbers, each within [lo, hi].
   template <std::size_t N>
   void numbers(std::string_view key, std::array<double, N>& out, double lo, double hi, std::string_view unit);
@@ -94,6 +97,14 @@ void TomlSection::choice(std::string_view key, E& out, const EnumNames<E, N>& na
     expected += '"' + std::string(name) + '"';
   }
   fail(key, "expected one of " + expected + ", got " + describe(*node));
+}
+
+template <typename E, std::size_t N>
+void TomlSection::choice(std::string_view key, std::string& out, const EnumNames<E, N>& names) {
+  if (!find(key)) return;
+  E value{};
+  choice(key, value, names);
+  out = names.name(value);
 }
 
 template <std::size_t N>

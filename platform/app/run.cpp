@@ -244,7 +244,8 @@ Status take_the_scenarios_pathologies(const std::optional<config::Scenario>& sce
 /// breathing was chosen otherwise.
 void breathe_as_the_pathologies_do(Settings& s) {
   const sim::BreathingHint hint = sim::breathing_of(s.sim.pathologies);
-  if (hint.preset.empty() || s.breathing.preset != "normal" || !s.breathing.scenario.empty()) return;
+  if (hint.preset.empty() || s.breathing.preset != kPresetNames.name(Preset::Normal) || !s.breathing.scenario.empty())
+    return;
   s.breathing.preset = hint.preset;
   log_line("pathology: " + hint.spec + " breathes with the " + hint.preset + " preset");
 }

@@ -2,6 +2,8 @@
 /// @brief `lungar-bake`: a lung mesh (or the procedural pair) -> a `.lungbake` asset and a JSON report.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -9,10 +11,10 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include <unistd.h>
 
 #include "config/base/command_line.h"
 #include "config/base/log_line.h"
+#include "config/base/patient_names.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
 #include "sim/bake_tool/export_command.h"
@@ -141,9 +143,16 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
 /// `lungar-bake export`: its options on `sub`; --gravity is parsed after the command line.
 void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::string& gravity) {
   sub.add_option("--asset", cmd.asset, "the .lungbake asset")->required();
-  sub.add_option("--posture", cmd.posture, "upright, supine, prone, left-lateral (lying on the left side) or "
-                                           "right-lateral")
-      ->check(CLI::IsMember({"upright", "supine", "prone", "left-lateral", "right-lateral"}))
+  // The pose names (config/base/patient_names.h), with '-' for '_' as a command line spells them.
+  std::vector<std::string> postures;
+  for (const auto& [pose, name] : lungar::kPoseNames.entries) {
+    postures.emplace_back(name);
+    std::replace(postures.back().begin(), postures.back().end(), '_', '-');
+  }
+  sub.add_option("--posture", cmd.posture,
+                 "upright, supine, prone, left-lateral (lying on the left side) or "
+                 "right-lateral")
+      ->check(CLI::IsMember(postures))
       ->capture_default_str();
   sub.add_option("--gravity", gravity, "x,y,z: gravity's direction in the lung frame (LPS) instead of a posture");
   sub.add_option("--volume-ml", cmd.volume_ml, "the pair's volume change from the rest shape, mL (negative: below "

@@ -9,33 +9,9 @@
 
 namespace lungar::sim {
 
-namespace {
+std::string_view to_string(Pose pose) { return kPoseNames.name(pose); }
 
-struct PoseName {
-  Pose pose;
-  std::string_view name;
-};
-constexpr PoseName kPoseNames[] = {{Pose::Upright, "upright"},
-                                   {Pose::Supine, "supine"},
-                                   {Pose::Prone, "prone"},
-                                   {Pose::LeftLateral, "left_lateral"},
-                                   {Pose::RightLateral, "right_lateral"}};
-
-}  // namespace
-
-std::string_view to_string(Pose pose) {
-  for (const PoseName& p : kPoseNames) {
-    if (p.pose == pose) return p.name;
-  }
-  return "?";
-}
-
-std::optional<Pose> pose_from_name(std::string_view name) {
-  for (const PoseName& p : kPoseNames) {
-    if (p.name == name) return p.pose;
-  }
-  return std::nullopt;
-}
+std::optional<Pose> pose_from_name(std::string_view name) { return kPoseNames.parse(name); }
 
 Eigen::Quaterniond pose_rotation(Pose pose) {
   constexpr double quarter = std::numbers::pi / 2.0;

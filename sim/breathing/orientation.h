@@ -8,6 +8,7 @@
 /// to its target along the shorter arc (slerp) with smoothstep easing, so it starts and stops without a jerk.
 #pragma once
 
+#include "config/base/patient_names.h"
 #include "config/base/result.h"
 
 #include <optional>
@@ -21,7 +22,7 @@
 
 namespace lungar::sim {
 
-enum class Pose { Upright, Supine, Prone, LeftLateral, RightLateral };
+using lungar::Pose;  // config/base/patient_names.h: the names are spelled there
 inline constexpr Pose kAllPoses[] = {Pose::Upright, Pose::Supine, Pose::Prone, Pose::LeftLateral,
                                      Pose::RightLateral};
 

@@ -71,7 +71,7 @@ Status solve(Pattern& pat) {
 
   auto reach_error = [&](const char* what, double wanted) {
     return std::string(what) + ": expected at most " + number_text(max_tidal_volume_ml(preset, low), 4) +
-           " mL on the " + std::string(preset.name) + " curve (its volume at " +
+           " mL on the " + std::string(to_string(preset.id)) + " curve (its volume at " +
            number_text(kMaxTranspulmonaryCmH2O, 4) + " cmH2O less that at " + number_text(low, 4) + " cmH2O), got " +
            number_text(wanted, 4) + " mL";
   };

@@ -40,23 +40,18 @@ namespace {
 //
 // tests/sim/breathing/pv_curve_test.cpp checks these figures from the parameters.
 const PvPreset kPresets[] = {
-    {Preset::Normal, "normal", {1000.0, 5100.0, 9.6, 5.3}, 5.0},
-    {Preset::Emphysema, "emphysema", {2000.0, 5800.0, 4.9, 2.9}, 3.0},
-    {Preset::Fibrosis, "fibrosis", {700.0, 3300.0, 13.6, 8.1}, 8.0},
+    {Preset::Normal, {1000.0, 5100.0, 9.6, 5.3}, 5.0},
+    {Preset::Emphysema, {2000.0, 5800.0, 4.9, 2.9}, 3.0},
+    {Preset::Fibrosis, {700.0, 3300.0, 13.6, 8.1}, 8.0},
 };
 
 }  // namespace
 
 const PvPreset& pv_preset(Preset preset) { return kPresets[static_cast<int>(preset)]; }
 
-std::optional<Preset> preset_from_name(std::string_view name) {
-  for (const PvPreset& p : kPresets) {
-    if (p.name == name) return p.id;
-  }
-  return std::nullopt;
-}
+std::optional<Preset> preset_from_name(std::string_view name) { return kPresetNames.parse(name); }
 
-std::string_view to_string(Preset preset) { return pv_preset(preset).name; }
+std::string_view to_string(Preset preset) { return kPresetNames.name(preset); }
 
 double max_tidal_volume_ml(const PvPreset& preset, double start_pressure_cmh2o) {
   return preset.curve.volume_ml(kMaxTranspulmonaryCmH2O) - preset.curve.volume_ml(start_pressure_cmh2o);

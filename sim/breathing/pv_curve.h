@@ -8,6 +8,8 @@
 #include <optional>
 #include <string_view>
 
+#include "config/base/patient_names.h"
+
 namespace lungar::sim {
 
 /// Venegas' four parameters: a the lower asymptote (mL), b the distance between the asymptotes (mL), c the
@@ -26,13 +28,12 @@ struct PvCurve {
   double compliance_ml_per_cmh2o(double p_cmh2o) const;
 };
 
-enum class Preset { Normal, Emphysema, Fibrosis };
+using lungar::Preset;  // config/base/patient_names.h: the names are spelled there
 inline constexpr Preset kAllPresets[] = {Preset::Normal, Preset::Emphysema, Preset::Fibrosis};
 
 /// A curve and the relaxed end-expiratory transpulmonary pressure on it; V(p_frc) is the FRC.
 struct PvPreset {
-  Preset id;
-  std::string_view name;  ///< as spelled in TOML and on the command line
+  Preset id;  ///< its name: to_string(id), spelled in config/base/patient_names.h
   PvCurve curve;
   double p_frc_cmh2o;     ///< transpulmonary pressure at the end of a quiet expiration
 

@@ -62,8 +62,8 @@ void print_presets(double tidal_volume_ml) {
     const sim::PvPreset& p = sim::pv_preset(id);
     const double frc = p.frc_ml();
     const double swing = p.curve.pressure_cmh2o(frc + tidal_volume_ml) - p.p_frc_cmh2o;
-    std::printf("%s,%.0f,%.0f,%.2f,%.2f,%.2f,%.1f,%.1f,%.1f,%.3f,%.1f\n", std::string(p.name).c_str(), p.curve.a_ml,
-                p.curve.b_ml, p.curve.c_cmh2o, p.curve.d_cmh2o, p.p_frc_cmh2o, frc,
+    std::printf("%s,%.0f,%.0f,%.2f,%.2f,%.2f,%.1f,%.1f,%.1f,%.3f,%.1f\n", std::string(sim::to_string(p.id)).c_str(),
+                p.curve.a_ml, p.curve.b_ml, p.curve.c_cmh2o, p.curve.d_cmh2o, p.p_frc_cmh2o, frc,
                 p.curve.volume_ml(sim::kMaxTranspulmonaryCmH2O), p.curve.compliance_ml_per_cmh2o(p.p_frc_cmh2o), swing,
                 tidal_volume_ml / swing);
   }

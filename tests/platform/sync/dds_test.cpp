@@ -17,7 +17,7 @@ using lungar::testing::test_domain;
 
 namespace {
 
-using Pose = lungar_sync_PatientPose;
+using WirePose = lungar_sync_PatientPose;
 using State = lungar_sync_BreathingState;
 
 template <class T>
@@ -98,14 +98,14 @@ TEST(DdsLayer, AMissingOrForeignConfigurationIsOneLineNamingTheFile) {
 }
 
 TEST(DdsLayer, ASampleArrivesWithItsSourceTimestamp) {
-  auto room = RoundTrip<Pose>::open("room", "room");
+  auto room = RoundTrip<WirePose>::open("room", "room");
   ASSERT_TRUE(room) << room.error();
-  Pose sent{};
+  WirePose sent{};
   sent.seq = 42;
   sent.orientation_wxyz.w = 1.0;
   const std::int64_t stamp = 1'234'567'890'123'456'789;
   ASSERT_TRUE(room->writer.write(sent, stamp));
-  Pose got{};
+  WirePose got{};
   dds_sample_info_t info{};
   ASSERT_EQ(room->take_within(got, info, 2'000'000'000), 1);
   EXPECT_EQ(got.seq, 42u);
@@ -115,10 +115,10 @@ TEST(DdsLayer, ASampleArrivesWithItsSourceTimestamp) {
 }
 
 TEST(DdsLayer, PartitionsKeepClassroomsApart) {
-  auto rooms = RoundTrip<Pose>::open("room-a", "room-b");
+  auto rooms = RoundTrip<WirePose>::open("room-a", "room-b");
   ASSERT_TRUE(rooms) << rooms.error();
-  ASSERT_TRUE(rooms->writer.write(Pose{}, 1));
-  Pose got{};
+  ASSERT_TRUE(rooms->writer.write(WirePose{}, 1));
+  WirePose got{};
   dds_sample_info_t info{};
   EXPECT_EQ(rooms->take_within(got, info, 300'000'000), 0);
   EXPECT_EQ(rooms->reader.matched(), 0);
@@ -167,9 +167,9 @@ TEST(DdsLayer, EntitiesAreDeletedByTheirOwners) {
   ASSERT_TRUE(d) << d.error();
   dds_entity_t handle = 0;
   {
-    auto t = topic<Pose>(*d);
+    auto t = topic<WirePose>(*d);
     dds::Qos q;
-    auto w = dds::Writer<Pose>::create(d->participant(), t, q);
+    auto w = dds::Writer<WirePose>::create(d->participant(), t, q);
     ASSERT_TRUE(w);
     handle = w->get();
     EXPECT_EQ(dds_get_participant(handle), d->participant());

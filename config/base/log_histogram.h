@@ -19,6 +19,7 @@ class LogHistogram {
   static constexpr double kMin = 1e-3, kMax = 1e5, kGrowth = 1.01;
   static constexpr double kRelativeError = 0.005;  ///< of a percentile, for values in [kMin, kMax]
   static constexpr int kBuckets = 1852;            ///< ceil(ln(kMax / kMin) / ln(kGrowth))
+  static inline const double kLogGrowth = std::log(kGrowth);  ///< once, not at every add()
 
   /// Counts `value` (any finite number; values <= kMin share the first bucket). Allocates nothing.
   void add(double value) {
@@ -28,7 +29,7 @@ class LogHistogram {
     ++count_;
     sum_ += value;
     // Bucket index = floor(log_growth(value / kMin)).
-    const double index = value > kMin ? std::floor(std::log(value / kMin) / std::log(kGrowth)) : 0.0;
+    const double index = value > kMin ? std::floor(std::log(value / kMin) / kLogGrowth) : 0.0;
     counts_[static_cast<std::size_t>(std::clamp(index, 0.0, static_cast<double>(kBuckets - 1)))] += 1;
   }
   std::uint64_t count() const { return count_; }

@@ -82,7 +82,7 @@ ExactEq1 exact_eq1(const std::vector<std::unique_ptr<LungWork>>& work, const Bak
     const Eigen::MatrixXd d = (w.x.col(w.c_solved) * opt.p0).replicate(1, nd) +
                               opt.gamma_per_mm * w.x.middleCols(w.c_solved + 1, 3) * g_mat;
     Eigen::RowVectorXd s(nd);
-    const LungState now = PatientState::of(a).lungs[l];
+    const LungState now = LungState::healthy(lung);
     for (Eigen::Index k = 0; k < nd; ++k) s[k] = 1000.0 / swept_volume_mm3(a, now, g_mat.col(k));
     e.d.middleRows(lung.first_vertex, lung.vertex_count) = d * s.asDiagonal();
     e.pressures.push_back(std::move(p));
@@ -298,12 +298,13 @@ std::vector<float> compared_displacements(const std::vector<Eigen::MatrixXd>& ba
                                           const std::vector<std::unique_ptr<LungWork>>& work, const BakedAsset& a,
                                           const BakeOptions& opt, const Eigen::Vector3d& g) {
   std::vector<float> out(3 * std::size_t{a.vertex_count()});
+  const PatientState healthy = PatientState::of(a);
   for (std::size_t l = 0; l < work.size(); ++l) {
     const BakedLung& lung = a.lungs[l];
     const Eigen::Index n = basis[l].rows();
     const Eigen::MatrixXd u = linear_displacement(basis[l], opt.p0, opt.gamma_per_mm, g);
     const double swept = swept_volume(*work[l], u);
-    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * breath_share(a, PatientState::of(a), l, g) / swept : 0.0;
+    const double scale = swept > 0 ? kTidalVolumeMl * 1000.0 * breath_share(a, healthy, l, g) / swept : 0.0;
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < 3; ++c) out[3 * (lung.first_vertex + static_cast<std::size_t>(i)) + c] = static_cast<float>(scale * u(i, c));
   }

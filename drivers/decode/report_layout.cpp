@@ -1,5 +1,5 @@
 /// @file report_layout.cpp
-/// @brief TrackerConfig -> ReportLayout: parses component lists, builds the axis remap, checks bounds.
+/// @brief LayoutConfig -> ReportLayout: parses component lists, builds the axis remap, checks bounds.
 #include "drivers/decode/report_layout.h"
 
 #include <algorithm>
@@ -25,7 +25,7 @@ Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]};
 
 /// Checks that the station byte, the time and each enabled sensor's fields lie inside the report, and adds the
 /// sensors to `l`; an error reads "trackers.<key>: what is wrong".
-Status place_fields(const TrackerConfig& t, ReportLayout& l) {
+Status place_fields(const LayoutConfig& t, ReportLayout& l) {
   const ReportConfig& r = t.report;
   const int first = r.report_id >= 0 ? 1 : 0;
   auto inside = [&](int offset, int bytes) { return offset >= first && offset + bytes <= r.length; };
@@ -60,7 +60,7 @@ Status place_fields(const TrackerConfig& t, ReportLayout& l) {
 
 }  // namespace
 
-Result<WorldFrame> make_world_frame(const TrackerConfig& t) {
+Result<WorldFrame> make_world_frame(const LayoutConfig& t) {
   WorldFrame w;
   std::array<Component, 3> remap{};
   if (!components(t.axis_remap, "xyz", remap)) {
@@ -78,7 +78,7 @@ Result<WorldFrame> make_world_frame(const TrackerConfig& t) {
   return w;
 }
 
-Result<ReportLayout> make_layout(const TrackerConfig& t) {
+Result<ReportLayout> make_layout(const LayoutConfig& t) {
   const ReportConfig& r = t.report;
   auto fail = [](const std::string& key, const std::string& what) {
     return lungar::fail("trackers." + key + ": " + what);

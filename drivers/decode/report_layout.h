@@ -1,5 +1,5 @@
 /// @file report_layout.h
-/// @brief The report layout in the form the decoder uses, converted once from TrackerConfig.
+/// @brief The report layout in the form the decoder uses, converted once from LayoutConfig.
 /// @ingroup drivers
 #pragma once
 
@@ -12,7 +12,7 @@
 
 #include "config/base/result.h"
 #include "drivers/pose/pose_sample.h"
-#include "drivers/tracker/tracker_config.h"
+#include "drivers/decode/report_settings.h"
 
 namespace lungar::drivers {
 
@@ -72,10 +72,10 @@ struct ReportLayout {
 
 /// The world frame of the [trackers] keys (axis_remap, world_offset_mm, workspace, quat_norm_tolerance); an
 /// error names the key. make_layout() uses it; other decoders (OpenIGTLink) too.
-Result<WorldFrame> make_world_frame(const TrackerConfig& t);
+Result<WorldFrame> make_world_frame(const LayoutConfig& t);
 
 /// Converts and checks the tracker settings (the loader checks them too; this guards hand-made settings); an error
 /// reads "trackers.<key>: expected ..., got ...".
-Result<ReportLayout> make_layout(const TrackerConfig& t);
+Result<ReportLayout> make_layout(const LayoutConfig& t);
 
 }  // namespace lungar::drivers

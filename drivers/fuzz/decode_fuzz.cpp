@@ -43,7 +43,7 @@ std::string signed_perm(const char* perm, std::uint8_t signs) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 12) return 0;
   const std::uint8_t* c = data;
-  drivers::TrackerConfig t;
+  drivers::LayoutConfig t;
   drivers::ReportConfig& r = t.report;
   const drivers::FieldType types[] = {drivers::FieldType::I16, drivers::FieldType::I32, drivers::FieldType::F32,
                                      drivers::FieldType::Fixed16, drivers::FieldType::Fixed32};

@@ -20,6 +20,7 @@
 
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_messages.h"
+#include "drivers/tracker/tracker_config.h"
 
 using namespace lungar;
 
@@ -65,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   t.igtl.head = kNames[(c >> 3) & 3];
   t.igtl.patient = "PatientToTracker";
   t.igtl.stylus = kNames[(c >> 5) & 3];
-  const auto made = drivers::make_igtl_layout(t);
+  const auto made = drivers::make_igtl_layout(t.igtl, t);
   if (!made) std::abort();  // every layout above is valid
   const drivers::IgtlLayout& l = *made;
   std::vector<std::uint8_t> msg(data + 1, data + size);

@@ -25,10 +25,8 @@ namespace {
 
 class HidDevice final : public TrackerDevice {
  public:
-  explicit HidDevice(const TrackerConfig& s)
-      : hid_(s.hid),
-        backoff_(s.reopen_backoff_ms),
-        read_timeout_ms_(std::max(1, static_cast<int>(s.hid.read_timeout_ms))) {}
+  HidDevice(const HidConfig& s, double reopen_backoff_ms)
+      : hid_(s), backoff_(reopen_backoff_ms), read_timeout_ms_(std::max(1, static_cast<int>(s.read_timeout_ms))) {}
 
   ~HidDevice() override { close(); }
 
@@ -180,8 +178,8 @@ class HidDevice final : public TrackerDevice {
 
 }  // namespace
 
-std::unique_ptr<TrackerDevice> hid_create(const TrackerConfig& settings) {
-  return std::make_unique<HidDevice>(settings);
+std::unique_ptr<TrackerDevice> hid_create(const HidConfig& settings, double reopen_backoff_ms) {
+  return std::make_unique<HidDevice>(settings, reopen_backoff_ms);
 }
 
 }  // namespace lungar::drivers

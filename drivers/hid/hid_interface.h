@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "drivers/tracker/tracker_config.h"
+#include "drivers/hid/hid_settings.h"
 #include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
@@ -25,6 +25,6 @@ struct HidFound {
 std::optional<HidFound> hid_probe(const HidConfig& hid);
 
 /// A source for the configured device. It never fails to start: an absent device is "disconnected".
-std::unique_ptr<TrackerDevice> hid_create(const TrackerConfig& settings);
+std::unique_ptr<TrackerDevice> hid_create(const HidConfig& settings, double reopen_backoff_ms);
 
 }  // namespace lungar::drivers

@@ -150,10 +150,10 @@ DecodeError decode_body(Kind kind, const igtl_header& h, std::uint8_t* body, std
 
 }  // namespace
 
-Result<IgtlLayout> make_igtl_layout(const TrackerConfig& t) {
+Result<IgtlLayout> make_igtl_layout(const IgtlConfig& igtl, const LayoutConfig& world_settings) {
   IgtlLayout l;
   const std::pair<const char*, const std::string*> names[] = {
-      {"head", &t.igtl.head}, {"patient", &t.igtl.patient}, {"stylus", &t.igtl.stylus}};
+      {"head", &igtl.head}, {"patient", &igtl.patient}, {"stylus", &igtl.stylus}};
   for (std::size_t r = 0; r < kRoleCount; ++r) {
     const std::string& name = *names[r].second;
     if (name.size() > IGTL_HEADER_NAME_SIZE) {
@@ -162,11 +162,11 @@ Result<IgtlLayout> make_igtl_layout(const TrackerConfig& t) {
     }
     std::memcpy(l.device[r].data(), name.data(), name.size());
   }
-  if (!(t.igtl.scale > 0 && t.igtl.scale < 1e7)) return fail("trackers.igtl.scale: expected a positive scale");
-  if (!(t.igtl.rigid_tolerance > 0)) return fail("trackers.igtl.rigid_tolerance: expected a positive tolerance");
-  l.scale = t.igtl.scale;
-  l.rigid_tolerance = t.igtl.rigid_tolerance;
-  auto world = make_world_frame(t);
+  if (!(igtl.scale > 0 && igtl.scale < 1e7)) return fail("trackers.igtl.scale: expected a positive scale");
+  if (!(igtl.rigid_tolerance > 0)) return fail("trackers.igtl.rigid_tolerance: expected a positive tolerance");
+  l.scale = igtl.scale;
+  l.rigid_tolerance = igtl.rigid_tolerance;
+  auto world = make_world_frame(world_settings);
   if (!world) return Error{world.error()};
   l.world = *world;
   return l;

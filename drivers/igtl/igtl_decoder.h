@@ -16,7 +16,8 @@
 
 #include "config/base/result.h"
 #include "drivers/decode/decoder.h"
-#include "drivers/tracker/tracker_config.h"
+#include "drivers/decode/report_settings.h"
+#include "drivers/igtl/igtl_settings.h"
 
 namespace lungar::drivers {
 
@@ -33,7 +34,7 @@ struct IgtlLayout {
   double rigid_tolerance = 1e-3;  ///< max |R^T R - I| entry of an accepted rotation
   WorldFrame world;
 };
-Result<IgtlLayout> make_igtl_layout(const TrackerConfig& t);
+Result<IgtlLayout> make_igtl_layout(const IgtlConfig& igtl, const LayoutConfig& world);
 
 /// What the reader needs from a header before it reads the body.
 struct IgtlHeaderInfo {

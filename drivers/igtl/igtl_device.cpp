@@ -23,8 +23,8 @@ constexpr std::uint64_t kMaxSkip = 1ull << 30;
 
 class IgtlDevice final : public TrackerDevice {
  public:
-  IgtlDevice(const TrackerConfig& s, const IgtlLayout& layout)
-      : igtl_(s.igtl), layout_(layout), backoff_(s.reopen_backoff_ms) {}
+  IgtlDevice(const IgtlConfig& s, double reopen_backoff_ms, const IgtlLayout& layout)
+      : igtl_(s), layout_(layout), backoff_(reopen_backoff_ms) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     bool ever_connected = false, failure_logged = false;
@@ -140,8 +140,8 @@ class IgtlDevice final : public TrackerDevice {
 
 }  // namespace
 
-std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings, const IgtlLayout& layout) {
-  return std::make_unique<IgtlDevice>(settings, layout);
+std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms, const IgtlLayout& layout) {
+  return std::make_unique<IgtlDevice>(settings, reopen_backoff_ms, layout);
 }
 
 }  // namespace lungar::drivers

@@ -12,13 +12,12 @@
 #include <memory>
 
 #include "drivers/igtl/igtl_decoder.h"
-#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_device.h"
 
 namespace lungar::drivers {
 
-/// A device for [trackers.igtl]'s server, decoding with `layout` (make_igtl_layout(settings)). It never fails to
+/// A device for [trackers.igtl]'s server, decoding with `layout` (make_igtl_layout()). It never fails to
 /// start: an absent server is "disconnected".
-std::unique_ptr<TrackerDevice> igtl_create(const TrackerConfig& settings, const IgtlLayout& layout);
+std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms, const IgtlLayout& layout);
 
 }  // namespace lungar::drivers

@@ -13,7 +13,7 @@ namespace {
 
 class MockDevice final : public TrackerDevice {
  public:
-  MockDevice(const TrackerConfig& s, const ReportLayout& l) : reports_(s, l) {}
+  MockDevice(const MockConfig& s, const ReportLayout& l) : reports_(s, l) {}
 
   void run(TrackerCore& core, std::stop_token stop) override {
     using clock = std::chrono::steady_clock;
@@ -42,7 +42,7 @@ class MockDevice final : public TrackerDevice {
 
 }  // namespace
 
-std::unique_ptr<TrackerDevice> mock_create(const TrackerConfig& settings, const ReportLayout& layout) {
+std::unique_ptr<TrackerDevice> mock_create(const MockConfig& settings, const ReportLayout& layout) {
   return std::make_unique<MockDevice>(settings, layout);
 }
 

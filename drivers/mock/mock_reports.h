@@ -11,17 +11,17 @@
 
 #include "drivers/decode/encoder.h"
 #include "drivers/mock/mock_trajectory.h"
-#include "drivers/tracker/tracker_config.h"
+#include "drivers/mock/mock_settings.h"
 #include "drivers/trk/trk_format.h"
 
 namespace lungar::drivers {
 
 class MockReports {
  public:
-  /// Precondition: settings.mock_trajectory is a known trajectory.
-  MockReports(const TrackerConfig& settings, const ReportLayout& layout)
-      : trajectory_(settings.mock_trajectory), rate_hz_(settings.mock_rate_hz), noise_mm_(settings.mock_noise_mm),
-        dropout_(settings.mock_dropout), layout_(layout), noise_(0.0, noise_mm_ > 0 ? noise_mm_ : 1.0) {}
+  /// Precondition: settings.trajectory is a known trajectory.
+  MockReports(const MockConfig& settings, const ReportLayout& layout)
+      : trajectory_(settings.trajectory), rate_hz_(settings.rate_hz), noise_mm_(settings.noise_mm),
+        dropout_(settings.dropout), layout_(layout), noise_(0.0, noise_mm_ > 0 ? noise_mm_ : 1.0) {}
 
   double rate_hz() const { return rate_hz_; }
   const std::string& trajectory() const { return trajectory_; }

@@ -44,7 +44,7 @@ Result<PlusReplay> plus_replay(const PlusSequence& seq, const TrackerConfig& set
   }
   const bool synthesise_patient = relative_to_reference && named.igtl.patient.empty();
   if (synthesise_patient) named.igtl.patient = "ReferenceToReference";
-  auto layout = make_igtl_layout(named);
+  auto layout = make_igtl_layout(named.igtl, named);
   if (!layout) return layout.with_context(path + ": ");
   PlusReplay out;
   out.layout = *layout;

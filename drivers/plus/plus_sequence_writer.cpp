@@ -90,7 +90,7 @@ Result<PlusSequence> plus_from_trk(const TrkLog& log, const std::string& path, c
   if (!trackers) return trackers.with_context("");
   auto layout = make_layout(*trackers);
   if (!layout) return layout.with_context(path + ": report layout: ");
-  auto igtl_layout = make_igtl_layout(*trackers);
+  auto igtl_layout = make_igtl_layout(trackers->igtl, *trackers);
   if (!igtl_layout) return igtl_layout.with_context(path + ": ");
   const RecordDecoder igtl = igtl_record_decoder(*igtl_layout);
   const PlusConfig& names = trackers->plus;

@@ -51,7 +51,7 @@ std::string sensor_rates(const TrkLog& log, const std::string& file) {
   auto settings = settings_for(log, file, {});
   if (!settings) return "";
   auto layout = make_layout(*settings);
-  auto igtl_layout = make_igtl_layout(*settings);
+  auto igtl_layout = make_igtl_layout(settings->igtl, *settings);
   if (!layout || !igtl_layout) return "";
   struct Seen {
     std::size_t count = 0;
@@ -125,7 +125,7 @@ int dump(const std::string& file, const std::string& format, const std::vector<s
   if (!settings) return die(settings.error());
   auto layout = make_layout(*settings);
   if (!layout) return die(file + ": " + layout.error());
-  auto igtl_layout = make_igtl_layout(*settings);
+  auto igtl_layout = make_igtl_layout(settings->igtl, *settings);
   if (!igtl_layout) return die(file + ": " + igtl_layout.error());
   const bool csv = format == "csv";
   if (csv) std::printf("record,t_arrival_ns,t_device_ns,role,status,x_mm,y_mm,z_mm,qw,qx,qy,qz\n");
@@ -211,25 +211,25 @@ int synth(const std::string& out, const std::vector<std::string>& config_paths, 
     if (!r) return die(r.error());
     t = *r;
   }
-  if (!trajectory.empty()) t.mock_trajectory = trajectory;
-  if (rate_hz > 0) t.mock_rate_hz = rate_hz;
-  t.mock_noise_mm = noise_mm;
-  t.mock_dropout = dropout;
-  if (!mock_pose(t.mock_trajectory, Role::Head, 0)) {
-    return die(unknown_trajectory("--trajectory", t.mock_trajectory));
+  if (!trajectory.empty()) t.mock.trajectory = trajectory;
+  if (rate_hz > 0) t.mock.rate_hz = rate_hz;
+  t.mock.noise_mm = noise_mm;
+  t.mock.dropout = dropout;
+  if (!mock_pose(t.mock.trajectory, Role::Head, 0)) {
+    return die(unknown_trajectory("--trajectory", t.mock.trajectory));
   }
   auto layout = make_layout(t);
   if (!layout) return die(layout.error());
   TrkHeader h;
-  h.description = "source=synth\ntrajectory=" + t.mock_trajectory + "\nrate_hz=" + std::to_string(t.mock_rate_hz) +
+  h.description = "source=synth\ntrajectory=" + t.mock.trajectory + "\nrate_hz=" + std::to_string(t.mock.rate_hz) +
                   "\nseconds=" + std::to_string(seconds) + "\nnoise_mm=" + std::to_string(noise_mm) +
                   "\ndropout=" + std::to_string(dropout) + "\n";
   h.layout_toml = tracker_config_to_toml(t);
   TrkWriter w;
   if (Status s = w.open(out, h, TrkWriter::Mode::Atomic); !s) return die(s.error());
-  MockReports reports(t, *layout);
-  const auto ticks = static_cast<std::int64_t>(seconds * t.mock_rate_hz);
-  const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / t.mock_rate_hz);
+  MockReports reports(t.mock, *layout);
+  const auto ticks = static_cast<std::int64_t>(seconds * t.mock.rate_hz);
+  const std::int64_t period_ns = static_cast<std::int64_t>(1e9 / t.mock.rate_hz);
   Status written;
   for (std::int64_t k = 0; k < ticks && written; ++k) {
     // Arrival times start at 1 s, a report's own period apart, as if read on time.

@@ -21,7 +21,7 @@ namespace lungar::drivers {
 
 class TrackerCore {
  public:
-  TrackerCore(const ReportLayout& layout, const TrackerConfig& settings, TrackerOptions options);
+  TrackerCore(const ReportLayout& layout, double stale_ms, TrackerOptions options);
 
   /// Opens the --record log with the device's description in its header.
   Status start_recording(const std::string& path, const std::string& description, TrkSource source);

@@ -54,10 +54,10 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
                                                    const IgtlLayout& igtl_layout, bool& layout_differs) {
   switch (settings.source) {
     case TrackerSource::Mock:
-      if (!mock_pose(settings.mock_trajectory, Role::Head, 0.0)) {
-        return fail(unknown_trajectory("trackers.mock_trajectory", settings.mock_trajectory));
+      if (!mock_pose(settings.mock.trajectory, Role::Head, 0.0)) {
+        return fail(unknown_trajectory("trackers.mock_trajectory", settings.mock.trajectory));
       }
-      return mock_create(settings, layout);
+      return mock_create(settings.mock, layout);
     case TrackerSource::Replay: {
       if (is_plus_sequence_path(settings.replay_file)) return plus_device(settings);
       Result<TrkLog> log = load_trk(settings.replay_file);
@@ -80,10 +80,10 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
     case TrackerSource::Hid: {
       static std::once_flag init;  // hid_init is not thread-safe; once per process
       std::call_once(init, [] { hid_init(); });
-      return hid_create(settings);
+      return hid_create(settings.hid, settings.reopen_backoff_ms);
     }
     case TrackerSource::Igtl:
-      return igtl_create(settings, igtl_layout);
+      return igtl_create(settings.igtl, settings.reopen_backoff_ms, igtl_layout);
   }
   return fail("trackers.source: expected " + kTrackerSourceNames.expected());
 }
@@ -93,14 +93,14 @@ Result<std::unique_ptr<TrackerDevice>> make_device(const TrackerConfig& settings
 Result<std::unique_ptr<Tracker>> make_tracker(const TrackerConfig& settings, const TrackerOptions& options) {
   Result<ReportLayout> layout = make_layout(settings);
   if (!layout) return layout.with_context("tracker report layout: ");
-  auto igtl_layout = make_igtl_layout(settings);  // for replay too: a log may hold OpenIGTLink messages
+  auto igtl_layout = make_igtl_layout(settings.igtl, settings);  // for replay too: a log may hold OpenIGTLink messages
   if (!igtl_layout) return igtl_layout.with_context("tracker: ");
   bool layout_differs = false;
   auto device = make_device(settings, *layout, *igtl_layout, layout_differs);
   if (!device) return device.with_context("");
   TrackerOptions opts = options;
   opts.record_layout_toml = tracker_config_to_toml(settings);
-  auto core = std::make_unique<TrackerCore>(*layout, settings, opts);
+  auto core = std::make_unique<TrackerCore>(*layout, settings.stale_ms, opts);
   if (!options.record_path.empty()) {
     Status recording =
         core->start_recording(options.record_path, (*device)->trk_description(), (*device)->trk_source());

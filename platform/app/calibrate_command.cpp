@@ -11,6 +11,7 @@
 #include "drivers/plus/plus_replay.h"
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/replay/recorded_trackers.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/app/settings_load.h"
@@ -26,7 +27,7 @@ Result<std::optional<drivers::TrackerConfig>> config_trackers(const std::vector<
   if (config_paths.empty()) return std::optional<drivers::TrackerConfig>{};
   auto s = load_settings(config_paths);
   if (!s) return s.with_context("");
-  return std::optional<drivers::TrackerConfig>(s->trackers);
+  return std::optional<drivers::TrackerConfig>(s->trackers());
 }
 
 Eigen::Vector3d tip_of(const drivers::TrackerConfig& t) {

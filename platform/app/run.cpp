@@ -13,6 +13,7 @@
 #include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/breath/trace/clearest_trace.h"
 #include "drivers/classroom/classroom_station.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/demo_asset.h"
 #include "platform/app/join_classroom.h"
@@ -125,10 +126,10 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   auto chosen = breath::choose_breath_source(breath, t0);  // a live marker's feed exists before its tracker
   if (!chosen) return chosen.with_context(where);
   topts.on_sample = chosen->tracker_tap();
-  auto made = drivers::make_tracker(s.trackers, topts);
+  auto made = drivers::make_tracker(s.trackers(), topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
-  if (s.trackers.source == drivers::TrackerSource::Mock &&
+  if (s.trackers().source == drivers::TrackerSource::Mock &&
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), shared_script, t0);
   }
@@ -291,7 +292,7 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
   int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok(), s.sim.pathologies);
   if (tracker_record_path(o.record_path) != o.record_path) {
     runtime->reset();  // the tracker closes its log first
-    auto plus = finish_plus_recording(o.record_path, s.trackers);
+    auto plus = finish_plus_recording(o.record_path, s.trackers());
     log_line(plus ? *plus : "error: " + plus.error());
     if (!plus) exit_code = 1;
   }

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "config/base/clock.h"
+#include "drivers/tracker/tracker_config.h"
 #include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
@@ -195,8 +196,8 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   if (Status out = override_choice("--output", o.output, kOutputNames, s.display.output); !out) return out;
   if (o.fullscreen) s.display.output = Output::Fullscreen;
   if (o.headless) s.display.output = Output::Headless;
-  if (Status t = override_tracker(o.tracker, s.trackers); !t) return t;
-  if (o.replay_truncated) s.trackers.replay_truncated = true;
+  if (Status t = override_tracker(o.tracker, s.trackers()); !t) return t;
+  if (o.replay_truncated) s.trackers().replay_truncated = true;
   if (Status v = override_view(o.view, s); !v) return v;
   if (Status m = override_choice("--mode", o.mode, render::kDrawModeNames, s.render.mode); !m) return m;
   if (Status d = override_choice("--deform", o.deform, kDeformNames, s.render.deform); !d) return d;

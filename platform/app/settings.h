@@ -7,17 +7,21 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "config/base/enum_names.h"
 #include "config/breathing_settings.h"
 #include "drivers/classroom/sync_settings.h"
-#include "drivers/tracker/tracker_config.h"
 #include "platform/output/output_settings.h"
 #include "platform/runtime/runtime_config.h"
 #include "render/draw_modes.h"
 #include "sim/force/force_sh.h"
+
+namespace lungar::drivers {
+struct TrackerConfig;  // drivers/tracker/tracker_config.h: [trackers], every device's table
+}  // namespace lungar::drivers
 
 namespace lungar::platform {
 
@@ -61,16 +65,31 @@ struct SimSettings {
 };
 
 /// The whole tree. `source` names the file it came from ("<defaults>" when none).
+///
+/// [trackers] is held behind a pointer, a value all the same (copied with the rest): the settings are seen by
+/// some thirty files (outputs, the bench, the doctor's checks) that never touch a tracker, and the trackers' table
+/// composes every device's settings. Only the files that call trackers() include drivers/tracker/tracker_config.h.
+/// A move copies (settings are copied a few times at start, never per frame), so trackers() is never null.
 struct Settings {
+  Settings();
+  ~Settings();
+  Settings(const Settings& other);
+  Settings& operator=(const Settings& other);
+
+  drivers::TrackerConfig& trackers() { return *trackers_; }
+  const drivers::TrackerConfig& trackers() const { return *trackers_; }
+
   DisplaySettings display;
   HmdSettings hmd;
   RenderSettings render;
   config::BreathingSettings breathing;
-  drivers::TrackerConfig trackers;
   RegistrationSettings registration;
   SimSettings sim;
   classroom::SyncSettings sync;
   std::string source = "<defaults>";
+
+ private:
+  std::unique_ptr<drivers::TrackerConfig> trackers_;  ///< never null
 };
 
 }  // namespace lungar::platform

@@ -10,6 +10,7 @@
 #include "config/toml_layers.h"
 #include "config/toml_section.h"
 #include "drivers/breath/breath_factory/breath_factory.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_config_toml.h"
 #include "sim/pathology/pathology.h"
 
@@ -82,7 +83,7 @@ Result<Settings> read_tree(const toml::table& tree, const std::string& name) {
     read_render(top.section("render"), s.render);
     config::read_breathing_settings(top.section("breathing"), s.breathing);
     TomlSection trackers = top.section("trackers");
-    drivers::visit(trackers, s.trackers);
+    drivers::visit(trackers, s.trackers());
     read_registration(top.section("registration"), s.registration);
     read_sim(top.section("sim"), s.sim);
     classroom::read_sync_settings(top.section("sync"), s.sync);
@@ -103,7 +104,7 @@ void resolve_relative_paths(const toml::table& tree, Settings& s) {
   };
   resolve("breathing.scenario", s.breathing.scenario);
   if (names_a_file(s.breathing.source)) resolve("breathing.source", s.breathing.source);
-  resolve("trackers.replay_file", s.trackers.replay_file);
+  resolve("trackers.replay_file", s.trackers().replay_file);
   resolve("sim.asset", s.sim.asset);
   resolve("sync.cyclonedds_xml", s.sync.cyclonedds_xml);
   resolve("sync.security", s.sync.security);
@@ -149,8 +150,8 @@ std::string summarize(const Settings& s, const config::Scenario* scenario) {
     << b.tidal_volume_ml << " mL"
     << (scenario ? " (the scenario " + (scenario->name.empty() ? scenario->source : scenario->name) + "'s start)"
                  : std::string())
-    << ", tracker " << drivers::to_string(s.trackers.source)
-    << (s.trackers.source == drivers::TrackerSource::Mock ? " (" + s.trackers.mock_trajectory + ")" : std::string())
+    << ", tracker " << drivers::to_string(s.trackers().source)
+    << (s.trackers().source == drivers::TrackerSource::Mock ? " (" + s.trackers().mock.trajectory + ")" : std::string())
     << ", orientation " << sim::to_string(s.sim.orientation_mode);
   return o.str();
 }

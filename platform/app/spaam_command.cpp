@@ -11,6 +11,7 @@
 #include "config/base/clock.h"
 #include "config/base/log_line.h"
 #include "config/config_paths.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker_factory/tracker_factory.h"
 #include "platform/app/open_output.h"
 #include "platform/app/settings_load.h"
@@ -108,9 +109,9 @@ int run_spaam_calibration(const CalibrateDisplayOptions& o) {
   if (!settings) return calibrate_display_say(settings.error()), 2;
   drivers::TrackerOptions topts;
   topts.log = [](const std::string& line) { lungar::log_line("tracker", line); };
-  auto tracker = drivers::make_tracker(settings->trackers, topts);
+  auto tracker = drivers::make_tracker(settings->trackers(), topts);
   if (!tracker) return calibrate_display_say("tracker: " + tracker.error()), 2;
-  const auto& tip = settings->trackers.stylus.tip_offset_mm;
+  const auto& tip = settings->trackers().stylus.tip_offset_mm;
   SpaamPoint point{drivers::Role::Stylus, o.stylus_tip_mm.value_or(Eigen::Vector3d(tip[0], tip[1], tip[2]))};
   if (o.fiducial_mm) point = {drivers::Role::Patient, *o.fiducial_mm};
   auto output = open_output(*settings, calibrate_display_say);

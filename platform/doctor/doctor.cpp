@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "drivers/tracker/tracker_config.h"
 #include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"
 
@@ -22,7 +23,7 @@ std::vector<Check> run_checks(const RuntimeOptions& o, const DoctorEnv& env) {
   checks.push_back(check_config(choice, loaded));
   checks.push_back(check_gles());
   checks.push_back(check_output(s, env));
-  checks.push_back(check_tracker(s.trackers, env));
+  checks.push_back(check_tracker(s.trackers(), env));
   checks.push_back(check_asset(s, env, o.procedural));
   checks.push_back(check_classroom(s));
   checks.push_back(check_disk(env));

@@ -19,6 +19,7 @@
 
 #include "drivers/hid/hid_interface.h"
 #include "drivers/igtl/tcp_socket.h"
+#include "drivers/tracker/tracker_config.h"
 #include "drivers/trk/trk_reader.h"
 #include "platform/doctor/checks.h"
 
@@ -125,7 +126,7 @@ Check igtl_server_check(const drivers::IgtlConfig& g) {
 Check check_tracker(const drivers::TrackerConfig& t, const DoctorEnv& env) {
   switch (t.source) {
     case drivers::TrackerSource::Mock:
-      return passed("tracker", "mock (" + t.mock_trajectory + "): no device needed");
+      return passed("tracker", "mock (" + t.mock.trajectory + "): no device needed");
     case drivers::TrackerSource::Replay: {
       const auto log = drivers::load_trk(t.replay_file);
       if (!log) {

@@ -12,6 +12,7 @@
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/report_layout.h"
 #include "drivers/mock/mock_reports.h"
+#include "drivers/tracker/tracker_config.h"
 
 namespace {
 
@@ -34,7 +35,7 @@ const Reports& reports() {
     }
     Reports out;
     out.layout = *made;
-    MockReports mock(settings, out.layout);
+    MockReports mock(settings.mock, out.layout);
     for (int k = 0; k < kTicks; ++k) {
       mock.tick(k, [&](std::span<const std::uint8_t> bytes) { out.valid.emplace_back(bytes.begin(), bytes.end()); });
     }

@@ -11,6 +11,7 @@
 
 #include "drivers/decode/decoder.h"
 #include "drivers/decode/encoder.h"
+#include "drivers/tracker/tracker_config.h"
 
 using namespace lungar;
 using namespace lungar::drivers;

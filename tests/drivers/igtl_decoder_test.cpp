@@ -9,6 +9,7 @@
 
 #include "drivers/igtl/igtl_decoder.h"
 #include "drivers/igtl/igtl_messages.h"
+#include "drivers/tracker/tracker_config.h"
 
 using namespace lungar;
 using namespace lungar::drivers;
@@ -42,7 +43,7 @@ void expect_pose(const PoseSample& got, Role role, const Sent& want, double scal
 }
 
 IgtlLayout layout(const TrackerConfig& t = {}) {
-  auto l = make_igtl_layout(t);
+  auto l = make_igtl_layout(t.igtl, t);
   EXPECT_TRUE(l) << l.error();
   return l ? *l : IgtlLayout{};
 }
@@ -178,17 +179,17 @@ TEST(IgtlDecode, HeaderInfoSaysWhichBodiesAreWorthReading) {
 TEST(IgtlDecode, LayoutErrorsNameTheKey) {
   TrackerConfig t;
   t.igtl.head = "ThisNameIsLongerThan20";
-  EXPECT_EQ(make_igtl_layout(t).error(),
+  EXPECT_EQ(make_igtl_layout(t.igtl, t).error(),
             "trackers.igtl.head: expected at most 20 characters, got \"ThisNameIsLongerThan20\"");
   t = {};
   t.axis_remap = "x,y";
-  EXPECT_EQ(make_igtl_layout(t).error(), "trackers.axis_remap: expected a signed permutation of x,y,z");
+  EXPECT_EQ(make_igtl_layout(t.igtl, t).error(), "trackers.axis_remap: expected a signed permutation of x,y,z");
   for (double scale : {0.0, 1e7}) {  // each end of the range is outside it
     t = {};
     t.igtl.scale = scale;
-    EXPECT_EQ(make_igtl_layout(t).error(), "trackers.igtl.scale: expected a positive scale") << scale;
+    EXPECT_EQ(make_igtl_layout(t.igtl, t).error(), "trackers.igtl.scale: expected a positive scale") << scale;
   }
   t = {};
   t.igtl.rigid_tolerance = 0.0;
-  EXPECT_EQ(make_igtl_layout(t).error(), "trackers.igtl.rigid_tolerance: expected a positive tolerance");
+  EXPECT_EQ(make_igtl_layout(t.igtl, t).error(), "trackers.igtl.rigid_tolerance: expected a positive tolerance");
 }

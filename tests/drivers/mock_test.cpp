@@ -8,6 +8,7 @@
 #include "drivers/decode/decoder.h"
 #include "drivers/mock/mock_reports.h"
 #include "drivers/mock/mock_trajectory.h"
+#include "drivers/tracker/tracker_config.h"
 
 using namespace lungar;
 using namespace lungar::drivers;
@@ -44,14 +45,14 @@ TEST(MockReports, DecodeBackToTheTrajectory) {
   TrackerConfig t;
   t.stylus.enabled = true;
   const ReportLayout l = *make_layout(t);
-  MockReports reports(t, l);
+  MockReports reports(t.mock, l);
   int n = 0;
   for (std::int64_t k = 0; k < 400; k += 37) {
     reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
       const DecodedReport d = decode_report(bytes, l);
       ASSERT_EQ(d.error, DecodeError::None);
       ASSERT_EQ(d.count, 1);
-      const auto want = *mock_pose(t.mock_trajectory, d.poses[0].role, static_cast<double>(k) / t.mock_rate_hz);
+      const auto want = *mock_pose(t.mock.trajectory, d.poses[0].role, static_cast<double>(k) / t.mock.rate_hz);
       for (int i = 0; i < 3; ++i) EXPECT_NEAR(d.poses[0].position_mm[i], want.position_mm[i], 0.005);
       EXPECT_LT(d.poses[0].orientation().angularDistance(want.orientation()), 2e-4);
       EXPECT_EQ(d.device_ticks, static_cast<std::uint32_t>(std::llround(k * 16000.0)));
@@ -63,9 +64,9 @@ TEST(MockReports, DecodeBackToTheTrajectory) {
 
 TEST(MockReports, DropoutDropsAboutTheConfiguredShare) {
   TrackerConfig t;
-  t.mock_dropout = 0.25;
+  t.mock.dropout = 0.25;
   const ReportLayout l = *make_layout(t);
-  MockReports reports(t, l);
+  MockReports reports(t.mock, l);
   int n = 0;
   for (std::int64_t k = 0; k < 2000; ++k) reports.tick(k, [&](std::span<const std::uint8_t>) { ++n; });
   EXPECT_NEAR(n / 4000.0, 0.75, 0.03);  // 4000 reports offered; binomial sigma ~0.007

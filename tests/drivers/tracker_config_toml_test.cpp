@@ -75,10 +75,10 @@ void equal_keys(const toml::table& a, const toml::table& b, const std::string& p
 TrackerConfig every_key_changed() {
   TrackerConfig t;
   t.source = TrackerSource::Replay;
-  t.mock_trajectory = "head_orbit";
-  t.mock_rate_hz = 100.0 + 1.0 / 3.0;
-  t.mock_noise_mm = 0.1 + 0.2;
-  t.mock_dropout = 0.25;
+  t.mock.trajectory = "head_orbit";
+  t.mock.rate_hz = 100.0 + 1.0 / 3.0;
+  t.mock.noise_mm = 0.1 + 0.2;
+  t.mock.dropout = 0.25;
   t.replay_file = "logs/a \"quoted\" \\ back\tslash.trk";
   t.replay_realtime = false;
   t.replay_loop = true;
@@ -175,8 +175,8 @@ TEST(TrackerConfigToml, AConfigWithEveryKeyChangedRoundTrips) {
   EXPECT_EQ(back->hid.serial, c.hid.serial);
   EXPECT_EQ(back->replay_file, c.replay_file);
   EXPECT_EQ(back->hid.init_feature_reports, c.hid.init_feature_reports);
-  EXPECT_EQ(back->mock_rate_hz, c.mock_rate_hz);  // exactly: every digit written
-  EXPECT_EQ(back->mock_noise_mm, c.mock_noise_mm);
+  EXPECT_EQ(back->mock.rate_hz, c.mock.rate_hz);  // exactly: every digit written
+  EXPECT_EQ(back->mock.noise_mm, c.mock.noise_mm);
   EXPECT_EQ(tracker_config_to_toml(*back), written);
 }
 

@@ -105,7 +105,7 @@ TEST(Tracker, MockStreamsGoesStaleWhenStoppedAndRecordsWhatItRead) {
   std::filesystem::create_directories(dir);
   const std::string rec = (dir / "mock.trk").string();
   TrackerConfig t;
-  t.mock_rate_hz = 200;  // many reports quickly
+  t.mock.rate_hz = 200;  // many reports quickly
   t.stale_ms = 50;
   TrackerOptions o = quiet();
   o.record_path = rec;
@@ -189,7 +189,7 @@ TEST(Tracker, BadSettingsAreOneLineErrors) {
   EXPECT_EQ(make_tracker(t, quiet()).error(),
             "/nonexistent/x.trk: cannot open the tracker log: expected a readable .trk file");
   t = {};
-  t.mock_trajectory = "somersault";
+  t.mock.trajectory = "somersault";
   EXPECT_EQ(make_tracker(t, quiet()).error(),
             "trackers.mock_trajectory: expected static | upright_to_supine | head_orbit | bedside, got \"somersault\"");
   t = {};
@@ -277,7 +277,7 @@ TEST(Tracker, AReplayedLogMadeWithAnotherLayoutSaysSo) {
 // reports k / rate seconds apart in ticks of 10 us, and the samples come out k / rate seconds apart.
 TEST(Tracker, DeviceTimeIsCountedInTheLayoutsTick) {
   TrackerConfig t;
-  t.mock_rate_hz = 250;
+  t.mock.rate_hz = 250;
   t.report.time_tick_us = 10.0;
   std::mutex m;
   std::vector<std::int64_t> times;
@@ -302,7 +302,7 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   auto loaded = drivers::tracker_config_from_file(std::string(LUNGAR_SOURCE_DIR) + "/config/trackers/sparkfun-9dof-razor.toml");
   ASSERT_TRUE(loaded) << loaded.error();
   TrackerConfig t = *loaded;
-  t.mock_trajectory = "head_orbit";
+  t.mock.trajectory = "head_orbit";
   const auto layout = make_layout(t);
   ASSERT_TRUE(layout) << layout.error();
   const auto path = std::filesystem::temp_directory_path() / ("lungar_imu_" + std::to_string(::getpid()) + ".trk");
@@ -310,7 +310,7 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   TrkHeader h;
   h.layout_toml = tracker_config_to_toml(t);
   ASSERT_EQ(w.open(path.string(), h, TrkWriter::Mode::Atomic).error(), "");
-  MockReports reports(t, *layout);
+  MockReports reports(t.mock, *layout);
   for (std::int64_t k = 0; k < 50; ++k) {
     reports.tick(k, [&](std::span<const std::uint8_t> bytes) {
       ASSERT_TRUE(w.append(TrkSource::Synth, k * 16'000'000, bytes));
@@ -333,7 +333,7 @@ TEST(Tracker, ReplayOfAnOrientationOnlyLogKeepsTheFixedPosition) {
   for (std::size_t k = 0; k < got.size(); ++k) {
     SCOPED_TRACE(k);
     EXPECT_EQ(got[k].position_mm, t.head.fixed_position_mm);
-    const PoseSample want = *mock_pose("head_orbit", Role::Head, static_cast<double>(k) / t.mock_rate_hz);
+    const PoseSample want = *mock_pose("head_orbit", Role::Head, static_cast<double>(k) / t.mock.rate_hz);
     EXPECT_LT(got[k].orientation().angularDistance(want.orientation()), 1e-6);
   }
 }

@@ -414,7 +414,7 @@ TEST(CalibrationSteps, EachStepReadsTheLastOnesOutputThroughAnotherConfigAsItsHi
   auto s = platform::load_settings(files);
   ASSERT_TRUE(s) << s.error();
   EXPECT_EQ(s->render.point_size_px, 3.0);
-  const auto& tip = s->trackers.stylus.tip_offset_mm;
+  const auto& tip = s->trackers().stylus.tip_offset_mm;
   EXPECT_LT((Eigen::Vector3d(tip[0], tip[1], tip[2]) - stylus.tip).norm(), 0.3);
   EXPECT_LT(Eigen::Vector3d(s->registration.translation_mm.data()).norm(), 1.0);
 }

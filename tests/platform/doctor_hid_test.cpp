@@ -14,6 +14,7 @@
 #include <fstream>
 #include <string>
 
+#include "drivers/tracker/tracker_config.h"
 #include "platform/doctor/checks.h"
 #include "tests/scratch_dir.h"
 #include "umockdev_tracker.h"

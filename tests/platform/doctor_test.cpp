@@ -12,6 +12,7 @@
 
 #include "config/config_paths.h"
 #include "drivers/igtl/tcp_socket.h"
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/demo_asset.h"
 #include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"

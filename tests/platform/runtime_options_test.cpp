@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/runtime_options.h"
 
 using lungar::platform::apply_overrides;
@@ -34,9 +35,9 @@ TEST(RuntimeOptions, OverridesLandOnTheirSettings) {
             "");
   lungar::platform::Settings s;
   ASSERT_TRUE(apply_overrides(o, s).ok());
-  EXPECT_EQ(s.trackers.source, lungar::drivers::TrackerSource::Replay);
-  EXPECT_EQ(s.trackers.replay_file, "logs/turn.trk");
-  EXPECT_FALSE(s.trackers.replay_truncated) << "a truncated log is refused unless asked";
+  EXPECT_EQ(s.trackers().source, lungar::drivers::TrackerSource::Replay);
+  EXPECT_EQ(s.trackers().replay_file, "logs/turn.trk");
+  EXPECT_FALSE(s.trackers().replay_truncated) << "a truncated log is refused unless asked";
   EXPECT_EQ(s.hmd.view, lungar::platform::View::Mono);
   EXPECT_EQ(s.render.mode, lungar::render::DrawMode::Mesh);
   EXPECT_EQ(s.render.deform, lungar::platform::Deform::Cpu1);
@@ -68,19 +69,19 @@ TEST(RuntimeOptions, IgtlTrackerTakesHostAndPortWhereGiven) {
   RuntimeOptions o;
   o.tracker = "igtl:192.168.1.20:18945";
   ASSERT_TRUE(apply_overrides(o, s));
-  EXPECT_EQ(s.trackers.source, lungar::drivers::TrackerSource::Igtl);
-  EXPECT_EQ(s.trackers.igtl.host, "192.168.1.20");
-  EXPECT_EQ(s.trackers.igtl.port, 18945);
+  EXPECT_EQ(s.trackers().source, lungar::drivers::TrackerSource::Igtl);
+  EXPECT_EQ(s.trackers().igtl.host, "192.168.1.20");
+  EXPECT_EQ(s.trackers().igtl.port, 18945);
   lungar::platform::Settings d;
   o.tracker = "igtl:plus.lab";  // the config's port (18944 by default)
   ASSERT_TRUE(apply_overrides(o, d));
-  EXPECT_EQ(d.trackers.igtl.host, "plus.lab");
-  EXPECT_EQ(d.trackers.igtl.port, 18944);
+  EXPECT_EQ(d.trackers().igtl.host, "plus.lab");
+  EXPECT_EQ(d.trackers().igtl.port, 18944);
   lungar::platform::Settings e;
   o.tracker = "igtl";  // host and port from the config
   ASSERT_TRUE(apply_overrides(o, e));
-  EXPECT_EQ(e.trackers.source, lungar::drivers::TrackerSource::Igtl);
-  EXPECT_EQ(e.trackers.igtl.host, "127.0.0.1");
+  EXPECT_EQ(e.trackers().source, lungar::drivers::TrackerSource::Igtl);
+  EXPECT_EQ(e.trackers().igtl.host, "127.0.0.1");
 }
 
 TEST(RuntimeOptions, BadValuesAreNamed) {
@@ -142,5 +143,5 @@ TEST(RuntimeOptions, ReplayTruncatedAsksForATruncatedLogToBeReplayed) {
   ASSERT_EQ(parse({"--tracker", "replay:cut.trk", "--replay-truncated"}, o), "");
   lungar::platform::Settings s;
   ASSERT_TRUE(apply_overrides(o, s));
-  EXPECT_TRUE(s.trackers.replay_truncated);
+  EXPECT_TRUE(s.trackers().replay_truncated);
 }

@@ -12,6 +12,7 @@
 
 #include "drivers/plus/plus_sequence.h"
 #include "drivers/plus/plus_sequence_writer.h"
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/run.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
@@ -114,7 +115,7 @@ TEST_F(RuntimeRun, TheMockPatientTurnsSupineWhileTheLungsBreatheTheirTidalVolume
   EXPECT_NEAR(j["frames"].get<double>() * j["frame_ms_mean"].get<double>() * 1e-3, j["wall_s"].get<double>(),
               0.05 * j["wall_s"].get<double>());
   EXPECT_NEAR(j["wall_s"].get<double>(), 5.6, 0.5);
-  EXPECT_GT(j["tracker_rate_hz"].get<double>(), 0.8 * 2 * settings.trackers.mock_rate_hz);  // head and patient
+  EXPECT_GT(j["tracker_rate_hz"].get<double>(), 0.8 * 2 * settings.trackers().mock.rate_hz);  // head and patient
 }
 
 TEST_F(RuntimeRun, LyingOnTheLeftSideTheLeftLungTakesMoreOfEachBreath) {
@@ -392,9 +393,9 @@ TEST_F(RuntimeRun, ALiveChestMarkerDrivesTheBreathAlongTheAxisItFinds) {
   }
   const std::string path = (dir / "chest.igs.mha").string();
   ASSERT_TRUE(drivers::write_plus_sequence(path, seq));
-  settings.trackers.source = drivers::TrackerSource::Replay;
-  settings.trackers.replay_file = path;
-  settings.trackers.replay_realtime = true;  // the breath is followed on the run's clock
+  settings.trackers().source = drivers::TrackerSource::Replay;
+  settings.trackers().replay_file = path;
+  settings.trackers().replay_realtime = true;  // the breath is followed on the run's clock
   options.breath_paths = {"marker:stylus"};
   options.frames.reset();
   options.seconds = 17.0;
@@ -412,9 +413,9 @@ TEST_F(RuntimeRun, ALiveChestMarkerDrivesTheBreathAlongTheAxisItFinds) {
 }
 
 TEST_F(RuntimeRun, ReplayDrivesTheLoopUntilTheLogEnds) {
-  settings.trackers.source = drivers::TrackerSource::Replay;
-  settings.trackers.replay_file = kData + "upright_to_supine.trk";
-  settings.trackers.replay_realtime = false;
+  settings.trackers().source = drivers::TrackerSource::Replay;
+  settings.trackers().replay_file = kData + "upright_to_supine.trk";
+  settings.trackers().replay_realtime = false;
   options.frames = 100000;  // the end of the log stops it
   options.seconds = 60.0;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
@@ -443,9 +444,9 @@ TEST_F(RuntimeRun, EmphysemaBreathesWithTheEmphysemaPresetUnlessTheBreathingWasC
 TEST_F(RuntimeRun, ARecordingAsAPlusSequenceHoldsEveryReportAndReplays) {
   std::filesystem::create_directories(dir);
   const std::string recording = (dir / "session.igs.mha").string();
-  settings.trackers.source = drivers::TrackerSource::Replay;
-  settings.trackers.replay_file = kData + "upright_to_supine.trk";
-  settings.trackers.replay_realtime = false;
+  settings.trackers().source = drivers::TrackerSource::Replay;
+  settings.trackers().replay_file = kData + "upright_to_supine.trk";
+  settings.trackers().replay_realtime = false;
   options.frames = 100000;
   options.seconds = 60.0;
   options.record_path = recording;
@@ -456,7 +457,7 @@ TEST_F(RuntimeRun, ARecordingAsAPlusSequenceHoldsEveryReportAndReplays) {
   EXPECT_EQ(seq->frames.size(), 750u);
   ASSERT_NE(seq->frames.back().find("Reference"), nullptr);
   options.record_path.clear();
-  settings.trackers.replay_file = recording;
+  settings.trackers().replay_file = recording;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   EXPECT_EQ(stats()["tracker_malformed"], 0);
   EXPECT_GT(stats()["tracker_reports"].get<int>(), 750);  // a report per valid tool in each frame
@@ -490,8 +491,8 @@ TEST_F(RuntimeRun, BadInputsFailCleanlyWithoutOutputs) {
   EXPECT_EQ(platform::run_runtime(settings, options), 1);
 
   settings.sim.asset = kData + "hil_lungs.lungbake";
-  settings.trackers.source = drivers::TrackerSource::Replay;
-  settings.trackers.replay_file = (dir / "missing.trk").string();
+  settings.trackers().source = drivers::TrackerSource::Replay;
+  settings.trackers().replay_file = (dir / "missing.trk").string();
   EXPECT_EQ(platform::run_runtime(settings, options), 1);
   EXPECT_FALSE(std::filesystem::exists(options.snapshot_path));
 }

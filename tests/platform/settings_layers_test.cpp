@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/settings_load.h"
 #include "tests/scratch_dir.h"
 
@@ -33,8 +34,8 @@ TEST(SettingsLayers, ALaterFileWinsKeyByKeyAndTablesMergeDeeply) {
   ASSERT_TRUE(s) << s.error();
   EXPECT_EQ(s->render.point_size_px, 3.0) << "a key only the first file sets stays";
   EXPECT_TRUE(s->render.hud) << "the later file's key wins";
-  EXPECT_TRUE(s->trackers.stylus.enabled) << "[trackers.stylus] of the second file merges into the first's";
-  EXPECT_EQ(s->trackers.stylus.tip_offset_mm, (std::array<double, 3>{1.5, -2.0, -150.0}));
+  EXPECT_TRUE(s->trackers().stylus.enabled) << "[trackers.stylus] of the second file merges into the first's";
+  EXPECT_EQ(s->trackers().stylus.tip_offset_mm, (std::array<double, 3>{1.5, -2.0, -150.0}));
   EXPECT_EQ(s->source, profile.string() + " + " + stylus.string() + " + " + later.string());
 }
 

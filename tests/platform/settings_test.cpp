@@ -8,6 +8,7 @@
 #include <string>
 
 #include "config/scenario_load.h"
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/settings_load.h"
 
 using lungar::platform::load_settings;
@@ -25,6 +26,25 @@ std::string error_of(const std::string& toml) {
 }
 
 }  // namespace
+
+// [trackers] sits behind a pointer in Settings (settings.h): a copy must still be a value, not a second name for
+// the same table, or a station's edited copy would change the settings it came from.
+TEST(Settings, ACopyHasItsOwnTrackersTable) {
+  auto loaded = load_settings_from_string("[trackers]\nsource = \"igtl\"\n[trackers.igtl]\nhost = \"plus.lab\"\n",
+                                          "copy.toml");
+  ASSERT_TRUE(loaded) << loaded.error();
+  Settings copy = *loaded;
+  EXPECT_EQ(copy.trackers(), loaded->trackers());
+  copy.trackers().igtl.host = "other.lab";
+  EXPECT_EQ(loaded->trackers().igtl.host, "plus.lab");
+
+  Settings assigned;
+  assigned = *loaded;
+  EXPECT_EQ(assigned.trackers().source, lungar::drivers::TrackerSource::Igtl);
+  assigned.trackers().source = lungar::drivers::TrackerSource::Mock;
+  EXPECT_EQ(loaded->trackers().source, lungar::drivers::TrackerSource::Igtl);
+  EXPECT_EQ(assigned.source, loaded->source);
+}
 
 TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   auto r = load_settings(kDefaultToml);
@@ -45,7 +65,7 @@ TEST(Settings, ShippedDefaultProfileMatchesBuiltInDefaults) {
   EXPECT_EQ(s.sync.classroom, d.sync.classroom);
   EXPECT_EQ(s.sync.domain, d.sync.domain);
   EXPECT_DOUBLE_EQ(s.sync.lost_after_ms, d.sync.lost_after_ms);
-  EXPECT_DOUBLE_EQ(s.trackers.stale_ms, d.trackers.stale_ms);
+  EXPECT_DOUBLE_EQ(s.trackers().stale_ms, d.trackers().stale_ms);
   EXPECT_EQ(s.registration.rotation_wxyz, d.registration.rotation_wxyz);
   EXPECT_EQ(s.registration.xr_space_translation_mm, d.registration.xr_space_translation_mm);
   EXPECT_EQ(s.registration.xr_space_rotation_wxyz, d.registration.xr_space_rotation_wxyz);
@@ -131,8 +151,8 @@ TEST(Settings, OpenXrOutputAndItsHead) {
 TEST(Settings, HexUsbIdsAreAccepted) {
   auto r = load_settings_from_string("[trackers.hid]\nvendor_id = 0x1234\nproduct_id = 0xBEEF\n", "x.toml");
   ASSERT_TRUE(r) << r.error();
-  EXPECT_EQ(r->trackers.hid.vendor_id, 0x1234);
-  EXPECT_EQ(r->trackers.hid.product_id, 0xBEEF);
+  EXPECT_EQ(r->trackers().hid.vendor_id, 0x1234);
+  EXPECT_EQ(r->trackers().hid.product_id, 0xBEEF);
 }
 
 TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
@@ -142,7 +162,7 @@ TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
   std::ofstream(file) << "[trackers]\nsource = \"replay\"\nreplay_file = \"../logs/a.trk\"\n";
   auto r = load_settings(file.string());
   ASSERT_TRUE(r) << r.error();
-  EXPECT_EQ(r->trackers.replay_file, (dir / "logs" / "a.trk").string());
+  EXPECT_EQ(r->trackers().replay_file, (dir / "logs" / "a.trk").string());
   // The breath's source: a trace file resolves the same way; "model" and a live marker are not paths.
   for (const auto& [given, read] : {std::pair<std::string, std::string>{"breath.vxp", (dir / "profiles" / "breath.vxp").string()},
                                     {"model", "model"},

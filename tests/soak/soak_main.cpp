@@ -148,11 +148,11 @@ int main(int argc, char** argv) {
   platform::Settings s;
   s.display.output = platform::Output::Headless;
   s.sim.asset = o.asset;
-  s.trackers = *layout;
-  s.trackers.source = drivers::TrackerSource::Hid;
-  s.trackers.hid = {};  // the emulated device below, not whichever the log's header names
-  s.trackers.hid.vendor_id = 0x1234;
-  s.trackers.hid.product_id = 0x5678;
+  s.trackers() = *layout;
+  s.trackers().source = drivers::TrackerSource::Hid;
+  s.trackers().hid = {};  // the emulated device below, not whichever the log's header names
+  s.trackers().hid.vendor_id = 0x1234;
+  s.trackers().hid.product_id = 0x5678;
   platform::RuntimeOptions ro;
   ro.seconds = o.minutes * 60.0;
   ro.stats_json_path = o.out + "/stats.json";

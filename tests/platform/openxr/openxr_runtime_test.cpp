@@ -17,6 +17,7 @@
 
 #include "config/base/clock.h"
 #include "drivers/mock/mock_trajectory.h"
+#include "drivers/tracker/tracker_config.h"
 #include "platform/app/open_output.h"
 #include "platform/app/run.h"
 #include "platform/openxr/xr_view_math.h"
@@ -36,7 +37,7 @@ class OpenXrRuntime : public ::testing::Test {
     std::filesystem::remove_all(dir_);
     settings_.sim.asset = kData + "hil_lungs.lungbake";
     settings_.display.output = platform::Output::OpenXr;
-    settings_.trackers.mock_trajectory = "static";
+    settings_.trackers().mock.trajectory = "static";
     options_.frames = 30;
     options_.snapshot_path = (dir_ / "shot.png").string();
     options_.stats_json_path = (dir_ / "stats.json").string();

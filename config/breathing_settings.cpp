@@ -13,9 +13,7 @@ void read_breathing_settings(TomlSection s, BreathingSettings& b) {
   s.text("source", b.source);
   s.choice("rpm_flagged", b.rpm_flagged, {"follow", "skip"});
   if (b.source.empty()) {
-    s.fail("source",
-           "expected \"model\", a trace file, \"marker:ROLE\", \"amm[@DOMAIN]\" or \"openice[:METRIC][@DOMAIN]\", "
-           "got \"\"");
+    s.fail("source", "expected " + breath_source_forms() + ", got \"\"");
   }
   s.finish();
 }

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "config/base/breath_source_names.h"
 #include "config/base/patient_names.h"
 #include "config/toml_section.h"
 
@@ -16,9 +17,10 @@ struct BreathingSettings {
   double ie_ratio = 0.5;          ///< inspiration : expiration time, 1:2 = 0.5
   double tidal_volume_ml = 500.0;
   std::string scenario;           ///< optional scenario TOML (relative to the config file)
-  /// What drives the breath: "model" (the above), a recorded trace (CSV or .vxp, relative to the config file) or
-  /// "marker:ROLE" (a chest marker tracked live); `lungar --breath` overrides it.
-  std::string source = "model";
+  /// What drives the breath (config/base/breath_source_names.h): "model" (the above), a recorded trace (CSV or .vxp,
+  /// relative to the config file), "marker:ROLE" (a chest marker tracked live) or a physiology source over DDS;
+  /// `lungar --breath` overrides it.
+  std::string source = kBreathSourceNames.name(BreathSource::Model);
   /// A Varian RPM trace's flagged samples (a negative validflag: RPM's gating verdict, the breath off its expected
   /// pattern or baseline, while the amplitude is still the patient's breathing): "follow" them (counted in
   /// breath_flagged_samples) or "skip" them, as a site that wants RPM's verdict may (the follower then holds and

@@ -11,8 +11,8 @@
 #include <Eigen/Geometry>
 
 #include "config/base/result.h"
-#include "drivers/pose/pose_sample.h"
 #include "drivers/decode/report_settings.h"
+#include "drivers/pose/pose_sample.h"
 
 namespace lungar::drivers {
 

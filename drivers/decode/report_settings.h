@@ -21,9 +21,12 @@ namespace lungar::drivers {
 /// How one number is stored in a report. None (position only): the report carries no position (an
 /// orientation-only sensor such as an HMD's IMU); each role then uses its fixed_position_mm.
 enum class FieldType { I16, I32, F32, Fixed16, Fixed32, None };
-inline constexpr EnumNames<FieldType, 6> kFieldTypeNames{
-    {{{FieldType::I16, "i16"}, {FieldType::I32, "i32"}, {FieldType::F32, "f32"}, {FieldType::Fixed16, "fixed16"},
-      {FieldType::Fixed32, "fixed32"}, {FieldType::None, "none"}}}};
+inline constexpr EnumNames<FieldType, 6> kFieldTypeNames{{{{FieldType::I16, "i16"},
+                                                           {FieldType::I32, "i32"},
+                                                           {FieldType::F32, "f32"},
+                                                           {FieldType::Fixed16, "fixed16"},
+                                                           {FieldType::Fixed32, "fixed32"},
+                                                           {FieldType::None, "none"}}}};
 inline const char* to_string(FieldType v) { return kFieldTypeNames.name(v); }
 /// The types an orientation may have: every field type but "none", the last.
 inline constexpr EnumNames<FieldType, 5> kOrientationFieldTypeNames = [] {
@@ -60,25 +63,25 @@ struct SensorConfig {
 /// hid_read returns (the report id byte included when report_id >= 0); field offsets are relative to the sensor
 /// block.
 struct ReportConfig {
-  int report_id = 1;       ///< first byte of every report; -1: the device does not number its reports
-  int length = 32;         ///< bytes per report, the id byte included
+  int report_id = 1;  ///< first byte of every report; -1: the device does not number its reports
+  int length = 32;    ///< bytes per report, the id byte included
   Endian endian = Endian::Little;
-  int station_offset = 1;  ///< byte that names the sensor; -1: every sensor at its fixed offset in each report
-  int time_offset = 2;     ///< device timestamp; -1: none (arrival time stands in)
-  int time_bits = 32;      ///< unsigned 16 or 32 bits, wraps around
+  int station_offset = 1;     ///< byte that names the sensor; -1: every sensor at its fixed offset in each report
+  int time_offset = 2;        ///< device timestamp; -1: none (arrival time stands in)
+  int time_bits = 32;         ///< unsigned 16 or 32 bits, wraps around
   double time_tick_us = 1.0;  ///< microseconds per timestamp tick
   int position_offset = 0;
   FieldType position_type = FieldType::I32;
-  int position_frac_bits = 0;    ///< fixed-point types: fractional bits
-  double position_scale = 0.01;  ///< mm per unit (after the fixed-point division)
+  int position_frac_bits = 0;                 ///< fixed-point types: fractional bits
+  double position_scale = 0.01;               ///< mm per unit (after the fixed-point division)
   std::string position_components = "x,y,z";  ///< what the device sends, in order, with its signs
   OrientationKind orientation = OrientationKind::Quaternion;
   int orientation_offset = 12;
   FieldType orientation_type = FieldType::Fixed16;
   int orientation_frac_bits = 14;
-  double orientation_scale = 1.0;  ///< quaternion units, or degrees for Euler angles, per unit
+  double orientation_scale = 1.0;                  ///< quaternion units, or degrees for Euler angles, per unit
   std::string orientation_components = "w,x,y,z";  ///< quaternion components or Euler axes, in sent order
-  std::string euler_sequence = "zyx";  ///< intrinsic Tait-Bryan order: "zyx" is R = Rz(a) Ry(b) Rx(c)
+  std::string euler_sequence = "zyx";              ///< intrinsic Tait-Bryan order: "zyx" is R = Rz(a) Ry(b) Rx(c)
 
   bool operator==(const ReportConfig&) const = default;
 };

@@ -140,7 +140,8 @@ class IgtlDevice final : public TrackerDevice {
 
 }  // namespace
 
-std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms, const IgtlLayout& layout) {
+std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms,
+                                           const IgtlLayout& layout) {
   return std::make_unique<IgtlDevice>(settings, reopen_backoff_ms, layout);
 }
 

@@ -18,6 +18,7 @@ namespace lungar::drivers {
 
 /// A device for [trackers.igtl]'s server, decoding with `layout` (make_igtl_layout()). It never fails to
 /// start: an absent server is "disconnected".
-std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms, const IgtlLayout& layout);
+std::unique_ptr<TrackerDevice> igtl_create(const IgtlConfig& settings, double reopen_backoff_ms,
+                                           const IgtlLayout& layout);
 
 }  // namespace lungar::drivers

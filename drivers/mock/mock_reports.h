@@ -10,8 +10,8 @@
 #include <string>
 
 #include "drivers/decode/encoder.h"
-#include "drivers/mock/mock_trajectory.h"
 #include "drivers/mock/mock_settings.h"
+#include "drivers/mock/mock_trajectory.h"
 #include "drivers/trk/trk_format.h"
 
 namespace lungar::drivers {
@@ -20,8 +20,12 @@ class MockReports {
  public:
   /// Precondition: settings.trajectory is a known trajectory.
   MockReports(const MockConfig& settings, const ReportLayout& layout)
-      : trajectory_(settings.trajectory), rate_hz_(settings.rate_hz), noise_mm_(settings.noise_mm),
-        dropout_(settings.dropout), layout_(layout), noise_(0.0, noise_mm_ > 0 ? noise_mm_ : 1.0) {}
+      : trajectory_(settings.trajectory),
+        rate_hz_(settings.rate_hz),
+        noise_mm_(settings.noise_mm),
+        dropout_(settings.dropout),
+        layout_(layout),
+        noise_(0.0, noise_mm_ > 0 ? noise_mm_ : 1.0) {}
 
   double rate_hz() const { return rate_hz_; }
   const std::string& trajectory() const { return trajectory_; }

@@ -19,9 +19,7 @@ void default_log(const std::string& line) { log_line("lungar", "drivers: " + lin
 }  // namespace
 
 TrackerCore::TrackerCore(const ReportLayout& layout, double stale_ms, TrackerOptions options)
-    : layout_(layout),
-      stale_ns_(static_cast<std::int64_t>(stale_ms * 1e6)),
-      options_(std::move(options)) {
+    : layout_(layout), stale_ns_(static_cast<std::int64_t>(stale_ms * 1e6)), options_(std::move(options)) {
   if (!options_.log) options_.log = default_log;
 }
 

@@ -121,7 +121,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   // --breath (the clearest of several recordings), else [breathing] source ("model": the script itself).
   auto given = given_breath(o);
   if (!given) return given.with_context("--breath: ");
-  const std::string breath = !given->empty() ? *given : s.breathing.source == "model" ? "" : s.breathing.source;
+  const bool modelled = breath::breath_kind(s.breathing.source) == breath::BreathKind::Model;
+  const std::string breath = !given->empty() ? *given : modelled ? "" : s.breathing.source;
   const std::string where = !given->empty() ? "--breath: " : "breathing.source: ";
   auto chosen = breath::choose_breath_source(breath, t0);  // a live marker's feed exists before its tracker
   if (!chosen) return chosen.with_context(where);
@@ -136,7 +137,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   if (chosen->followed() && s.sync.role == classroom::SyncRole::Trainee) {
     return fail(where +
                 "a trainee breathes with its instructor, whatever the instructor follows; give the instructor "
-                "--breath, and run the trainee without it (breathing.source = \"model\")");
+                "--breath, and run the trainee without it (breathing.source = \"" +
+                std::string(kBreathSourceNames.name(BreathSource::Model)) + "\")");
   }
   auto breathing = breath::make_breath_source(*chosen, breath_options(s, shared_script), t0);
   if (!breathing) return breathing.with_context(where);

@@ -115,11 +115,14 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--breath", o.breath_paths,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, a Varian "
                  "RPM .vxp or an ExtMarker export), the model taking over before calibration and when the trace "
-                 "ends; given several times (the markers of one session), the one whose breathing is clearest; "
-                 "marker:ROLE: "
-                 "with a chest marker tracked live as that role (stylus or head); amm[@DOMAIN]: with a mannequin's "
-                 "lung volumes over DDS (AMM); openice[:volume|flow|pressure][@DOMAIN]: with a ventilator's "
-                 "waveform over DDS (OpenICE)");
+                 "ends; given several times (the markers of one session), the one whose breathing is clearest; " +
+                     breath_source_prefix(BreathSource::Marker) +
+                     "ROLE: with a chest marker tracked live as that role (stylus or head); " +
+                     kBreathSourceNames.name(BreathSource::Amm) +
+                     "[@DOMAIN]: with a mannequin's lung volumes over DDS (AMM); " +
+                     kBreathSourceNames.name(BreathSource::OpenIce) +
+                     "[:METRIC][@DOMAIN]: with a ventilator's waveform over DDS (OpenICE; METRIC volume, flow or "
+                     "pressure)");
   app.add_option("--scenario", o.scenario_path,
                  "scenario TOML scheduling breathing changes and patient turns (see config/scenarios/)");
   app.add_option("--tracker", o.tracker,

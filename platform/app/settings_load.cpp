@@ -20,9 +20,7 @@ namespace {
 
 /// `[breathing] source` names a trace file, relative to the config, unless it is the model, a live marker or a
 /// DDS source (even a malformed one, which --breath's check then names).
-bool names_a_file(const std::string& source) {
-  return source != "model" && breath::breath_kind(source) == breath::BreathKind::Trace;
-}
+bool names_a_file(const std::string& source) { return breath::breath_kind(source) == breath::BreathKind::Trace; }
 
 using config::TomlSection;
 
@@ -146,8 +144,8 @@ std::string summarize(const Settings& s, const config::Scenario* scenario) {
     o << "IPD " << s.hmd.ipd_mm << " mm)";
   }
   o << ", " << render::to_string(s.render.mode) << " at " << s.render.point_size_px << " px, deform "
-    << to_string(s.render.deform) << ", breathing " << b.preset << " " << b.rate_bpm << "/min V_T "
-    << b.tidal_volume_ml << " mL"
+    << to_string(s.render.deform) << ", breathing " << b.preset << " " << b.rate_bpm << "/min V_T " << b.tidal_volume_ml
+    << " mL"
     << (scenario ? " (the scenario " + (scenario->name.empty() ? scenario->source : scenario->name) + "'s start)"
                  : std::string())
     << ", tracker " << drivers::to_string(s.trackers().source)

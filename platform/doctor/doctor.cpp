@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "drivers/tracker/tracker_config.h"
-#include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"
+#include "platform/doctor/checks.h"
 
 namespace lungar::platform::doctor {
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "config/base/patient_names.h"
 #include "sim/bake/motion_fields.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
@@ -318,7 +319,8 @@ void pathology_force(const BakedAsset& a, BakeReport& report) {
   for (double severity : {0.0, 0.6}) {
     Result<std::shared_ptr<const DependentCollapse>> pattern = DependentCollapse::build(a, severity);
     if (!pattern) return;
-    for (const auto& [name, g] : {std::pair{"supine", kSupine}, std::pair{"prone", kProne}}) {
+    for (const auto& [name, g] : {std::pair{lungar::kPoseNames.name(lungar::Pose::Supine), kSupine},
+                                  std::pair{lungar::kPoseNames.name(lungar::Pose::Prone), kProne}}) {
       const CollapseFitError e = (*pattern)->fit_error(a, g);
       report.pathology_force.push_back({severity == 0 ? "none" : "ards:0.6", name, e.sh_rms_rel, e.linear_rms_rel});
     }

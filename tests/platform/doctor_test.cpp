@@ -14,8 +14,8 @@
 #include "drivers/igtl/tcp_socket.h"
 #include "drivers/tracker/tracker_config.h"
 #include "platform/app/demo_asset.h"
-#include "platform/doctor/checks.h"
 #include "platform/app/settings_load.h"
+#include "platform/doctor/checks.h"
 #include "tests/scratch_dir.h"
 
 namespace fs = std::filesystem;

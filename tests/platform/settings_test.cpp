@@ -30,8 +30,8 @@ std::string error_of(const std::string& toml) {
 // [trackers] sits behind a pointer in Settings (settings.h): a copy must still be a value, not a second name for
 // the same table, or a station's edited copy would change the settings it came from.
 TEST(Settings, ACopyHasItsOwnTrackersTable) {
-  auto loaded = load_settings_from_string("[trackers]\nsource = \"igtl\"\n[trackers.igtl]\nhost = \"plus.lab\"\n",
-                                          "copy.toml");
+  auto loaded =
+      load_settings_from_string("[trackers]\nsource = \"igtl\"\n[trackers.igtl]\nhost = \"plus.lab\"\n", "copy.toml");
   ASSERT_TRUE(loaded) << loaded.error();
   Settings copy = *loaded;
   EXPECT_EQ(copy.trackers(), loaded->trackers());

@@ -37,19 +37,19 @@ class FastDdsAmmReader final : public AmmReader, private fdds::DataReaderListene
   Status open(std::uint32_t domain) {
     participant_ = fdds::DomainParticipantFactory::get_instance()->create_participant(
         static_cast<fdds::DomainId_t>(domain), fdds::PARTICIPANT_QOS_DEFAULT);
-    if (!participant_) return fail("amm: Fast DDS could not make a participant in domain " + std::to_string(domain));
+    if (!participant_) return fail("Fast DDS could not make a participant in domain " + std::to_string(domain));
     fdds::TypeSupport type(new AMM::PhysiologyWaveformPubSubType());
     type.register_type(participant_);
     fdds::Topic* topic = participant_->create_topic(kAmmTopic, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
     fdds::Subscriber* sub = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
-    if (!topic || !sub) return fail(std::string("amm: Fast DDS could not make the topic '") + kAmmTopic + "'");
+    if (!topic || !sub) return fail(std::string("Fast DDS could not make the topic '") + kAmmTopic + "'");
     fdds::DataReaderQos q = fdds::DATAREADER_QOS_DEFAULT;
     q.reliability().kind = fdds::RELIABLE_RELIABILITY_QOS;
     q.durability().kind = fdds::TRANSIENT_LOCAL_DURABILITY_QOS;
     q.ownership().kind = fdds::EXCLUSIVE_OWNERSHIP_QOS;
     q.history().kind = fdds::KEEP_LAST_HISTORY_QOS;
     q.history().depth = 256;
-    if (!sub->create_datareader(topic, q, this)) return fail("amm: Fast DDS could not make the reader");
+    if (!sub->create_datareader(topic, q, this)) return fail("Fast DDS could not make the reader");
     return ok();
   }
   int matched() const override { return matched_.load(); }
@@ -85,7 +85,7 @@ Result<std::unique_ptr<AmmReader>> AmmReader::open(std::uint32_t domain, Physiol
 #else
 Result<std::unique_ptr<AmmReader>> AmmReader::open(std::uint32_t, PhysiologyInbox&) {
   return fail(
-      "amm: this lungar was built without eProsima Fast DDS (AMM's DDS stack; Debian's libfastrtps-dev and "
+      "this lungar was built without eProsima Fast DDS (AMM's DDS stack; Debian's libfastrtps-dev and "
       "fastddsgen): install them and build again");
 }
 #endif

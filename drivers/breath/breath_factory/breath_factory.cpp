@@ -10,11 +10,21 @@
 namespace lungar::breath {
 
 BreathKind breath_kind(const std::string& source) {
-  if (source.empty()) return BreathKind::Model;
-  if (source.rfind(kMarkerPrefix, 0) == 0) return BreathKind::Marker;
-  // A DDS spec's name comes before its metric (':') and its domain ('@').
-  const std::string name = source.substr(0, source.find_first_of(":@"));
-  if (name == "amm" || name == "openice") return BreathKind::Dds;
+  // A name comes before its argument (':') and a DDS source's domain ('@'); a path that happens to start with a
+  // name ("model.csv", "amm_run.csv") is still a trace.
+  const std::size_t end = source.find_first_of(":@");
+  switch (source.empty() ? BreathSource::Model
+                         : kBreathSourceNames.parse(source.substr(0, end)).value_or(BreathSource::Trace)) {
+    case BreathSource::Model:
+      return end == std::string::npos ? BreathKind::Model : BreathKind::Trace;
+    case BreathSource::Marker:
+      return end != std::string::npos && source[end] == ':' ? BreathKind::Marker : BreathKind::Trace;
+    case BreathSource::Amm:
+    case BreathSource::OpenIce:
+      return BreathKind::Dds;
+    case BreathSource::Trace:
+      break;
+  }
   return BreathKind::Trace;
 }
 

@@ -23,9 +23,9 @@ namespace lungar::breath {
 
 enum class BreathKind { Model, Trace, Marker, Dds };
 
-/// The kind `source` names: empty the script (the wiring passes `[breathing] source = "model"` so), "marker:ROLE"
-/// a live marker, "amm..." or "openice..." a source over DDS (even a malformed spec, which opening it names),
-/// anything else a trace file.
+/// The kind `source` names (config/base/breath_source_names.h): "model" or empty the script, "marker:ROLE" a live
+/// marker, "amm..." or "openice..." a source over DDS (even a malformed spec, which opening it names), anything
+/// else a trace file.
 BreathKind breath_kind(const std::string& source);
 
 /// Opens a source over DDS (`amm[@DOMAIN]`, `openice[:volume|flow|pressure][@DOMAIN]`) and says in the log what it

@@ -54,7 +54,7 @@ void MarkerFeed::feed(double t_s, Followers& followers) {
 }
 
 void MarkerFeed::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = std::string("marker:") + drivers::to_string(role_);
+  stats["breath_source"] = breath_source_prefix(BreathSource::Marker) + drivers::to_string(role_);
   stats["breath_marker_samples"] = samples_;
   stats["breath_marker_axis"] =
       axis_found_ ? std::vector<double>{axis_.x(), axis_.y(), axis_.z()} : std::vector<double>{};
@@ -62,21 +62,21 @@ void MarkerFeed::add_stats(nlohmann::json& stats) const {
 }
 
 Result<std::shared_ptr<MarkerFeed>> open_marker_feed(const std::string& source, std::int64_t t0_ns) {
-  const std::string role_text = source.substr(kMarkerPrefix.size());
+  const std::string role_text = source.substr(breath_source_prefix(BreathSource::Marker).size());
   const std::optional<drivers::Role> role = drivers::role_from_string(role_text);
   if (!role || *role == drivers::Role::Patient) {
-    return fail(
-        "marker:ROLE: expected the tracker role carrying the chest marker, stylus or head (the patient's "
-        "pose is the frame it is read in), got '" +
-        role_text + "'");
+    return fail(breath_source_prefix(BreathSource::Marker) +
+                "ROLE: expected the tracker role carrying the chest marker, stylus or head (the patient's "
+                "pose is the frame it is read in), got '" +
+                role_text + "'");
   }
   return std::make_shared<MarkerFeed>(*role, t0_ns);
 }
 
 std::string marker_following(const std::string& source) {
-  return "breathing: following the " + source.substr(kMarkerPrefix.size()) +
-         " marker live (its breathing axis from its first " +
-         std::to_string(static_cast<int>(kMarkerAxisWindowS)) + " s), the model until then";
+  return "breathing: following the " + source.substr(breath_source_prefix(BreathSource::Marker).size()) +
+         " marker live (its breathing axis from its first " + std::to_string(static_cast<int>(kMarkerAxisWindowS)) +
+         " s), the model until then";
 }
 
 }  // namespace lungar::breath

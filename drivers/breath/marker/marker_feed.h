@@ -15,15 +15,13 @@
 
 #include <Eigen/Core>
 
+#include "config/base/breath_source_names.h"
 #include "config/base/result.h"
 #include "config/base/spsc_ring.h"
 #include "drivers/breath/source/surrogate_feed.h"
 #include "drivers/pose/pose_sample.h"
 
 namespace lungar::breath {
-
-/// How `--breath` and `[breathing] source` name a live marker: this, then the tracker role carrying it.
-inline constexpr std::string_view kMarkerPrefix = "marker:";
 
 /// The marker's breathing axis is found over this much of its first samples (two or three quiet breaths).
 inline constexpr double kMarkerAxisWindowS = 10.0;

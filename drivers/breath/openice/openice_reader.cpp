@@ -17,20 +17,20 @@ double seconds_of(const ice_Time_t& t) { return static_cast<double>(t.sec) + 1e-
 Result<std::unique_ptr<OpenIceReader>> OpenIceReader::open(std::uint32_t domain, const std::string& cyclonedds_xml,
                                                            Quantity followed, PhysiologyInbox& inbox) {
   auto d = dds::Domain::create(domain, cyclonedds_xml);
-  if (!d) return d.with_context("openice: ");
+  if (!d) return Error{d.error()};
   std::unique_ptr<OpenIceReader> r(new OpenIceReader(d.take(), followed, inbox));
   auto topic = dds::Topic<ice_SampleArray>::create(r->domain_.participant(), ice_SampleArray_desc, kOpenIceTopic);
-  if (!topic) return topic.with_context("openice: ");
+  if (!topic) return Error{topic.error()};
   r->topic_.emplace(topic.take());
   dds::Qos qos;
   qos.best_effort().volatile_().keep_last(64);
   auto reader = dds::Reader<ice_SampleArray>::create(r->domain_.participant(), *r->topic_, qos);
-  if (!reader) return reader.with_context("openice: ");
+  if (!reader) return Error{reader.error()};
   r->reader_.emplace(reader.take());
   auto waitset = dds::WaitSet::create(r->domain_.participant());
-  if (!waitset) return waitset.with_context("openice: ");
+  if (!waitset) return Error{waitset.error()};
   r->waitset_.emplace(waitset.take());
-  if (Status s = r->waitset_->attach_reader(r->reader_->get()); !s) return s.with_context("openice: ");
+  if (Status s = r->waitset_->attach_reader(r->reader_->get()); !s) return Error{s.error()};
   OpenIceReader* self = r.get();
   r->thread_.start(*r->waitset_, [self] {
     while (!self->thread_.stopping()) {

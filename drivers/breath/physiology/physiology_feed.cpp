@@ -12,18 +12,20 @@
 namespace lungar::breath::physiology {
 
 PhysiologyFeed::PhysiologyFeed(const PhysiologySpec& spec, std::int64_t t0_ns)
-    : spec_(spec), t0_ns_(t0_ns), inbox_(spec.source == PhysiologySpec::Source::Amm ? "amm" : "openice") {}
+    : spec_(spec), t0_ns_(t0_ns), inbox_(kBreathSourceNames.name(spec.source)) {}
 
 Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpec& spec,
                                                              const std::string& cyclonedds_xml, std::int64_t t0_ns) {
   std::shared_ptr<PhysiologyFeed> f(new PhysiologyFeed(spec, t0_ns));
-  if (spec.source == PhysiologySpec::Source::Amm) {
+  // A reader's error is told under the source's name: "amm: Fast DDS could not ...".
+  const std::string who = breath_source_prefix(spec.source) + " ";
+  if (spec.source == BreathSource::Amm) {
     auto r = AmmReader::open(spec.domain, f->inbox_);
-    if (!r) return Error{r.error()};
+    if (!r) return r.with_context(who);
     f->amm_ = r.take();
   } else {
     auto r = OpenIceReader::open(spec.domain, cyclonedds_xml, spec.quantity, f->inbox_);
-    if (!r) return Error{r.error()};
+    if (!r) return r.with_context(who);
     f->openice_ = r.take();
   }
   return f;
@@ -31,7 +33,7 @@ Result<std::shared_ptr<PhysiologyFeed>> PhysiologyFeed::open(const PhysiologySpe
 
 std::string PhysiologyFeed::describe() const {
   const std::string d = " on DDS domain " + std::to_string(spec_.domain);
-  if (spec_.source == PhysiologySpec::Source::Amm)
+  if (spec_.source == BreathSource::Amm)
     return "the mannequin's lung volumes (AMM, topic '" + std::string(kAmmTopic) + "')" + d;
   return std::string("the ventilator's ") + openice_metric(spec_.quantity) + " (OpenICE)" + d;
 }
@@ -69,9 +71,9 @@ void PhysiologyFeed::give(const Sample& s, double t_s, breath::Followers& follow
 }
 
 void PhysiologyFeed::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = spec_.source == PhysiologySpec::Source::Amm
-                               ? std::string("amm")
-                               : std::string("openice:") + kQuantityNames.name(spec_.quantity);
+  stats["breath_source"] = spec_.source == BreathSource::Amm
+                               ? std::string(kBreathSourceNames.name(spec_.source))
+                               : breath_source_prefix(spec_.source) + kQuantityNames.name(spec_.quantity);
   stats["breath_dds_domain"] = spec_.domain;
   stats["breath_dds_publishers"] = amm_ ? amm_->matched() : openice_->matched();
   stats["breath_dds_samples"] = fed_;

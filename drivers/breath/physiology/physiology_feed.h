@@ -40,7 +40,7 @@ class PhysiologyFeed final : public breath::SurrogateFeed {
   /// breath_dropped (by reason) and breath_invalid_samples (their sum, and samples lost to a full inbox).
   void add_stats(nlohmann::json& stats) const override;
   bool in_ml() const override { return spec_.quantity != Quantity::pressure_cmh2o; }
-  bool per_lung() const override { return spec_.source == PhysiologySpec::Source::Amm; }
+  bool per_lung() const override { return spec_.source == BreathSource::Amm; }
   /// "amm on domain 3" and the like, for the log.
   std::string describe() const;
 

@@ -8,8 +8,14 @@ namespace lungar::breath::physiology {
 
 namespace {
 
-constexpr const char* kSpecHelp =
-    "expected amm[@DOMAIN] or openice[:volume|flow|pressure][@DOMAIN], DOMAIN a DDS domain id 0 to 232";
+/// "expected amm[@DOMAIN] or openice[:volume|flow|pressure][@DOMAIN], DOMAIN a DDS domain id 0 to 232".
+std::string spec_help() {
+  std::string metrics;
+  for (const auto& [q, name] : kQuantityNames.entries) metrics += (metrics.empty() ? "" : "|") + std::string(name);
+  return std::string("expected ") + kBreathSourceNames.name(BreathSource::Amm) + "[@DOMAIN] or " +
+         kBreathSourceNames.name(BreathSource::OpenIce) + "[:" + metrics +
+         "][@DOMAIN], DOMAIN a DDS domain id 0 to 232";
+}
 
 }  // namespace
 
@@ -19,22 +25,19 @@ Result<std::optional<PhysiologySpec>> parse_physiology_spec(const std::string& b
   const std::size_t colon = head.find(':');
   const std::string source = head.substr(0, colon);
   PhysiologySpec spec;
-  if (source == "amm")
-    spec.source = PhysiologySpec::Source::Amm;
-  else if (source == "openice")
-    spec.source = PhysiologySpec::Source::OpenIce;
-  else
-    return std::optional<PhysiologySpec>{};
+  const std::optional<BreathSource> named = kBreathSourceNames.parse(source);
+  if (named != BreathSource::Amm && named != BreathSource::OpenIce) return std::optional<PhysiologySpec>{};
+  spec.source = *named;
   if (colon != std::string::npos) {
     const std::optional<Quantity> q = kQuantityNames.parse(head.substr(colon + 1));
-    if (spec.source == PhysiologySpec::Source::Amm || !q) return fail("'" + breath + "': " + kSpecHelp);
+    if (spec.source == BreathSource::Amm || !q) return fail("'" + breath + "': " + spec_help());
     spec.quantity = *q;
   }
   if (at != std::string::npos) {
     const std::string d = breath.substr(at + 1);
     char* end = nullptr;
     const long id = d.empty() ? -1 : std::strtol(d.c_str(), &end, 10);
-    if (id < 0 || id > 232 || *end != '\0') return fail("'" + breath + "': DOMAIN: " + kSpecHelp);
+    if (id < 0 || id > 232 || *end != '\0') return fail("'" + breath + "': DOMAIN: " + spec_help());
     spec.domain = static_cast<std::uint32_t>(id);
   }
   return std::optional<PhysiologySpec>{spec};

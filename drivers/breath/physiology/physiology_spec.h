@@ -8,14 +8,14 @@
 #include <optional>
 #include <string>
 
+#include "config/base/breath_source_names.h"
 #include "config/base/result.h"
 #include "drivers/breath/physiology/physiology_sample.h"
 
 namespace lungar::breath::physiology {
 
 struct PhysiologySpec {
-  enum class Source { Amm, OpenIce };
-  Source source = Source::Amm;
+  BreathSource source = BreathSource::Amm;  ///< Amm or OpenIce
   Quantity quantity = Quantity::volume_ml;  ///< OpenICE's metric (AMM's are volumes)
   std::uint32_t domain = 0;                 ///< the DDS domain id, [0, 232]
 };

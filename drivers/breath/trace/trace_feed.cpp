@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "config/base/breath_source_names.h"
+
 namespace lungar::breath {
 
 void TraceFeed::feed(double t_s, Followers& followers) {
@@ -12,7 +14,7 @@ void TraceFeed::feed(double t_s, Followers& followers) {
 }
 
 void TraceFeed::add_stats(nlohmann::json& stats) const {
-  stats["breath_source"] = "trace";
+  stats["breath_source"] = kBreathSourceNames.name(BreathSource::Trace);
   stats["breath_file"] = path_;
   stats["breath_format"] = trace_.format;
   // Samples the recorder flagged (RPM's validflag) that this trace still holds: followed.

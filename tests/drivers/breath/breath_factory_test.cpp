@@ -51,10 +51,12 @@ Made make(const std::string& source, OpenDdsFeed open_dds = {}) {
 
 TEST(BreathFactory, NamesTheModelAMarkerADdsSourceOrElseATraceFile) {
   EXPECT_EQ(breath_kind(""), BreathKind::Model);
+  EXPECT_EQ(breath_kind("model"), BreathKind::Model) << "[breathing] source's default";
   EXPECT_EQ(breath_kind("marker:stylus"), BreathKind::Marker);
   for (const char* dds : {"amm", "amm@3", "openice", "openice:flow@7", "openice@232", "amm:volume"})
     EXPECT_EQ(breath_kind(dds), BreathKind::Dds) << dds;
-  for (const char* file : {"traces/amm@home.csv", "ammonia.csv", "openice.vxp", "markers.csv", "model"})
+  for (const char* file : {"traces/amm@home.csv", "ammonia.csv", "openice.vxp", "markers.csv", "model.csv",
+                           "model@2", "marker", "trace"})
     EXPECT_EQ(breath_kind(file), BreathKind::Trace) << file;
 }
 

@@ -106,11 +106,11 @@ TEST(OpenIceChecks, DropsBadValuesOneByOneAndBadArraysWhole) {
 TEST(PhysiologySpec, ReadsTheSourceTheMetricAndTheDomain) {
   auto amm = parse_physiology_spec("amm");
   ASSERT_TRUE(amm && *amm);
-  EXPECT_EQ((*amm)->source, PhysiologySpec::Source::Amm);
+  EXPECT_EQ((*amm)->source, BreathSource::Amm);
   EXPECT_EQ((*amm)->domain, 0u);
   auto flow = parse_physiology_spec("openice:flow@7");
   ASSERT_TRUE(flow && *flow);
-  EXPECT_EQ((*flow)->source, PhysiologySpec::Source::OpenIce);
+  EXPECT_EQ((*flow)->source, BreathSource::OpenIce);
   EXPECT_EQ((*flow)->quantity, Quantity::flow_ml_per_s);
   EXPECT_EQ((*flow)->domain, 7u);
   auto file = parse_physiology_spec("traces/amm@home.csv");  // a file, not a source

@@ -24,8 +24,9 @@ namespace lungar::sim {
 /// Bumped when a bake of the same inputs gives different output in the same file format, so that caches keyed by
 /// it (the demo's, the benchmark's) bake again. 2: points in progressive Poisson-disk order (sim/mesh/lod_order.cpp).
 /// 3: the SH fit on a one-to-one (conformal) spherical map instead of the radial one (sim/mesh/spherical_map.h).
-/// 4: the sliding motion model by default (sim/motion/motion_model.h).
-inline constexpr std::uint32_t kBakeRevision = 4;
+/// 4: the sliding motion model by default (sim/motion/motion_model.h). 5: its apex slides and its costal face is
+/// drawn down with the base (SlidingFaces::costal_slide).
+inline constexpr std::uint32_t kBakeRevision = 5;
 
 /// The tidal volume at which the volume normalisation is calibrated and the report measures (the paper's).
 inline constexpr double kTidalVolumeMl = 500.0;

@@ -78,7 +78,9 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
   const auto regions = asset_regions(a);
   const MotionFigures supine = motion_figures(a, displacement_vectors(a, PatientState::of(a), kSupine, 500), regions);
   EXPECT_GE(supine.si_share, 0.80) << "mostly cranio-caudal, as the diaphragm drives it";
-  EXPECT_LE(supine.apex_base_ratio, 0.45) << "the apex barely moves";
+  // 4-D CT of 10 supine patients: 0.30 (0.13-0.55). A tethered apex gave 0.06: a frozen apex is not a real one.
+  EXPECT_GE(supine.apex_base_ratio, 0.13) << "the apex moves a little, as real apices do";
+  EXPECT_LE(supine.apex_base_ratio, 0.55) << "far less than the base";
   EXPECT_GT(supine.dorsal_ventral_ratio, 1.3) << "the dependent, dorsal lung moves more";
   EXPECT_GT(supine.mean_displacement_mm, 1.0);
   const auto face = [&](SurfaceRegion r) { return supine.regions[static_cast<std::size_t>(r)]; };
@@ -87,7 +89,7 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
   EXPECT_LT(face(SurfaceRegion::mediastinal).mean_displacement_mm,
             0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "held at the hilum";
   EXPECT_LT(face(SurfaceRegion::apical).mean_displacement_mm,
-            0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "held in the cupola";
+            0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "the top of the cupola moves least";
 
   const MotionFigures prone = motion_figures(a, displacement_vectors(a, PatientState::of(a), kProne, 500), regions);
   EXPECT_LT(prone.dorsal_ventral_ratio, supine.dorsal_ventral_ratio) << "gravity keeps its role";

@@ -14,6 +14,7 @@
 #include "sim/breathing/orientation.h"
 #include "sim/mesh/tri_mesh.h"
 #include "sim/motion/interior_displacement.h"
+#include "sim/motion/lesion.h"
 #include "sim/motion/motion_figures.h"
 #include "sim/pathology/pathology.h"
 
@@ -49,10 +50,13 @@ std::vector<float> exact_volume_displacement(const BakedAsset& a, const PatientS
   return d;
 }
 
-/// The interior points and the field that moves them, built once for every phase of an export.
+/// The interior points, the lesions and the field that moves them, built once for every phase of an export.
 struct InteriorExport {
   InteriorDisplacement field;
-  InteriorPoints points;
+  InteriorPoints points;  ///< --interior's; empty without it
+  std::vector<PlacedLesion> lesions;
+  InteriorPoints lesion_centres;
+  bool write_points = false;
 };
 
 /// Writes one phase: the interior points' file first (when asked), then the surface's; when the surface cannot be
@@ -67,7 +71,15 @@ Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::
                 g.x(), g.y(), g.z(), volume_ml, kMotionModelNames.name(a.motion_model));
   const std::string frame = "frame: DICOM LPS (+x left, +y posterior, +z superior), mm; dx dy dz: displacement "
                             "from rest, mm";
-  if (interior) {
+  if (interior && !interior->lesions.empty()) {
+    const std::vector<float> dl = interior->field.displacement(d, interior->lesion_centres);
+    for (std::size_t k = 0; k < interior->lesions.size(); ++k) {
+      const PlacedLesion& l = interior->lesions[k];
+      written.lesions.push_back(
+          {l.lesion.name, a.lungs[l.lung].name, Eigen::Vector3d(dl[3 * k], dl[3 * k + 1], dl[3 * k + 2])});
+    }
+  }
+  if (interior && interior->write_points) {
     const std::vector<float> di = interior->field.displacement(d, interior->points);
     std::vector<float> at(interior->points.positions.size());
     for (std::size_t i = 0; i < at.size(); ++i) at[i] = interior->points.positions[i] + di[i];
@@ -86,7 +98,7 @@ Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::
     s.comments.push_back("lung " + lung.name + ": vertices " + std::to_string(lung.first_vertex) + " to " +
                          std::to_string(lung.first_vertex + lung.vertex_count - 1));
   Status status = write_ply(s, path);
-  if (!status && interior) {
+  if (!status && interior && interior->write_points) {
     std::error_code ec;
     std::filesystem::remove(interior_path, ec);
   }
@@ -94,6 +106,19 @@ Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::
 }
 
 }  // namespace
+
+std::vector<LesionExcursion> lesion_excursions(const std::vector<ExportedFile>& written) {
+  std::vector<LesionExcursion> out;
+  if (written.empty()) return out;
+  for (std::size_t k = 0; k < written.front().lesions.size(); ++k) {
+    std::vector<Eigen::Vector3d> path{Eigen::Vector3d::Zero()};  // the rest shape
+    for (const ExportedFile& f : written) path.push_back(f.lesions[k].displacement_mm);
+    LesionExcursion e{written.front().lesions[k].name, written.front().lesions[k].lung, 0, 0};
+    e.peak_to_peak_mm = peak_to_peak_mm(path, e.si_mm);
+    out.push_back(e);
+  }
+  return out;
+}
 
 std::string series_path(const std::string& out, int index) {
   const std::size_t dot = out.rfind('.'), slash = out.rfind('/');
@@ -137,10 +162,20 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
   if (Status s = apply_pathologies(*asset, patient, c.pathologies); !s) return s.with_context("--pathology: ");
   std::string what = c.asset;
   for (const std::string& spec : c.pathologies) what += " with " + spec;
+  std::vector<Lesion> lesions;
+  for (const std::string& spec : c.lesions) {
+    Result<Lesion> l = parse_lesion(spec);
+    if (!l) return l.with_context("");
+    lesions.push_back(*l);
+  }
   std::optional<InteriorExport> interior;
-  if (c.interior) {
-    interior.emplace(InteriorExport{InteriorDisplacement(*asset), {}});
-    interior->points = interior->field.sample(static_cast<std::size_t>(*c.interior), kInteriorSeed);
+  if (c.interior || !lesions.empty()) {
+    interior.emplace(InteriorExport{InteriorDisplacement(*asset), {}, {}, {}, c.interior.has_value()});
+    if (c.interior) interior->points = interior->field.sample(static_cast<std::size_t>(*c.interior), kInteriorSeed);
+    Result<std::vector<PlacedLesion>> placed = place_lesions(interior->field, lesions);
+    if (!placed) return placed.with_context(c.asset + ": ");
+    interior->lesions = *placed;
+    interior->lesion_centres = lesion_centres(interior->lesions);
   }
   const InteriorExport* inside = interior ? &*interior : nullptr;
   if (c.series <= 0) {
@@ -167,7 +202,7 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
     f.path = path;
     f.phase = phase;
     f.volume_ml = dv;
-    const std::string interior_path = inside ? series_path(c.interior_out, k) : std::string();
+    const std::string interior_path = c.interior ? series_path(c.interior_out, k) : std::string();
     if (Status s = write_one(*asset, patient, *g, dv, path, what, inside, interior_path, f); !s)
       return s.with_context("");
     written.push_back(f);

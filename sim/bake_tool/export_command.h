@@ -25,6 +25,22 @@ struct ExportCommand {
   std::vector<std::string> pathologies;    ///< specs of sim/pathology/pathology.h, applied in order
   std::optional<int> interior;             ///< that many points uniform over the lungs' volume (> 0; kInteriorSeed)
   std::string interior_out;                ///< their PLY, vertices only (with --series: the stem, as `out`)
+  std::vector<std::string> lesions;        ///< "NAME=x,y,z,radius_mm" (sim/motion/lesion.h), each moved and reported
+};
+
+/// A lesion's displacement in one exported phase.
+struct LesionAt {
+  std::string name;
+  std::string lung;                 ///< the asset's lung name, "left" or "right"
+  Eigen::Vector3d displacement_mm;  ///< its centre's, from rest (LPS)
+};
+
+/// A lesion's excursion over what was exported (the rest shape included: every breath passes through it).
+struct LesionExcursion {
+  std::string name;
+  std::string lung;
+  double peak_to_peak_mm = 0;  ///< the largest distance between two of its positions
+  double si_mm = 0;            ///< the cranio-caudal range
 };
 
 /// What was written: each file with its volume change.
@@ -35,6 +51,7 @@ struct ExportedFile {
   std::string interior_path;               ///< the interior points' PLY written beside it ("" without --interior)
   MotionFigures interior;                  ///< their figures (sim/motion/motion_figures.h), no faces
   std::size_t interior_points = 0;
+  std::vector<LesionAt> lesions;  ///< --lesion's, in the order given
 };
 
 /// The options' own consistency, before any file is read (the command line exits 2 on it): --interior N needs
@@ -45,6 +62,10 @@ Status check_export_command(const ExportCommand& command);
 /// Writes the PLY file(s), whole or not at all (the interior points' file too: when either of a phase's two files
 /// cannot be written, neither is left); the error is one line naming the file and the field.
 Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& command);
+
+/// Each lesion's excursion over the exported files: over one breath with --series, from rest to --volume-ml
+/// without.
+std::vector<LesionExcursion> lesion_excursions(const std::vector<ExportedFile>& written);
 
 /// "FILE.ply" with --series: FILE_000.ply, FILE_001.ply, ...
 std::string series_path(const std::string& out, int index);

@@ -168,6 +168,11 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
                                              "moved by the harmonic extension of the surface's motion");
   sub.add_option("--interior-out", cmd.interior_out, "the .ply of the interior points (vertices only: x y z, dx dy "
                                                      "dz; with --series: FILE_000.ply, ...); needs --interior");
+  sub.add_option("--lesion", cmd.lesions,
+                 "NAME=x,y,z,radius_mm: a lesion (a tumour) there (LPS, mm), inside a lung, moved with the tissue "
+                 "around it; its excursion is reported (with --series over one breath, else from rest to "
+                 "--volume-ml); repeatable")
+      ->allow_extra_args(false);
 }
 
 /// Runs the export and says what it wrote; the exit code.
@@ -200,6 +205,12 @@ int run_export(lungar::sim::ExportCommand& cmd, const std::string& gravity) {
                   "ventral %.3f, mean |d| %.2f mm, max |d| %.2f mm", f.interior_path.c_str(), f.interior_points,
                   m.si_share, m.apex_base_ratio, m.dorsal_ventral_ratio, m.mean_displacement_mm,
                   m.max_displacement_mm);
+    lungar::log_line("lungar-bake export", line);
+  }
+  for (const lungar::sim::LesionExcursion& e : lungar::sim::lesion_excursions(*written)) {
+    char line[256];
+    std::snprintf(line, sizeof line, "lesion %s (%s lung): peak-to-peak %.2f mm, cranio-caudal %.2f mm", e.name.c_str(),
+                  e.lung.c_str(), e.peak_to_peak_mm, e.si_mm);
     lungar::log_line("lungar-bake export", line);
   }
   return 0;

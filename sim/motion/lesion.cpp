@@ -1,0 +1,96 @@
+/// @file lesion.cpp
+/// @brief Parsing, placing and measuring lesions (lesion.h).
+#include "sim/motion/lesion.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace lungar::sim {
+
+namespace {
+
+std::string point_text(const Eigen::Vector3d& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f)", p.x(), p.y(), p.z());
+  return text;
+}
+
+}  // namespace
+
+Result<Lesion> parse_lesion(const std::string& spec) {
+  const std::string expected =
+      "--lesion: expected NAME=x,y,z,radius_mm (LPS, mm; NAME of letters, digits, '_' or '-'), got '" + spec + "'";
+  const std::size_t eq = spec.find('=');
+  if (eq == std::string::npos) return fail(expected);
+  Lesion l;
+  l.name = spec.substr(0, eq);
+  const bool named = !l.name.empty() && l.name.size() <= 32 &&
+                     std::all_of(l.name.begin(), l.name.end(),
+                                 [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
+  if (!named) return fail(expected);
+  std::istringstream in(spec.substr(eq + 1));
+  char c1 = 0, c2 = 0, c3 = 0;
+  in >> l.centre_mm.x() >> c1 >> l.centre_mm.y() >> c2 >> l.centre_mm.z() >> c3 >> l.radius_mm;
+  if (!in || c1 != ',' || c2 != ',' || c3 != ',' || !(in >> std::ws).eof() || !l.centre_mm.allFinite() ||
+      !std::isfinite(l.radius_mm))
+    return fail(expected);
+  if (!(l.radius_mm > 0 && l.radius_mm <= kMaxLesionRadiusMm)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "--lesion %s: expected a radius above 0 and at most %.0f mm, got %g mm",
+                  l.name.c_str(), kMaxLesionRadiusMm, l.radius_mm);
+    return fail(text);
+  }
+  return l;
+}
+
+Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions) {
+  std::vector<PlacedLesion> placed;
+  for (const Lesion& l : lesions) {
+    for (const PlacedLesion& p : placed)
+      if (p.lesion.name == l.name) return fail("--lesion " + l.name + ": expected each name once, got it twice");
+    const int lung = field.lung_containing(l.centre_mm);
+    if (lung < 0)
+      return fail("--lesion " + l.name + ": its centre " + point_text(l.centre_mm) +
+                  " (LPS, mm) lies outside every lung; expected a point inside the left or right lung");
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0) continue;
+          const Eigen::Vector3d p = l.centre_mm + l.radius_mm * Eigen::Vector3d(dx, dy, dz).normalized();
+          if (field.lung_containing(p) != lung) {
+            char text[64];
+            std::snprintf(text, sizeof text, "%.1f mm", l.radius_mm);
+            return fail("--lesion " + l.name + ": a ball of radius " + text + " around " + point_text(l.centre_mm) +
+                        " reaches out of its lung at " + point_text(p) +
+                        "; expected the whole lesion inside one lung (a smaller radius, or a centre further in)");
+          }
+        }
+    placed.push_back({l, static_cast<std::size_t>(lung)});
+  }
+  return placed;
+}
+
+InteriorPoints lesion_centres(const std::vector<PlacedLesion>& lesions) {
+  InteriorPoints points;
+  for (const PlacedLesion& p : lesions) {
+    for (int c = 0; c < 3; ++c) points.positions.push_back(static_cast<float>(p.lesion.centre_mm[c]));
+    points.lung_of_point.push_back(static_cast<std::uint8_t>(p.lung));
+  }
+  return points;
+}
+
+double peak_to_peak_mm(const std::vector<Eigen::Vector3d>& displacements, double& si_mm) {
+  double most = 0, z_lo = 0, z_hi = 0;
+  for (std::size_t i = 0; i < displacements.size(); ++i) {
+    z_lo = i == 0 ? displacements[i].z() : std::min(z_lo, displacements[i].z());
+    z_hi = i == 0 ? displacements[i].z() : std::max(z_hi, displacements[i].z());
+    for (std::size_t j = 0; j < i; ++j) most = std::max(most, (displacements[i] - displacements[j]).norm());
+  }
+  si_mm = z_hi - z_lo;
+  return most;
+}
+
+}  // namespace lungar::sim

@@ -1,0 +1,54 @@
+/// @file lesion.h
+/// @brief A lesion inside a lung (a tumour, a nodule): a ball placed by `--lesion NAME=x,y,z,radius_mm`, checked to lie
+///        inside one lung, and moved by the interior field (interior_displacement.h) as the tissue around it moves.
+///
+/// Its displacement is its centre's. The interior field is harmonic inside each lung, and the mean of a harmonic
+/// field over a ball equals its value at the centre (the mean value property), so the centre's displacement is the
+/// whole lesion's mean displacement, exactly, for a ball inside the lung. Radiotherapy's tumour-motion figures (the
+/// peak-to-peak excursion of the tumour's centre of mass over a breath; Seppenwoolde et al. 2002) are of that.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "config/base/result.h"
+#include "sim/motion/interior_displacement.h"
+
+namespace lungar::sim {
+
+/// A ball in the lung frame (LPS, mm).
+struct Lesion {
+  std::string name;
+  Eigen::Vector3d centre_mm = Eigen::Vector3d::Zero();
+  double radius_mm = 0;
+};
+
+/// The largest radius a lesion may have: a 10 cm mass is already larger than the tumours radiotherapy tracks.
+inline constexpr double kMaxLesionRadiusMm = 50.0;
+
+/// "NAME=x,y,z,radius_mm" -> a Lesion, or one line naming the spec and what was expected. NAME: 1 to 32 letters,
+/// digits, '_' or '-'; the radius in (0, kMaxLesionRadiusMm].
+Result<Lesion> parse_lesion(const std::string& spec);
+
+/// A lesion placed in its lung.
+struct PlacedLesion {
+  Lesion lesion;
+  std::size_t lung = 0;  ///< index into the asset's lungs
+};
+
+/// The lung that holds each lesion whole: its centre and 26 points of its surface (the cube's directions) inside
+/// the same lung. One line for the first that is not, naming it and where it lies; two lesions with one name are
+/// refused too.
+Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions);
+
+/// The lesions' centres as interior points, for InteriorDisplacement::displacement().
+InteriorPoints lesion_centres(const std::vector<PlacedLesion>& lesions);
+
+/// The largest distance between two of a lesion's positions over a breath: `displacements` holds one vector per
+/// phase (mm). Returns the peak-to-peak excursion and, in `si_mm`, its cranio-caudal (z) part: the z range.
+double peak_to_peak_mm(const std::vector<Eigen::Vector3d>& displacements, double& si_mm);
+
+}  // namespace lungar::sim

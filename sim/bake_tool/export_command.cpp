@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "config/base/atomic_file.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake_tool/ply_writer.h"
 #include "sim/breathing/driver.h"
@@ -76,7 +77,7 @@ Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::
     for (std::size_t k = 0; k < interior->lesions.size(); ++k) {
       const PlacedLesion& l = interior->lesions[k];
       written.lesions.push_back(
-          {l.lesion.name, a.lungs[l.lung].name, Eigen::Vector3d(dl[3 * k], dl[3 * k + 1], dl[3 * k + 2])});
+          {l.lesion.name, a.lungs[l.lung].name, l.lesion.centre_mm, Eigen::Vector3d(dl[3 * k], dl[3 * k + 1], dl[3 * k + 2])});
     }
   }
   if (interior && interior->write_points) {
@@ -120,6 +121,20 @@ std::vector<LesionExcursion> lesion_excursions(const std::vector<ExportedFile>& 
   return out;
 }
 
+std::string lesions_csv(const std::vector<ExportedFile>& written) {
+  std::string csv = "phase,volume_ml,name,lung,x_mm,y_mm,z_mm,dx_mm,dy_mm,dz_mm\n";
+  char row[320];
+  for (const ExportedFile& f : written)
+    for (const LesionAt& l : f.lesions) {
+      const Eigen::Vector3d at = l.centre_mm + l.displacement_mm;
+      std::snprintf(row, sizeof row, "%.4f,%.3f,%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", f.phase, f.volume_ml,
+                    l.name.c_str(), l.lung.c_str(), at.x(), at.y(), at.z(), l.displacement_mm.x(),
+                    l.displacement_mm.y(), l.displacement_mm.z());
+      csv += row;
+    }
+  return csv;
+}
+
 std::string series_path(const std::string& out, int index) {
   const std::size_t dot = out.rfind('.'), slash = out.rfind('/');
   const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
@@ -148,11 +163,21 @@ Status check_export_command(const ExportCommand& c) {
   if (c.interior && std::filesystem::path(c.interior_out).lexically_normal() ==
                         std::filesystem::path(c.out).lexically_normal())
     return fail("--interior-out: expected a file other than --out's, got '" + c.interior_out + "' for both");
+  if (!c.lesions_out.empty() && c.lesions.empty())
+    return fail("--lesions-out: expected --lesion NAME=x,y,z,radius_mm (the lesions to write) with it");
+  const auto same = [](const std::string& a, const std::string& b) {
+    return !a.empty() && std::filesystem::path(a).lexically_normal() == std::filesystem::path(b).lexically_normal();
+  };
+  if (same(c.lesions_out, c.out) || same(c.lesions_out, c.interior_out))
+    return fail("--lesions-out: expected a file other than --out's and --interior-out's, got '" + c.lesions_out +
+                "'");
   return ok();
 }
 
-Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
-  if (Status s = check_export_command(c); !s) return s.with_context("");
+namespace {
+
+/// The PLY file(s) of the export (export_phases) and, after them, --lesions-out's CSV.
+Result<std::vector<ExportedFile>> export_phases(const ExportCommand& c) {
   auto g = command_gravity(c);
   if (!g) return g.with_context("");
   if (!std::isfinite(c.volume_ml)) return fail("--volume-ml: expected a finite number of millilitres");
@@ -207,6 +232,20 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
       return s.with_context("");
     written.push_back(f);
   }
+  return written;
+}
+
+}  // namespace
+
+Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& c) {
+  if (Status s = check_export_command(c); !s) return s.with_context("");
+  // Checked first, so that an unwritable CSV costs no PLY: the CSV is written last, from what the phases measured.
+  if (!c.lesions_out.empty())
+    if (Status s = check_writable(c.lesions_out); !s) return s.with_context("--lesions-out: ");
+  auto written = export_phases(c);
+  if (!written || c.lesions_out.empty()) return written;
+  if (Status s = write_file_atomically(c.lesions_out, lesions_csv(*written)); !s)
+    return s.with_context("--lesions-out: ");
   return written;
 }
 

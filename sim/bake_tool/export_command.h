@@ -26,12 +26,14 @@ struct ExportCommand {
   std::optional<int> interior;             ///< that many points uniform over the lungs' volume (> 0; kInteriorSeed)
   std::string interior_out;                ///< their PLY, vertices only (with --series: the stem, as `out`)
   std::vector<std::string> lesions;        ///< "NAME=x,y,z,radius_mm" (sim/motion/lesion.h), each moved and reported
+  std::string lesions_out;                 ///< a CSV of each lesion's position in each phase; needs --lesion
 };
 
 /// A lesion's displacement in one exported phase.
 struct LesionAt {
   std::string name;
   std::string lung;                 ///< the asset's lung name, "left" or "right"
+  Eigen::Vector3d centre_mm;        ///< its centre at rest (LPS)
   Eigen::Vector3d displacement_mm;  ///< its centre's, from rest (LPS)
 };
 
@@ -55,8 +57,8 @@ struct ExportedFile {
 };
 
 /// The options' own consistency, before any file is read (the command line exits 2 on it): --interior N needs
-/// N > 0 and --interior-out, --interior-out needs --interior, and the two outputs differ. One line naming the
-/// option and what was expected.
+/// N > 0 and --interior-out, --interior-out needs --interior, --lesions-out needs --lesion, and the outputs
+/// differ. One line naming the option and what was expected.
 Status check_export_command(const ExportCommand& command);
 
 /// Writes the PLY file(s), whole or not at all (the interior points' file too: when either of a phase's two files
@@ -66,6 +68,10 @@ Result<std::vector<ExportedFile>> run_export_command(const ExportCommand& comman
 /// Each lesion's excursion over the exported files: over one breath with --series, from rest to --volume-ml
 /// without.
 std::vector<LesionExcursion> lesion_excursions(const std::vector<ExportedFile>& written);
+
+/// --lesions-out's CSV: "phase,volume_ml,name,lung,x_mm,y_mm,z_mm,dx_mm,dy_mm,dz_mm", one row per lesion per
+/// exported phase, the position displaced (LPS, mm).
+std::string lesions_csv(const std::vector<ExportedFile>& written);
 
 /// "FILE.ply" with --series: FILE_000.ply, FILE_001.ply, ...
 std::string series_path(const std::string& out, int index);

@@ -173,6 +173,9 @@ void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::str
                  "around it; its excursion is reported (with --series over one breath, else from rest to "
                  "--volume-ml); repeatable")
       ->allow_extra_args(false);
+  sub.add_option("--lesions-out", cmd.lesions_out,
+                 "a CSV of each lesion's position in each exported phase (phase, volume_ml, name, lung, x_mm, y_mm, "
+                 "z_mm, dx_mm, dy_mm, dz_mm; LPS); needs --lesion");
 }
 
 /// Runs the export and says what it wrote; the exit code.

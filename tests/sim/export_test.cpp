@@ -5,6 +5,7 @@
 ///        refusals that leave no file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -270,18 +271,19 @@ Eigen::Vector3d deep_point(const InteriorDisplacement& field, std::size_t lung, 
     hi = std::max<double>(hi, points.positions[3 * k + 2]);
   }
   const double z = lo + height * (hi - lo);
-  Eigen::Vector3d best(0, 0, 0);
-  double nearest = 1e300;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    if (points.lung_of_point[k] != lung) continue;
-    const Eigen::Vector3d p(points.positions[3 * k], points.positions[3 * k + 1], points.positions[3 * k + 2]);
-    if (std::abs(p.z() - z) >= nearest || !place_lesions(field, {{"probe", p, radius}})) continue;
-    nearest = std::abs(p.z() - z);
-    best = p;
+  std::vector<Eigen::Vector3d> candidates;  // this lung's samples, nearest the height first
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (points.lung_of_point[k] == lung)
+      candidates.emplace_back(points.positions[3 * k], points.positions[3 * k + 1], points.positions[3 * k + 2]);
+  std::sort(candidates.begin(), candidates.end(), [z](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return std::abs(a.z() - z) < std::abs(b.z() - z);
+  });
+  for (const Eigen::Vector3d& p : candidates) {
+    if (std::abs(p.z() - z) > 0.08 * (hi - lo)) break;
+    if (place_lesions(field, {{"probe", p, radius}})) return p;
   }
-  EXPECT_LT(nearest, 0.08 * (hi - lo)) << "no room for a " << radius << " mm lesion at " << height
-                                       << " of the lung's height";
-  return best;
+  ADD_FAILURE() << "no room for a " << radius << " mm lesion at " << height << " of the lung's height";
+  return Eigen::Vector3d::Zero();
 }
 
 std::string lesion_spec(const std::string& name, const Eigen::Vector3d& c, double radius) {
@@ -304,11 +306,33 @@ TEST_F(Export, ALowerLesionMovesCranioCaudallyMoreThanTwiceAnUpperOne) {
   ExportCommand c;
   c.asset = asset_;
   c.out = dir_.file("breath.ply");
-  c.series = 12;
+  c.series = 6;
   c.lesions = {lesion_spec("lower", deep_point(field, right, 0.2, 2.0), 2.0),
                lesion_spec("upper", deep_point(field, right, 0.8, 2.0), 2.0)};
+  c.lesions_out = dir_.file("lesions.csv");
   auto written = run_export_command(c);
   ASSERT_TRUE(written) << written.error();
+  // The CSV: a header, then each lesion in each phase, displaced position = rest + displacement.
+  std::istringstream csv(lungar::testing::file_text(c.lesions_out));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line, "phase,volume_ml,name,lung,x_mm,y_mm,z_mm,dx_mm,dy_mm,dz_mm");
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) {
+    const ExportedFile& f = (*written)[rows / 2];
+    const LesionAt& l = f.lesions[rows % 2];
+    std::ostringstream want;
+    want.setf(std::ios::fixed);
+    want.precision(4);
+    want << f.phase << ',';
+    want.precision(3);
+    want << f.volume_ml << ',' << l.name << ',' << l.lung << ',';
+    want.precision(4);
+    want << l.centre_mm.x() + l.displacement_mm.x();
+    EXPECT_EQ(line.rfind(want.str(), 0), 0u) << line << " | " << want.str();
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2u * 6u);
   ASSERT_EQ((*written)[0].lesions.size(), 2u);
   EXPECT_EQ((*written)[0].lesions[0].lung, "right");
   const std::vector<LesionExcursion> e = lesion_excursions(*written);
@@ -357,7 +381,19 @@ TEST_F(Export, ALesionOutsideItsLungIsOneLineAndNoFile) {
   auto twice = run_export_command(c);
   ASSERT_FALSE(twice);
   EXPECT_NE(twice.error().find("--lesion twice: expected each name once"), std::string::npos) << twice.error();
+  c.lesions.clear();
+  c.lesions_out = dir_.file("lesions.csv");
+  auto alone = run_export_command(c);
+  ASSERT_FALSE(alone);
+  EXPECT_EQ(alone.error(), "--lesions-out: expected --lesion NAME=x,y,z,radius_mm (the lesions to write) with it");
+  EXPECT_FALSE(check_export_command(c)) << "the command line's own check";
+  EXPECT_FALSE(std::filesystem::exists(c.out));
   c.lesions = {lesion_spec("ok", inside, 1)};
+  c.lesions_out = c.out;
+  auto same = run_export_command(c);
+  ASSERT_FALSE(same);
+  EXPECT_NE(same.error().find("--lesions-out: expected a file other than --out's"), std::string::npos);
+  c.lesions_out.clear();
   EXPECT_TRUE(run_export_command(c)) << "the same point and a small radius are accepted";
 }
 

@@ -97,8 +97,7 @@ ScenarioEvent read_event(TomlSection s, const toml::table& t, int index) {
       const bool rotation = read_rotation(s, e.rotation_wxyz);
       if (rotation && !e.pose.empty()) s.fail("rotation_wxyz", "expected either to or rotation_wxyz, got both");
       if (!rotation && e.pose.empty()) {
-        s.fail("to", "expected the pose to turn to (\"upright\" | \"supine\" | \"prone\" | \"left_lateral\" | "
-                     "\"right_lateral\") or rotation_wxyz, got nothing");
+        s.fail("to", "expected the pose to turn to (" + kPoseNames.expected() + ") or rotation_wxyz, got nothing");
       }
       e.over_s = required("over_s", 0.01, 600.0, "s", "the duration of the turn");
       break;

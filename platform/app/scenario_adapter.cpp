@@ -35,7 +35,7 @@ Status fill_change(const config::ScenarioEvent& e, sim::PatternChange& c) {
 
 Result<sim::BreathingParams> to_breathing_params(const config::BreathingSettings& b) {
   const auto preset = sim::preset_from_name(b.preset);
-  if (!preset) return fail("preset: expected \"normal\" | \"emphysema\" | \"fibrosis\", got \"" + b.preset + "\"");
+  if (!preset) return fail("preset: expected " + kPresetNames.expected() + ", got \"" + b.preset + "\"");
   sim::BreathingParams out;
   out.preset = *preset;
   out.rate_bpm = b.rate_bpm;

@@ -27,8 +27,11 @@ Result<Eigen::Vector3d> command_gravity(const ExportCommand& c) {
   std::string name = c.posture;
   std::replace(name.begin(), name.end(), '-', '_');
   const std::optional<Pose> pose = pose_from_name(name);
-  if (!pose)
-    return fail("--posture: expected upright, supine, prone, left-lateral or right-lateral, got '" + c.posture + "'");
+  if (!pose) {
+    std::string postures = kPoseNames.expected();  // the command line spells them with '-'
+    std::replace(postures.begin(), postures.end(), '_', '-');
+    return fail("--posture: expected " + postures + ", got '" + c.posture + "'");
+  }
   return gravity_in_lung_frame(pose_rotation(*pose));
 }
 

@@ -200,8 +200,8 @@ TEST(BadScenario, TurnWithoutDurationOrTarget) {
             "bad.toml:1: key 'event[0].over_s': expected the duration of the turn, a number in [0.01, 600] s, got "
             "nothing");
   EXPECT_EQ(error_of("[[event]]\nat_s = 1\nkind = \"turn\"\nover_s = 2\n"),
-            "bad.toml:1: key 'event[0].to': expected the pose to turn to (\"upright\" | \"supine\" | \"prone\" | "
-            "\"left_lateral\" | \"right_lateral\") or rotation_wxyz, got nothing");
+            "bad.toml:1: key 'event[0].to': expected the pose to turn to (upright, supine, prone, left_lateral or "
+            "right_lateral) or rotation_wxyz, got nothing");
   EXPECT_EQ(error_of("[[event]]\nat_s = 1\nkind = \"turn\"\nover_s = 2\nrotation_wxyz = [1, 1, 0, 0]\n"),
             "bad.toml:5: key 'event[0].rotation_wxyz': expected a unit quaternion [w, x, y, z] (norm 1 within 1e-3), "
             "got norm 1.41421");

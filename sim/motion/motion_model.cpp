@@ -3,6 +3,7 @@
 #include "sim/motion/motion_model.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -27,18 +28,10 @@ SlidingFaces default_sliding_faces() {
 MotionBoundary sliding_boundary(const std::vector<SurfaceRegion>& regions, const TriMesh& mesh,
                                 const std::vector<Eigen::Vector3d>& normals, const SlidingFaces& faces) {
   const auto n = static_cast<Eigen::Index>(regions.size());
-  double lo = 1e300, hi = -1e300;
-  for (const Eigen::Vector3d& p : mesh.positions) {
-    lo = std::min(lo, p.y());
-    hi = std::max(hi, p.y());
-  }
-  const double mid = 0.5 * (lo + hi), depth = std::max(hi - lo, 1e-9);
-  double bottom = 1e300, top = -1e300;
-  for (const Eigen::Vector3d& p : mesh.positions) {
-    bottom = std::min(bottom, p.z());
-    top = std::max(top, p.z());
-  }
-  const double height = std::max(top - bottom, 1e-9);
+  Eigen::AlignedBox3d box;  // the lung's extent: its depth (y) weights the drives, its height (z) fades the slide
+  for (const Eigen::Vector3d& p : mesh.positions) box.extend(p);
+  const double mid = box.center().y(), depth = std::max(box.sizes().y(), 1e-9);
+  const double bottom = box.min().z(), height = std::max(box.sizes().z(), 1e-9);
   MotionBoundary b;
   b.tether_scale.resize(regions.size());
   b.drive = Eigen::MatrixXd::Zero(n, 3);

@@ -17,8 +17,8 @@ namespace lungar {
 class LogHistogram {
  public:
   static constexpr double kMin = 1e-3, kMax = 1e5, kGrowth = 1.01;
-  static constexpr double kRelativeError = 0.005;  ///< of a percentile, for values in [kMin, kMax]
-  static constexpr int kBuckets = 1852;            ///< ceil(ln(kMax / kMin) / ln(kGrowth))
+  static constexpr double kRelativeError = 0.005;             ///< of a percentile, for values in [kMin, kMax]
+  static constexpr int kBuckets = 1852;                       ///< ceil(ln(kMax / kMin) / ln(kGrowth))
   static inline const double kLogGrowth = std::log(kGrowth);  ///< once, not at every add()
 
   /// Counts `value` (any finite number; values <= kMin share the first bucket). Allocates nothing.

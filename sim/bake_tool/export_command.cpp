@@ -79,8 +79,8 @@ Status write_one(const BakedAsset& a, const PatientState& patient, const Eigen::
     const std::vector<float> dl = interior->field.displacement(d, interior->lesion_centres);
     for (std::size_t k = 0; k < interior->lesions.size(); ++k) {
       const PlacedLesion& l = interior->lesions[k];
-      written.lesions.push_back(
-          {l.lesion.name, a.lungs[l.lung].name, l.lesion.centre_mm, Eigen::Vector3d(dl[3 * k], dl[3 * k + 1], dl[3 * k + 2])});
+      written.lesions.push_back({l.lesion.name, a.lungs[l.lung].name, l.lesion.centre_mm,
+                                 Eigen::Vector3d(dl[3 * k], dl[3 * k + 1], dl[3 * k + 2])});
     }
   }
   if (interior && interior->write_points) {
@@ -172,14 +172,13 @@ Status check_export_command(const ExportCommand& c) {
     return !a.empty() && std::filesystem::path(a).lexically_normal() == std::filesystem::path(b).lexically_normal();
   };
   if (same(c.lesions_out, c.out) || same(c.lesions_out, c.interior_out))
-    return fail("--lesions-out: expected a file other than --out's and --interior-out's, got '" + c.lesions_out +
-                "'");
+    return fail("--lesions-out: expected a file other than --out's and --interior-out's, got '" + c.lesions_out + "'");
   return ok();
 }
 
 namespace {
 
-/// The PLY file(s) of the export (export_phases) and, after them, --lesions-out's CSV.
+/// The PLY file(s) of the export, one per phase, with what each measured; run_export_command() writes the CSV after.
 Result<std::vector<ExportedFile>> export_phases(const ExportCommand& c) {
   auto g = command_gravity(c);
   if (!g) return g.with_context("");

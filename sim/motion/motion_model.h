@@ -9,9 +9,9 @@
 ///   b_J per face (diaphragmatic: caudal; costal: a push along the normal, the ribs' pump- and bucket-handle
 ///   motion, and a caudal slide that fades towards the top; apical: the push alone; mediastinal: none) and a
 ///   tether factor s per face (diaphragmatic, costal and apical: weak, so the faces follow the diaphragm and slide;
-///   mediastinal: strong, held at the hilum). Each vertex then moves along one baked direction e_I, the principal direction of
-///   its displacement over every orientation, so that the run time is the paper's, D = sum f_lm T^I_lm, p' =
-///   p + D e_I, plus an off-axis part exact for the linear pressure (sim/asset/baked_asset.h, off_axis).
+///   mediastinal: strong, held at the hilum). Each vertex then moves along one baked direction e_I, the principal
+///   direction of its displacement over every orientation, so that the run time is the paper's,
+///   D = sum f_lm T^I_lm, p' = p + D e_I, plus an off-axis part exact for the linear pressure (sim/asset/baked_asset.h, off_axis).
 #pragma once
 
 #include <Eigen/Core>

@@ -89,7 +89,8 @@ TEST(SlidingModel, MovesLikeFourDimensionalCtSupine) {
   EXPECT_LT(face(SurfaceRegion::mediastinal).mean_displacement_mm,
             0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "held at the hilum";
   EXPECT_LT(face(SurfaceRegion::apical).mean_displacement_mm,
-            0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm) << "the top of the cupola moves least";
+            0.2 * face(SurfaceRegion::diaphragmatic).mean_displacement_mm)
+      << "the top of the cupola moves least";
 
   const MotionFigures prone = motion_figures(a, displacement_vectors(a, PatientState::of(a), kProne, 500), regions);
   EXPECT_LT(prone.dorsal_ventral_ratio, supine.dorsal_ventral_ratio) << "gravity keeps its role";

@@ -55,8 +55,8 @@ TEST(BreathFactory, NamesTheModelAMarkerADdsSourceOrElseATraceFile) {
   EXPECT_EQ(breath_kind("marker:stylus"), BreathKind::Marker);
   for (const char* dds : {"amm", "amm@3", "openice", "openice:flow@7", "openice@232", "amm:volume"})
     EXPECT_EQ(breath_kind(dds), BreathKind::Dds) << dds;
-  for (const char* file : {"traces/amm@home.csv", "ammonia.csv", "openice.vxp", "markers.csv", "model.csv",
-                           "model@2", "marker", "trace"})
+  for (const char* file :
+       {"traces/amm@home.csv", "ammonia.csv", "openice.vxp", "markers.csv", "model.csv", "model@2", "marker", "trace"})
     EXPECT_EQ(breath_kind(file), BreathKind::Trace) << file;
 }
 

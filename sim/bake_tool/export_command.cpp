@@ -28,9 +28,11 @@ Result<Eigen::Vector3d> command_gravity(const ExportCommand& c) {
   std::replace(name.begin(), name.end(), '-', '_');
   const std::optional<Pose> pose = pose_from_name(name);
   if (!pose) {
-    std::string postures = kPoseNames.expected();  // the command line spells them with '-'
-    std::replace(postures.begin(), postures.end(), '_', '-');
-    return fail("--posture: expected " + postures + ", got '" + c.posture + "'");
+    const std::vector<std::string> names = posture_names();
+    std::string expected;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return fail("--posture: expected " + expected + ", got '" + c.posture + "'");
   }
   return gravity_in_lung_frame(pose_rotation(*pose));
 }
@@ -144,6 +146,15 @@ std::string series_path(const std::string& out, int index) {
   char number[16];
   std::snprintf(number, sizeof number, "_%03d", index);
   return has_ext ? out.substr(0, dot) + number + out.substr(dot) : out + number + ".ply";
+}
+
+std::vector<std::string> posture_names() {
+  std::vector<std::string> names;
+  for (const auto& [pose, name] : kPoseNames.entries) {
+    names.emplace_back(name);
+    std::replace(names.back().begin(), names.back().end(), '_', '-');
+  }
+  return names;
 }
 
 Result<Eigen::Vector3d> parse_gravity(const std::string& text) {

@@ -76,6 +76,10 @@ std::string lesions_csv(const std::vector<ExportedFile>& written);
 /// "FILE.ply" with --series: FILE_000.ply, FILE_001.ply, ...
 std::string series_path(const std::string& out, int index);
 
+/// The postures as --posture spells them: the pose names (config/base/patient_names.h) with '-' for '_'
+/// ("left-lateral"), in their table's order.
+std::vector<std::string> posture_names();
+
 /// "x,y,z" -> a unit vector, or why not (three finite numbers, not all zero).
 Result<Eigen::Vector3d> parse_gravity(const std::string& text);
 

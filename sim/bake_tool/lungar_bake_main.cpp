@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -14,7 +13,6 @@
 
 #include "config/base/command_line.h"
 #include "config/base/log_line.h"
-#include "config/base/patient_names.h"
 #include "lungar/version.h"
 #include "sim/bake_tool/bake_command.h"
 #include "sim/bake_tool/export_command.h"
@@ -143,16 +141,10 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
 /// `lungar-bake export`: its options on `sub`; --gravity is parsed after the command line.
 void add_export_options(CLI::App& sub, lungar::sim::ExportCommand& cmd, std::string& gravity) {
   sub.add_option("--asset", cmd.asset, "the .lungbake asset")->required();
-  // The pose names (config/base/patient_names.h), with '-' for '_' as a command line spells them.
-  std::vector<std::string> postures;
-  for (const auto& [pose, name] : lungar::kPoseNames.entries) {
-    postures.emplace_back(name);
-    std::replace(postures.back().begin(), postures.back().end(), '_', '-');
-  }
   sub.add_option("--posture", cmd.posture,
                  "upright, supine, prone, left-lateral (lying on the left side) or "
                  "right-lateral")
-      ->check(CLI::IsMember(postures))
+      ->check(CLI::IsMember(lungar::sim::posture_names()))
       ->capture_default_str();
   sub.add_option("--gravity", gravity, "x,y,z: gravity's direction in the lung frame (LPS) instead of a posture");
   sub.add_option("--volume-ml", cmd.volume_ml, "the pair's volume change from the rest shape, mL (negative: below "

@@ -174,6 +174,8 @@ TEST_F(Export, RefusalsNameTheFieldAndLeaveNoFile) {
   r = run_export_command(c);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().find("--posture"), std::string::npos) << r.error();
+  EXPECT_EQ(r.error(), "--posture: expected upright, supine, prone, left-lateral or right-lateral, got 'sideways'")
+      << "the command line's spelling of the pose names (posture_names())";
   c.posture = "supine";
   c.out = dir_.file("no/such/dir/../../x.ply");
   std::ofstream(dir_.file("no"), std::ios::binary) << "a file where a folder should be";

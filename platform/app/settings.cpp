@@ -1,5 +1,5 @@
 /// @file settings.cpp
-/// @brief The settings' copy and move: a value, with [trackers] behind its pointer (settings.h says why).
+/// @brief TrackersBox's copy and lifetime, where [trackers]' type is complete (settings.h says why it is boxed).
 /// @ingroup platform
 #include "platform/app/settings.h"
 
@@ -7,29 +7,12 @@
 
 namespace lungar::platform {
 
-Settings::Settings() : trackers_(std::make_unique<drivers::TrackerConfig>()) {}
-Settings::~Settings() = default;
+TrackersBox::TrackersBox() : trackers_(std::make_unique<drivers::TrackerConfig>()) {}
+TrackersBox::~TrackersBox() = default;
+TrackersBox::TrackersBox(const TrackersBox& other)
+    : trackers_(std::make_unique<drivers::TrackerConfig>(*other.trackers_)) {}
 
-Settings::Settings(const Settings& other)
-    : display(other.display),
-      hmd(other.hmd),
-      render(other.render),
-      breathing(other.breathing),
-      registration(other.registration),
-      sim(other.sim),
-      sync(other.sync),
-      source(other.source),
-      trackers_(std::make_unique<drivers::TrackerConfig>(*other.trackers_)) {}
-
-Settings& Settings::operator=(const Settings& other) {
-  display = other.display;
-  hmd = other.hmd;
-  render = other.render;
-  breathing = other.breathing;
-  registration = other.registration;
-  sim = other.sim;
-  sync = other.sync;
-  source = other.source;
+TrackersBox& TrackersBox::operator=(const TrackersBox& other) {
   *trackers_ = *other.trackers_;
   return *this;
 }

@@ -64,20 +64,31 @@ struct SimSettings {
   std::vector<std::string> pathologies;
 };
 
+/// [trackers] behind a pointer, a value all the same: copied whole, never null (a move copies too; settings are
+/// copied a few times at start, never per frame). Its members are defined in settings.cpp, where the type is
+/// complete, so that Settings' own copy, assignment and destruction stay the compiler's, member by member.
+class TrackersBox {
+ public:
+  TrackersBox();
+  ~TrackersBox();
+  TrackersBox(const TrackersBox& other);
+  TrackersBox& operator=(const TrackersBox& other);
+
+  drivers::TrackerConfig& get() { return *trackers_; }
+  const drivers::TrackerConfig& get() const { return *trackers_; }
+
+ private:
+  std::unique_ptr<drivers::TrackerConfig> trackers_;
+};
+
 /// The whole tree. `source` names the file it came from ("<defaults>" when none).
 ///
-/// [trackers] is held behind a pointer, a value all the same (copied with the rest): the settings are seen by
-/// some thirty files (outputs, the bench, the doctor's checks) that never touch a tracker, and the trackers' table
-/// composes every device's settings. Only the files that call trackers() include drivers/tracker/tracker_config.h.
-/// A move copies (settings are copied a few times at start, never per frame), so trackers() is never null.
+/// [trackers] is boxed (TrackersBox): the settings are seen by some thirty files (outputs, the bench, the doctor's
+/// checks) that never touch a tracker, and the trackers' table composes every device's settings. Only the files
+/// that call trackers() include drivers/tracker/tracker_config.h.
 struct Settings {
-  Settings();
-  ~Settings();
-  Settings(const Settings& other);
-  Settings& operator=(const Settings& other);
-
-  drivers::TrackerConfig& trackers() { return *trackers_; }
-  const drivers::TrackerConfig& trackers() const { return *trackers_; }
+  drivers::TrackerConfig& trackers() { return trackers_.get(); }
+  const drivers::TrackerConfig& trackers() const { return trackers_.get(); }
 
   DisplaySettings display;
   HmdSettings hmd;
@@ -89,7 +100,7 @@ struct Settings {
   std::string source = "<defaults>";
 
  private:
-  std::unique_ptr<drivers::TrackerConfig> trackers_;  ///< never null
+  TrackersBox trackers_;
 };
 
 }  // namespace lungar::platform

@@ -8,6 +8,8 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -59,6 +61,30 @@ TriMesh interior_lung_mesh(const BakedAsset& a, const BakedLung& lung) {
     m.triangles.push_back({v[0] - lung.first_vertex, v[1] - lung.first_vertex, v[2] - lung.first_vertex});
   }
   return m;
+}
+
+/// A grid node around a point and its trilinear weight.
+struct Corner {
+  Eigen::Vector3i node;
+  double weight = 0;
+};
+
+/// The 8 nodes of the grid cell holding x (clamped onto the grid) and their trilinear weights, which sum to 1.
+std::array<Corner, 8> corners(const VoxelGrid& g, double h, const Eigen::Vector3d& x) {
+  const Eigen::Vector3d q = (x - g.origin) / h;
+  Eigen::Vector3i base;
+  Eigen::Vector3d t;
+  for (int c = 0; c < 3; ++c) {
+    base[c] = std::clamp(static_cast<int>(std::floor(q[c])), 0, g.size[c] - 2);
+    t[c] = std::clamp(q[c] - base[c], 0.0, 1.0);
+  }
+  std::array<Corner, 8> out;
+  for (int corner = 0; corner < 8; ++corner) {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
+    out[static_cast<std::size_t>(corner)] = {
+        base + Eigen::Vector3i(di, dj, dk), (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2])};
+  }
+  return out;
 }
 
 /// A double in [0, 1) from 53 bits of the generator: the same on every standard library (std::uniform_real_
@@ -223,7 +249,6 @@ std::vector<float> InteriorDisplacement::displacement(std::span<const float> sur
       u = l.solver.solveWithGuess(rhs, guess);
     }
     const VoxelGrid& g = l.grid.grid;
-    const double h = spacing_;
     auto node_value = [&](int i, int j, int k) -> Eigen::Vector3d {
       const auto n = static_cast<std::size_t>(g.index(i, j, k));
       if (l.unknown[n] >= 0) return u.row(l.unknown[n]).transpose();
@@ -234,22 +259,43 @@ std::vector<float> InteriorDisplacement::displacement(std::span<const float> sur
     for (std::size_t p = 0; p < points.size(); ++p) {
       if (std::size_t{points.lung_of_point[p]} != li) continue;
       const Eigen::Vector3d x(points.positions[3 * p], points.positions[3 * p + 1], points.positions[3 * p + 2]);
-      const Eigen::Vector3d q = (x - g.origin) / h;
-      Eigen::Vector3i base;
-      Eigen::Vector3d t;
-      for (int c = 0; c < 3; ++c) {
-        base[c] = std::clamp(static_cast<int>(std::floor(q[c])), 0, g.size[c] - 2);
-        t[c] = std::clamp(q[c] - base[c], 0.0, 1.0);
-      }
       Eigen::Vector3d value = Eigen::Vector3d::Zero();
-      for (int corner = 0; corner < 8; ++corner) {
-        const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-        const double w = (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2]);
-        if (w > 0) value += w * node_value(base[0] + di, base[1] + dj, base[2] + dk);
-      }
+      for (const Corner& c : corners(g, spacing_, x))
+        if (c.weight > 0) value += c.weight * node_value(c.node[0], c.node[1], c.node[2]);
       for (int c = 0; c < 3; ++c) out[3 * p + c] = static_cast<float>(value[c]);
     }
   }
+  return out;
+}
+
+std::vector<VertexWeight> InteriorDisplacement::surface_weights(const Eigen::Vector3d& p, std::size_t lung) const {
+  const Lung& l = *lungs_.at(lung);
+  const VoxelGrid& g = l.grid.grid;
+  // p's weights on the inside nodes (a) and, directly, on surface points (its boundary corners', and the nearest
+  // surface point of a corner that is neither, as displacement() takes them).
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(l.laplacian.rows());
+  std::vector<std::pair<NearestPoint, double>> direct;
+  for (const Corner& c : corners(g, spacing_, p)) {
+    if (c.weight <= 0) continue;
+    const auto n = static_cast<std::size_t>(g.index(c.node[0], c.node[1], c.node[2]));
+    if (l.unknown[n] >= 0) a[l.unknown[n]] += c.weight;
+    else if (l.boundary[n] >= 0) direct.emplace_back(l.boundary_point[static_cast<std::size_t>(l.boundary[n])], c.weight);
+    else direct.emplace_back(l.tree->nearest(g.point(c.node.cast<double>())), c.weight);
+  }
+  // The boundary values' weights: C' z with L z = a.
+  if (a.any()) {
+    const Eigen::VectorXd z = l.solver.solve(a);
+    const Eigen::VectorXd beta = l.coupling.transpose() * z;
+    for (Eigen::Index j = 0; j < beta.size(); ++j)
+      if (beta[j] != 0) direct.emplace_back(l.boundary_point[static_cast<std::size_t>(j)], beta[j]);
+  }
+  std::map<std::uint32_t, double> by_vertex;
+  for (const auto& [q, w] : direct)
+    for (int k = 0; k < 3; ++k) by_vertex[l.first_vertex + l.mesh.triangles[q.triangle][k]] += w * q.weights[k];
+  std::vector<VertexWeight> out;
+  out.reserve(by_vertex.size());
+  for (const auto& [v, w] : by_vertex)
+    if (w != 0) out.push_back({v, w});
   return out;
 }
 

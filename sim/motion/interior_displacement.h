@@ -37,6 +37,12 @@
 
 namespace lungar::sim {
 
+/// One surface vertex's weight in the displacement of a point inside a lung (InteriorDisplacement::surface_weights).
+struct VertexWeight {
+  std::uint32_t vertex = 0;  ///< the asset's vertex index
+  double weight = 0;
+};
+
 /// Points inside the lungs, at rest.
 struct InteriorPoints {
   std::vector<float> positions;             ///< 3 per point, mm, lung frame (LPS)
@@ -84,6 +90,14 @@ class InteriorDisplacement {
   /// `surface_d` (3 per vertex, mm): per lung, Laplace's equation solved with the surface as its boundary, then
   /// interpolated. Linear in surface_d.
   std::vector<float> displacement(std::span<const float> surface_d, const InteriorPoints& points) const;
+
+  /// The weights E(p, I) of the point p inside lung `lung`: for every surface displacement d, displacement() at p
+  /// is sum_I E(p, I) d_I (the field is linear in d). One adjoint solve: p's value is a' u + beta' b with a, beta
+  /// its trilinear weights on the inside and boundary nodes and u = L^-1 C b, so its weights on the boundary
+  /// values are C' L^-1 a + beta (L is symmetric), spread onto the vertices by each boundary node's barycentric
+  /// weights. They sum to 1 (a uniform motion of the surface moves every inside point alike) and are all >= 0 up
+  /// to the solver's tolerance (the discrete maximum principle). Only non-zero weights are returned, by vertex.
+  std::vector<VertexWeight> surface_weights(const Eigen::Vector3d& p, std::size_t lung) const;
 
  private:
   struct Lung;

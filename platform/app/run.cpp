@@ -23,6 +23,7 @@
 #include "platform/app/run_limit.h"
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
+#include "platform/app/scene_lesions.h"
 #include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/pathology_course.h"
@@ -168,6 +169,9 @@ Status open_output_and_scene(Settings& s, bool procedural, const std::optional<c
   const sim::BakedAsset& a = parts.scene->asset();
   log_line("asset: " + parts.scene->name() + ": " + std::to_string(a.vertex_count()) + " nodes, " +
            std::to_string(a.lungs.size()) + " lungs, " + std::to_string(a.coefficients()) + " SH coefficients");
+  auto lesions = scene_lesions(s.sim.lesions, a);
+  if (!lesions) return lesions.with_context("");
+  parts.lesions = lesions.take();
   return ok();
 }
 

@@ -11,6 +11,7 @@
 
 #include "config/base/clock.h"
 #include "drivers/tracker/tracker_config.h"
+#include "sim/motion/lesion.h"
 #include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
@@ -112,6 +113,11 @@ void add_input_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--pathology", o.pathologies,
                  "SPEC, repeatable, each pathology once: " + sim::pathology_syntaxes() + "; default: sim.pathology")
       ->allow_extra_args(false);
+  app.add_option("--lesion", o.lesions,
+                 "NAME=x,y,z,radius_mm, repeatable: a lesion (a tumour) inside a lung, in the asset's frame (LPS, "
+                 "mm), drawn in its own colour through the lungs and moving with the tissue around it; its "
+                 "excursion is in the stats JSON's lesions (default: sim.lesion)")
+      ->allow_extra_args(false);
   app.add_option("--breath", o.breath_paths,
                  "FILE: breathe with a recorded respiratory surrogate (CSV t_s,value or t_s,x_mm,y_mm,z_mm, a Varian "
                  "RPM .vxp or an ExtMarker export), the model taking over before calibration and when the trace "
@@ -194,6 +200,12 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
     }
     if (Status distinct = sim::check_pathologies(o.pathologies); !distinct) return distinct.with_context("--pathology: ");
     s.sim.pathologies = o.pathologies;
+  }
+  if (!o.lesions.empty()) {
+    for (const std::string& spec : o.lesions) {
+      if (auto l = sim::parse_lesion(spec); !l) return fail(l.error());
+    }
+    s.sim.lesions = o.lesions;
   }
   if (!o.scenario_path.empty()) s.breathing.scenario = o.scenario_path;
   if (Status out = override_choice("--output", o.output, kOutputNames, s.display.output); !out) return out;

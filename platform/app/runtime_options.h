@@ -20,6 +20,7 @@ struct RuntimeOptions {
   bool procedural = false;    ///< draw the procedural pair, not the demo's CT lungs
   std::string scenario_path;  ///< breathing/orientation scenario TOML
   std::vector<std::string> pathologies;  ///< --pathology, repeatable: replaces sim.pathology when given
+  std::vector<std::string> lesions;      ///< --lesion, repeatable: replaces sim.lesion when given
   /// --breath: a source to follow instead of the model (a recording, marker:ROLE, amm, openice); given several
   /// times, recordings of one session, of which the clearest breathing is followed
   std::vector<std::string> breath_paths;

@@ -34,6 +34,7 @@ RuntimeConfig runtime_config(const Settings& s) {
   c.ventilation_map = r.ventilation_map;
   c.ventilation_full_scale_mm = static_cast<float>(r.ventilation_full_scale_mm);
   c.color_left = to_glm(r.color_left);
+  c.color_lesion = to_glm(r.color_lesion);
   c.color_right = to_glm(r.color_right);
   c.background = to_glm(r.background);
   c.registration = registration_isometry(s.registration.translation_mm, s.registration.rotation_wxyz);

@@ -41,6 +41,7 @@ struct RenderSettings {
   double ventilation_full_scale_mm = 20.0;  ///< the sweep per breath at the ramp's top
   std::array<double, 3> color_left = {0.90, 0.45, 0.45};
   std::array<double, 3> color_right = {0.45, 0.60, 0.95};
+  std::array<double, 3> color_lesion = {1.00, 0.85, 0.10};
   std::array<double, 3> background = {0.0, 0.0, 0.0};
 };
 
@@ -62,6 +63,9 @@ struct SimSettings {
   /// Pathologies applied to the asset when it is loaded, in order (sim/pathology/pathology.h), e.g.
   /// "pneumothorax:right:30"; empty: healthy lungs.
   std::vector<std::string> pathologies;
+  /// Lesions drawn inside the lungs and moved by the interior field (sim/motion/lesion.h), "NAME=x,y,z,radius_mm"
+  /// in the asset's frame (LPS, mm); empty: none.
+  std::vector<std::string> lesions;
 };
 
 /// [trackers] behind a pointer, a value all the same: copied whole, never null (a move copies too; settings are

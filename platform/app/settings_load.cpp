@@ -12,6 +12,7 @@
 #include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "sim/motion/lesion.h"
 #include "sim/pathology/pathology.h"
 
 namespace lungar::platform {
@@ -37,6 +38,7 @@ void read_render(TomlSection s, RenderSettings& r) {
   s.number("ventilation_full_scale_mm", r.ventilation_full_scale_mm, 1.0, 100.0, "mm");
   s.numbers("color_left", r.color_left, 0.0, 1.0, "(linear RGB)");
   s.numbers("color_right", r.color_right, 0.0, 1.0, "(linear RGB)");
+  s.numbers("color_lesion", r.color_lesion, 0.0, 1.0, "(linear RGB)");
   s.numbers("background", r.background, 0.0, 1.0, "(linear RGB)");
   s.finish();
 }
@@ -67,6 +69,10 @@ void read_sim(TomlSection s, SimSettings& m) {
     if (auto p = sim::parse_pathology(spec); !p) s.fail("pathology", p.error());
   }
   if (Status distinct = sim::check_pathologies(m.pathologies); !distinct) s.fail("pathology", distinct.error());
+  s.texts("lesion", m.lesions);
+  for (const std::string& spec : m.lesions) {
+    if (auto l = sim::parse_lesion(spec, "lesion"); !l) s.fail("lesion", l.error());
+  }
   s.finish();
 }
 

@@ -85,6 +85,21 @@ Result<std::unique_ptr<Runtime>> Runtime::create(const RuntimeConfig& config, Ru
     // LPS: +x is the patient's left, so the lung whose centre has the larger x is the left one.
     r->lung_frames_[l].color = asset.lungs[l].centre[0] >= 0 ? config.color_left : config.color_right;
   }
+  if (!r->parts_.lesions.empty()) {
+    Result<render::LesionDrawable> drawable = render::LesionDrawable::create();
+    if (!drawable) return drawable.with_context("lesion: ");
+    r->lesion_drawable_.emplace(drawable.take());
+    for (const sim::LesionRows& lesion : r->parts_.lesions) {
+      if (lesion.placed.lung >= asset.lungs.size() || lesion.sh.size() != 3 * std::size_t{c})
+        return fail("lesion " + lesion.placed.lesion.name + ": expected rows for this asset's lungs and " +
+                    std::to_string(c) + " coefficients");
+      render::LesionFrame frame;
+      frame.radius_mm = static_cast<float>(lesion.placed.lesion.radius_mm);
+      frame.color = config.color_lesion;
+      r->lesion_frames_.push_back(frame);
+    }
+    r->lesion_excursions_.resize(r->parts_.lesions.size());
+  }
   std::vector<std::string> names;
   for (const sim::BakedLung& lung : asset.lungs) names.push_back(lung.name);
   r->stats_.name_lungs(names);
@@ -181,11 +196,29 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
     lung_frames_[l].volume_change_ml = static_cast<float>(std::isfinite(own) ? own : state.breath.dv_ml * share);
     lung_frames_[l].sweep_ml = static_cast<float>(swing_ml * share);
   }
+  move_lesions();
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
   draw_status_line(state.now_ns, state.breath.dv_ml, views);
   draw_legend(views);
   for (const auto& listener : parts_.listeners) listener->on_frame(state);
   return ok();
+}
+
+/// Each lesion where the interior field puts it: its rows' dot product with its lung's force SH and linear weights,
+/// times its lung's dV, as the shader moves a surface vertex (none for the rest shape); its lung's rest transform
+/// too, so it stays in a lung a pathology reshapes. The path goes into its excursion.
+void Runtime::move_lesions() {
+  for (std::size_t k = 0; k < lesion_frames_.size(); ++k) {
+    const sim::LesionRows& lesion = parts_.lesions[k];
+    const render::LungFrame& lung = lung_frames_[lesion.placed.lung];
+    const Eigen::Vector3d d = source_ == render::PositionSource::Rest
+                                  ? Eigen::Vector3d::Zero()
+                                  : lesion.displacement(lung.force, lung.linear, lung.volume_change_ml);
+    const Eigen::Vector3d at = lesion.placed.lesion.centre_mm + d;
+    lesion_frames_[k].centre_mm = glm::vec3(at.x(), at.y(), at.z());
+    lesion_frames_[k].rest_transform = lung.rest_transform;
+    lesion_excursions_[k].add(d);
+  }
 }
 
 /// The paper's CPU baselines: eq. (7) from the same force SH, or eq. (1) from the transfer rows.
@@ -224,6 +257,7 @@ Status Runtime::draw_views(const render::FrameInputs& in, const FrameViews& view
     parts_.output->bind_target(i);
     if (!views.shared_target) one.eyes = std::span<const render::EyeView>(&views.eyes[i], 1);
     if (Status drawn = renderer.draw(drawable, one, &last_draw_); !drawn) return drawn.with_context("draw: ");
+    if (lesion_drawable_) lesion_drawable_->draw(lesion_frames_, one.model, one.eyes, one.ambient);
   }
   return parts_.output->finish_scene(views);
 }
@@ -333,6 +367,20 @@ nlohmann::ordered_json Runtime::stats_json(double wall_s) const {
   parts_.breathing->add_stats(parts);
   parts_.output->add_stats(parts);
   if (parts_.course) parts_.course->add_stats(parts);
+  if (!parts_.lesions.empty()) {
+    nlohmann::json lesions = nlohmann::json::array();
+    for (std::size_t k = 0; k < parts_.lesions.size(); ++k) {
+      const sim::PlacedLesion& p = parts_.lesions[k].placed;
+      const Eigen::Vector3d& c = p.lesion.centre_mm;
+      lesions.push_back({{"name", p.lesion.name},
+                         {"lung", asset_.lungs[p.lung].name},
+                         {"centre_mm", {c.x(), c.y(), c.z()}},
+                         {"radius_mm", p.lesion.radius_mm},
+                         {"peak_to_peak_mm", lesion_excursions_[k].peak_to_peak_mm()},
+                         {"si_mm", lesion_excursions_[k].si_mm()}});
+    }
+    parts["lesions"] = lesions;
+  }
   for (const auto& [key, value] : parts.items()) j[key] = value;
   j["wall_s"] = wall_s;
   return j;

@@ -29,9 +29,12 @@
 #include "platform/runtime/runtime_config.h"
 #include "platform/runtime/breath_swing.h"
 #include "render/hud_line.h"
+#include "render/lesion_drawable.h"
 #include "render/renderer.h"
 #include "render/ventilation_legend.h"
 #include "sim/deform/deform_eq1.h"
+#include "sim/motion/lesion_excursion.h"
+#include "sim/motion/lesion_rows.h"
 #include "sim/motion/ventral_share.h"
 
 namespace lungar::platform {
@@ -45,6 +48,8 @@ struct RuntimeParts {
   std::vector<std::shared_ptr<FrameListener>> listeners;  ///< told of every frame (recorders, the classroom)
   /// The lungs' shapes changing during the run (none: as loaded).
   std::shared_ptr<LungCourse> course;
+  /// Lesions inside the lungs, each with its own coefficient rows (sim/motion/lesion_rows.h); none: none drawn.
+  std::vector<sim::LesionRows> lesions;
   /// The frame's clock (monotonic ns); the bench scripts it so that every configuration sees the same inputs.
   std::function<std::int64_t()> clock = monotonic_ns;
 };
@@ -90,6 +95,7 @@ class Runtime {
 
   void follow_course(std::int64_t now_ns);
   void deform_on_cpu(const FrameState& state);
+  void move_lesions();
   render::FrameInputs frame_inputs(const FrameState& state, const FrameViews& views) const;
   Status draw_views(const render::FrameInputs& in, const FrameViews& views);
   void draw_status_line(std::int64_t now_ns, double dv_ml, const FrameViews& views);
@@ -111,6 +117,9 @@ class Runtime {
   std::optional<sim::Eq1Deformer> eq1_;
   std::optional<sim::VentralShare> ventral_;  ///< the stats' ventral_share, from force_ alone
   std::vector<render::LungFrame> lung_frames_;
+  std::optional<render::LesionDrawable> lesion_drawable_;  ///< made when there are lesions
+  std::vector<render::LesionFrame> lesion_frames_;         ///< one per RuntimeParts::lesions
+  std::vector<sim::LesionExcursion> lesion_excursions_;    ///< each lesion's path so far, for the stats
   render::PositionSource source_ = render::PositionSource::Shader;
 
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene

@@ -43,6 +43,7 @@ struct RuntimeConfig {
   float ventilation_full_scale_mm = 20.0f;
   glm::vec3 color_left{0.90f, 0.45f, 0.45f};
   glm::vec3 color_right{0.45f, 0.60f, 0.95f};
+  glm::vec3 color_lesion{1.00f, 0.85f, 0.10f};  ///< lesions (RuntimeParts::lesions)
   glm::vec3 background{0.0f, 0.0f, 0.0f};
   Eigen::Isometry3d registration = Eigen::Isometry3d::Identity();  ///< lung model -> patient sensor
   std::array<double, 3> head_to_eye_mm = {0.0, -80.0, -70.0};      ///< centre of the eyes in the head sensor's frame

@@ -20,9 +20,9 @@ std::string point_text(const Eigen::Vector3d& p) {
 
 }  // namespace
 
-Result<Lesion> parse_lesion(const std::string& spec) {
+Result<Lesion> parse_lesion(const std::string& spec, std::string_view what) {
   const std::string expected =
-      "--lesion: expected NAME=x,y,z,radius_mm (LPS, mm; NAME of letters, digits, '_' or '-'), got '" + spec + "'";
+      std::string(what) + ": expected NAME=x,y,z,radius_mm (LPS, mm; NAME of letters, digits, '_' or '-'), got '" + spec + "'";
   const std::size_t eq = spec.find('=');
   if (eq == std::string::npos) return fail(expected);
   Lesion l;
@@ -38,22 +38,24 @@ Result<Lesion> parse_lesion(const std::string& spec) {
       !std::isfinite(l.radius_mm))
     return fail(expected);
   if (!(l.radius_mm > 0 && l.radius_mm <= kMaxLesionRadiusMm)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "--lesion %s: expected a radius above 0 and at most %.0f mm, got %g mm",
-                  l.name.c_str(), kMaxLesionRadiusMm, l.radius_mm);
+    char text[200];
+    std::snprintf(text, sizeof text, "%.*s %s: expected a radius above 0 and at most %.0f mm, got %g mm",
+                  static_cast<int>(what.size()), what.data(), l.name.c_str(), kMaxLesionRadiusMm, l.radius_mm);
     return fail(text);
   }
   return l;
 }
 
-Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions) {
+Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions,
+                                                std::string_view what) {
+  const std::string named = std::string(what) + " ";
   std::vector<PlacedLesion> placed;
   for (const Lesion& l : lesions) {
     for (const PlacedLesion& p : placed)
-      if (p.lesion.name == l.name) return fail("--lesion " + l.name + ": expected each name once, got it twice");
+      if (p.lesion.name == l.name) return fail(named + l.name + ": expected each name once, got it twice");
     const int lung = field.lung_containing(l.centre_mm);
     if (lung < 0)
-      return fail("--lesion " + l.name + ": its centre " + point_text(l.centre_mm) +
+      return fail(named + l.name + ": its centre " + point_text(l.centre_mm) +
                   " (LPS, mm) lies outside every lung; expected a point inside the left or right lung");
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
@@ -63,7 +65,7 @@ Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& fiel
           if (field.lung_containing(p) != lung) {
             char text[64];
             std::snprintf(text, sizeof text, "%.1f mm", l.radius_mm);
-            return fail("--lesion " + l.name + ": a ball of radius " + text + " around " + point_text(l.centre_mm) +
+            return fail(named + l.name + ": a ball of radius " + text + " around " + point_text(l.centre_mm) +
                         " reaches out of its lung at " + point_text(p) +
                         "; expected the whole lesion inside one lung (a smaller radius, or a centre further in)");
           }

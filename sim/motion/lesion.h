@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "config/base/result.h"
@@ -30,8 +31,9 @@ struct Lesion {
 inline constexpr double kMaxLesionRadiusMm = 50.0;
 
 /// "NAME=x,y,z,radius_mm" -> a Lesion, or one line naming the spec and what was expected. NAME: 1 to 32 letters,
-/// digits, '_' or '-'; the radius in (0, kMaxLesionRadiusMm].
-Result<Lesion> parse_lesion(const std::string& spec);
+/// digits, '_' or '-'; the radius in (0, kMaxLesionRadiusMm]. `what` names where the spec came from in the error
+/// ("--lesion", or the settings' "lesion").
+Result<Lesion> parse_lesion(const std::string& spec, std::string_view what = "--lesion");
 
 /// A lesion placed in its lung.
 struct PlacedLesion {
@@ -41,8 +43,9 @@ struct PlacedLesion {
 
 /// The lung that holds each lesion whole: its centre and 26 points of its surface (the cube's directions) inside
 /// the same lung. One line for the first that is not, naming it and where it lies; two lesions with one name are
-/// refused too.
-Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions);
+/// refused too. `what` as for parse_lesion.
+Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions,
+                                                std::string_view what = "--lesion");
 
 /// The lesions' centres as interior points, for InteriorDisplacement::displacement().
 InteriorPoints lesion_centres(const std::vector<PlacedLesion>& lesions);

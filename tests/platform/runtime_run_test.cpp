@@ -2,7 +2,9 @@
 // path, checking the stats JSON and the snapshot that a user gets, and clean errors for bad inputs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,8 +16,10 @@
 #include "drivers/plus/plus_sequence_writer.h"
 #include "drivers/tracker/tracker_config.h"
 #include "platform/app/run.h"
+#include "platform/app/runtime_options.h"
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
+#include "sim/motion/interior_displacement.h"
 
 using namespace lungar;
 
@@ -480,6 +484,76 @@ TEST_F(RuntimeRun, LensDistortionPassRuns) {
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   EXPECT_EQ(stats()["frames"], 6);
   EXPECT_TRUE(snapshot_written());
+}
+
+/// A lesion spec `up` of the way from the bottom to the top of `lung_name`'s inside, on the vertical through its
+/// vertices' centroid, of radius `radius` mm.
+std::string lesion_in(const sim::BakedAsset& a, const sim::InteriorDisplacement& field, const std::string& lung_name,
+                      const std::string& name, double up, double radius) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    if (a.lungs[l].name != lung_name) continue;
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (std::uint32_t i = a.lungs[l].first_vertex; i < a.lungs[l].first_vertex + a.lungs[l].vertex_count; ++i)
+      c += Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
+    c /= a.lungs[l].vertex_count;
+    double low = 1e9, high = -1e9;
+    for (double z = c.z() - 400; z < c.z() + 400; z += 0.5)
+      if (field.lung_containing({c.x(), c.y(), z}) == static_cast<int>(l)) low = std::min(low, z), high = std::max(high, z);
+    char spec[160];
+    std::snprintf(spec, sizeof spec, "%s=%.2f,%.2f,%.2f,%g", name.c_str(), c.x(), c.y(), low + up * (high - low),
+                  radius);
+    return spec;
+  }
+  ADD_FAILURE() << "no lung " << lung_name;
+  return {};
+}
+
+TEST_F(RuntimeRun, ALesionLowInTheRightLungMovesCranioCaudallyMoreThanTwiceOneHighUp) {
+  settings.sim.asset = small_current_asset();  // the sliding model's lungs (hil_lungs is the paper's)
+  Result<sim::BakedAsset> a = sim::load_asset(settings.sim.asset);
+  ASSERT_TRUE(a) << a.error();
+  const sim::InteriorDisplacement field(*a);
+  lay_patient("supine", 2.5);  // more than one whole breath at 30 a minute
+  settings.sim.lesions = {lesion_in(*a, field, "right", "lower", 0.2, 4), lesion_in(*a, field, "right", "upper", 0.8, 4)};
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto j = stats();
+  ASSERT_TRUE(j.contains("lesions")) << j.dump();
+  ASSERT_EQ(j["lesions"].size(), 2u);
+  const auto& lower = j["lesions"][0];
+  const auto& upper = j["lesions"][1];
+  EXPECT_EQ(lower["name"], "lower");
+  EXPECT_EQ(lower["lung"], "right");
+  EXPECT_EQ(upper["name"], "upper");
+  EXPECT_EQ(lower["radius_mm"].get<double>(), 4.0);
+  const double lower_si = lower["si_mm"].get<double>(), upper_si = upper["si_mm"].get<double>();
+  EXPECT_GT(lower_si, 2.0) << "a 500 mL breath moves a lesion near the diaphragm";
+  EXPECT_GT(lower_si, 2.0 * upper_si) << "lower " << lower_si << " mm, upper " << upper_si << " mm";
+  EXPECT_GE(lower["peak_to_peak_mm"].get<double>(), lower_si - 1e-9);
+  EXPECT_LT(lower["peak_to_peak_mm"].get<double>(), 1.5 * lower_si) << "supine, the base moves mostly along SI";
+  EXPECT_TRUE(snapshot_written());
+
+  // Drawn from rest (--deform none), a lesion does not move.
+  settings.render.deform = platform::Deform::None;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  EXPECT_EQ(stats()["lesions"][0]["peak_to_peak_mm"].get<double>(), 0.0);
+}
+
+TEST_F(RuntimeRun, ALesionOutsideEveryLungIsOneLineAndNoOutputs) {
+  settings.sim.lesions = {"far=5000,5000,5000,5"};
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(platform::run_runtime(settings, options), 1);
+  const std::string log = testing::internal::GetCapturedStderr();
+  EXPECT_NE(log.find("error: lesion far: its centre (5000.0, 5000.0, 5000.0) (LPS, mm) lies outside every lung"),
+            std::string::npos)
+      << log;
+  EXPECT_FALSE(std::filesystem::exists(options.stats_json_path));
+  EXPECT_FALSE(std::filesystem::exists(options.snapshot_path));
+  // A spec that does not parse stops at the command line's reading.
+  options.lesions = {"tumour=1,2,3"};
+  platform::Settings s = settings;
+  const Status bad = platform::apply_overrides(options, s);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("--lesion: expected NAME=x,y,z,radius_mm"), std::string::npos) << bad.error();
 }
 
 TEST_F(RuntimeRun, BadInputsFailCleanlyWithoutOutputs) {

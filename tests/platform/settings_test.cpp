@@ -135,6 +135,20 @@ TEST(Settings, PathologiesAreReadAndABadOneNamesTheFileTheFieldAndTheSpec) {
   EXPECT_NE(twice.find("'emphysema:0.6:left': repeats 'emphysema:0.4'"), std::string::npos) << twice;
 }
 
+TEST(Settings, LesionsAndTheirColourAreReadAndABadOneNamesTheFileTheFieldAndTheSpec) {
+  auto r = load_settings_from_string(
+      "[sim]\nlesion = [\"tumour=-60,-120,-250,5\"]\n[render]\ncolor_lesion = [0.2, 1.0, 0.2]\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->sim.lesions, (std::vector<std::string>{"tumour=-60,-120,-250,5"}));
+  EXPECT_EQ(r->render.color_lesion, (std::array<double, 3>{0.2, 1.0, 0.2}));
+  EXPECT_TRUE(Settings{}.sim.lesions.empty()) << "none by default";
+  const std::string e = error_of("[sim]\nlesion = [\"tumour=1,2,3\"]\n");
+  EXPECT_NE(e.find("bad.toml:2: key 'sim.lesion': lesion: expected NAME=x,y,z,radius_mm"), std::string::npos) << e;
+  EXPECT_NE(e.find("got 'tumour=1,2,3'"), std::string::npos) << e;
+  const std::string huge = error_of("[sim]\nlesion = [\"t=1,2,3,80\"]\n");
+  EXPECT_NE(huge.find("lesion t: expected a radius above 0 and at most 50 mm, got 80 mm"), std::string::npos) << huge;
+}
+
 TEST(Settings, OpenXrOutputAndItsHead) {
   auto r = load_settings_from_string(
       "[display]\noutput = \"openxr\"\n[display.openxr]\nhead = \"tracker\"\nreference_space = \"stage\"\n"

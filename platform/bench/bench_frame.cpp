@@ -81,7 +81,30 @@ Result<std::unique_ptr<Runtime>> BenchScene::runtime_for(const FrameConfig& conf
   parts.poses = std::make_unique<ScriptedPoses>(centre_);
   parts.breathing = std::make_unique<ScriptedBreathing>();
   parts.clock = [this] { return now_ns_; };
+  if (config.lesions > 0) {
+    auto lesions = lesion_rows(config.lesions);
+    if (!lesions) return lesions.with_context("");
+    parts.lesions = lesions.take();
+  }
   return Runtime::create(runtime_config(s), std::move(parts));
+}
+
+Result<std::vector<sim::LesionRows>> BenchScene::lesion_rows(int count) {
+  const sim::BakedAsset& a = scene_->asset();
+  if (!interior_) interior_ = std::make_unique<sim::InteriorDisplacement>(a);
+  // Points inside the lungs, in sampling order, keeping those with room for a 5 mm ball.
+  const sim::InteriorPoints points = interior_->sample(static_cast<std::size_t>(50 * count));
+  std::vector<sim::PlacedLesion> placed;
+  for (std::size_t p = 0; p < points.size() && placed.size() < static_cast<std::size_t>(count); ++p) {
+    const sim::Lesion l{"bench" + std::to_string(placed.size()),
+                        Eigen::Vector3d(points.positions[3 * p], points.positions[3 * p + 1], points.positions[3 * p + 2]),
+                        5.0};
+    if (auto one = sim::place_lesions(*interior_, {l}); one) placed.push_back(one->front());
+  }
+  if (placed.size() < static_cast<std::size_t>(count))
+    return fail("bench: room for " + std::to_string(placed.size()) + " lesions of 5 mm in the lungs, expected " +
+                std::to_string(count));
+  return sim::lesion_rows(a, *interior_, placed);
 }
 
 Result<FrameResult> BenchScene::measure(const FrameConfig& config, const Timing& timing) {

@@ -15,6 +15,7 @@
 #include "platform/egl/egl_context.h"
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/runtime.h"
+#include "sim/motion/interior_displacement.h"
 
 namespace lungar::platform::bench {
 
@@ -30,6 +31,9 @@ struct FrameConfig {
   render::StereoStrategy strategy = RenderSettings{}.stereo_strategy;  ///< the shipped default
   bool lod = true;
   double point_size_px = 5.0;
+  /// Lesions drawn inside the lungs (RuntimeParts::lesions): what one costs a frame. 5 mm balls at points sampled
+  /// inside the lungs (lesion_rows()).
+  int lesions = 0;
 };
 
 /// The settings a configuration runs with: the defaults, the configuration, no status line (it times the lungs),
@@ -70,10 +74,13 @@ class BenchScene {
  private:
   BenchScene() = default;
   Result<std::unique_ptr<Runtime>> runtime_for(const FrameConfig& config);
+  /// `count` lesions placed in the scene's lungs, with their rows; the interior field is built on first use.
+  Result<std::vector<sim::LesionRows>> lesion_rows(int count);
 
   std::shared_ptr<EglContext> context_;
   std::shared_ptr<LungScene> scene_;
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
+  std::unique_ptr<sim::InteriorDisplacement> interior_;
   std::int64_t now_ns_ = 0;  ///< the scripted clock every Runtime of this scene reads
 };
 

@@ -63,7 +63,8 @@ json config_json(const FrameConfig& c) {
           {"mode", render::to_string(c.mode)},
           {"strategy", render::to_string(c.strategy)},
           {"lod", c.lod},
-          {"point_size_px", c.point_size_px}};
+          {"point_size_px", c.point_size_px},
+          {"lesions", c.lesions}};
 }
 
 json bake_json(const BakeRecord& r) {
@@ -289,13 +290,16 @@ class Run {
     plain.method = Method::Rest;
     FrameConfig plain_mono = plain;  // what a second eye costs with no deformation at all: the floor of the ratio
     plain_mono.stereo = false;
+    FrameConfig lesion = stereo;  // what a lesion drawn inside the lungs adds (issue 38)
+    lesion.lesions = 1;
     per_eye.strategy = StereoStrategy::PerEye;
     once.strategy = StereoStrategy::DeformOnce;
     const std::pair<const char*, std::pair<FrameConfig, FrameConfig>> pairs[] = {
         {"stereo_over_mono", {mono, stereo}},
         {"deformed_over_undeformed", {plain, stereo}},
         {"deform_once_over_per_eye", {per_eye, once}},
-        {"undeformed_stereo_over_mono", {plain_mono, plain}}};
+        {"undeformed_stereo_over_mono", {plain_mono, plain}},
+        {"one_lesion_over_none", {stereo, lesion}}};
     for (const auto& [key, ab] : pairs) {
       auto ratio = measure_pair(s, key, ab.first, ab.second);
       if (!ratio) return 1;

@@ -33,7 +33,7 @@
 #include "render/renderer.h"
 #include "render/ventilation_legend.h"
 #include "sim/deform/deform_eq1.h"
-#include "sim/motion/lesion_excursion.h"
+#include "sim/motion/excursion_tracker.h"
 #include "sim/motion/lesion_rows.h"
 #include "sim/motion/ventral_share.h"
 
@@ -119,7 +119,7 @@ class Runtime {
   std::vector<render::LungFrame> lung_frames_;
   std::optional<render::LesionDrawable> lesion_drawable_;  ///< made when there are lesions
   std::vector<render::LesionFrame> lesion_frames_;         ///< one per RuntimeParts::lesions
-  std::vector<sim::LesionExcursion> lesion_excursions_;    ///< each lesion's path so far, for the stats
+  std::vector<sim::ExcursionTracker> lesion_excursions_;    ///< each lesion's path so far, for the stats
   render::PositionSource source_ = render::PositionSource::Shader;
 
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene

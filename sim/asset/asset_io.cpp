@@ -23,6 +23,8 @@ namespace {
 
 constexpr std::uint32_t kMaxLungs = 16;
 constexpr std::uint32_t kMaxNameLength = 64;
+constexpr std::uint64_t kMaxLesions = 64;
+constexpr auto kMaxLesionName = static_cast<std::uint32_t>(kMaxLesionNameLength);
 constexpr std::size_t kHeadSize = 4 * 4 + 8 + 4 * 8;
 
 // ---- writing -----------------------------------------------------------------------------------------------
@@ -90,6 +92,12 @@ class Reader {
   /// Reads section `tag` whose payload must be exactly `expected` bytes (or `optional_empty` and none); checks its
   /// CRC.
   bool section(const char tag[4], std::uint64_t expected, std::string& payload, bool optional_empty = false) {
+    return section_within(tag, expected, expected, payload, optional_empty);
+  }
+
+  /// The same for a section of variable length, from `least` to `most` bytes.
+  bool section_within(const char tag[4], std::uint64_t least, std::uint64_t most, std::string& payload,
+                      bool optional_empty = false) {
     const std::string name = std::string("section '") + std::string(tag, 4) + "'";
     char found[4];
     std::uint64_t length = 0;
@@ -100,10 +108,11 @@ class Reader {
       return fail(name + ": expected tag '" + std::string(tag, 4) + "', found '" + shown + "'");
     }
     if (!raw(&length, sizeof length, (name + " length").c_str())) return false;
-    if (length != expected && !(optional_empty && length == 0)) {
+    if ((length < least || length > most) && !(optional_empty && length == 0)) {
       std::ostringstream m;
-      m << name << ": length " << length << " bytes; expected " << expected << (optional_empty ? " (or 0)" : "")
-        << " from the header's counts";
+      m << name << ": length " << length << " bytes; expected ";
+      if (least == most) m << least << (optional_empty ? " (or 0)" : "") << " from the header's counts";
+      else m << least << " to " << most;
       return fail(m.str());
     }
     if (length + 4 > left_) {
@@ -218,6 +227,21 @@ std::string validate_asset(const BakedAsset& a) {
       !all_finite(a.sh_coeffs) ||
       !all_finite(a.linear_coeffs) || !all_finite(a.off_axis) || !all_finite(a.sphere_dirs))
     return "per-vertex arrays: expected finite numbers";
+  if (a.lesions.size() > kMaxLesions) return "lesions: expected at most " + std::to_string(kMaxLesions);
+  for (std::size_t k = 0; k < a.lesions.size(); ++k) {
+    const BakedLesion& l = a.lesions[k];
+    const std::string who = "lesion " + std::to_string(k) + " '" + l.name + "'";
+    if (!lesion_name_ok(l.name)) return who + ": expected a name of 1 to 32 letters, digits, '_' or '-'";
+    if (l.lung >= a.lungs.size())
+      return who + ": lung " + std::to_string(l.lung) + "; expected below " + std::to_string(a.lungs.size());
+    if (!std::isfinite(l.centre_mm[0]) || !std::isfinite(l.centre_mm[1]) || !std::isfinite(l.centre_mm[2]))
+      return who + ": expected a finite centre";
+    if (!(l.radius_mm > 0 && l.radius_mm <= kMaxLesionRadiusMm))
+      return who + ": radius: expected above 0 and at most " + std::to_string(static_cast<int>(kMaxLesionRadiusMm)) +
+             " mm";
+    for (std::size_t j = 0; j < k; ++j)
+      if (a.lesions[j].name == l.name) return who + ": expected each name once";
+  }
   if (a.has_transfer_rows()) {
     if (a.transfer_row_ptr.size() != n + 1 || a.transfer_row_ptr.front() != 0 ||
         a.transfer_row_ptr.back() != a.transfer_cols.size() || a.transfer_cols.size() != a.transfer_vals.size())
@@ -278,6 +302,16 @@ Status write_asset(const BakedAsset& a, const std::string& path) {
   write_section(out, "TROW", a.transfer_row_ptr);
   write_section(out, "TCOL", a.transfer_cols);
   write_section(out, "TVAL", a.transfer_vals);
+  Bytes lesions;
+  lesions.put(static_cast<std::uint32_t>(a.lesions.size()));
+  for (const BakedLesion& l : a.lesions) {
+    lesions.put(static_cast<std::uint32_t>(l.name.size()));
+    lesions.data.append(l.name);
+    lesions.put(l.lung, static_cast<std::uint32_t>(l.from_label ? 1 : 0));
+    lesions.put_array(l.centre_mm.data(), 3);
+    lesions.put(l.radius_mm);
+  }
+  write_section(out, "LESN", lesions.data);
   return out.commit();
 }
 
@@ -415,6 +449,36 @@ Status read_arrays(Reader& r, const HeadCounts& h, std::uint64_t c, BakedAsset& 
   return ok();
 }
 
+/// LESN (version 4 on): the lesions baked with the lungs; each record's own bounds are checked here, what they mean
+/// (a lung that exists, a radius in range) by validate_asset.
+Status read_lesions(Reader& r, const std::string& path, BakedAsset& a) {
+  constexpr std::uint64_t kFixed = 4 + 4 + 4 + 4 * 8;  // name length, lung, flags, centre and radius
+  std::string payload;
+  if (!r.section_within("LESN", 4, 4 + kMaxLesions * (kFixed + kMaxLesionName), payload)) return fail(r.error());
+  Cursor lc{payload};
+  const auto count = lc.get<std::uint32_t>();
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const std::string who = path + ": section 'LESN': lesion " + std::to_string(k);
+    if (payload.size() - lc.at < kFixed) return fail(who + ": record truncated");
+    const auto name_length = lc.get<std::uint32_t>();
+    if (name_length > kMaxLesionName || payload.size() - lc.at < name_length + kFixed - 4)
+      return fail(who + ": name length " + std::to_string(name_length) + "; expected at most " +
+                  std::to_string(kMaxLesionName) + " within the section");
+    BakedLesion l;
+    l.name.assign(payload.data() + lc.at, name_length);
+    lc.at += name_length;
+    l.lung = lc.get<std::uint32_t>();
+    const auto flags = lc.get<std::uint32_t>();
+    if (flags > 1) return fail(who + ": flags " + std::to_string(flags) + "; expected 0 or 1 (from a label)");
+    l.from_label = flags == 1;
+    for (double& x : l.centre_mm) x = lc.get<double>();
+    l.radius_mm = lc.get<double>();
+    a.lesions.push_back(std::move(l));
+  }
+  if (lc.at != payload.size()) return fail(path + ": section 'LESN': trailing bytes after the last lesion");
+  return ok();
+}
+
 }  // namespace
 
 Result<BakedAsset> load_asset(const std::string& path) {
@@ -430,6 +494,8 @@ Result<BakedAsset> load_asset(const std::string& path) {
   const std::uint64_t c = a.bands * a.bands;
   if (Status lungs = read_lungs(r, path, head->lungs, c, a); !lungs) return lungs.with_context("");
   if (Status arrays = read_arrays(r, *head, c, a); !arrays) return arrays.with_context("");
+  if (head->version >= 4)
+    if (Status lesions = read_lesions(r, path, a); !lesions) return lesions.with_context("");
   if (r.left() != 0) return fail(path + ": " + std::to_string(r.left()) + " unexpected bytes after the last section");
   if (std::string bad = validate_asset(a); !bad.empty()) return fail(path + ": " + bad);
   return a;

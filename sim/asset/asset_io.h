@@ -10,6 +10,9 @@
 /// holds no explicit transfer rows). Version 1 files (no MODL, no MDIR) still load, as the paper's model with
 /// directions equal to the normals; version 1 and 2 files (no SDIR) load without sphere points, so that no force
 /// pattern beyond the linear pressure (ARDS) can be projected onto their SH (sim/force/dependent_collapse.h).
+/// Version 4 adds LESN after TVAL: a u32 count, then per lesion a u32 name length, the name, the u32 lung index and
+/// a u32 of flags (1: from a
+/// label), four f64 (centre x, y, z, radius; mm); earlier versions load with no lesion.
 #pragma once
 
 #include <string>
@@ -20,7 +23,7 @@
 namespace lungar::sim {
 
 inline constexpr char kAssetMagic[8] = {'L', 'U', 'N', 'G', 'B', 'A', 'K', 'E'};
-inline constexpr std::uint32_t kAssetVersion = 3;
+inline constexpr std::uint32_t kAssetVersion = 4;
 
 /// Writes `asset` to a temporary file beside `path` and renames it into place: `path` is either the whole new
 /// asset or untouched. The error names the file.

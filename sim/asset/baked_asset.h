@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sim/motion/motion_model.h"
@@ -57,6 +58,29 @@ struct BakedLung {
   double volume_share = 1.0;
 };
 
+/// The largest radius a lesion may have: a 10 cm mass is already larger than the tumours radiotherapy tracks.
+inline constexpr double kMaxLesionRadiusMm = 50.0;
+inline constexpr std::size_t kMaxLesionNameLength = 32;
+
+/// A lesion's name: 1 to kMaxLesionNameLength letters, digits, '_' or '-' (it goes into file names and JSON keys).
+inline bool lesion_name_ok(std::string_view name) {
+  if (name.empty() || name.size() > kMaxLesionNameLength) return false;
+  for (unsigned char c : name)
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '-'))
+      return false;
+  return true;
+}
+
+/// A lesion baked with the lungs (`lungar-bake --lesion`): a ball inside one lung, which the runtime draws and moves
+/// with the interior field (sim/motion/lesion_rows.h) as it does one given at run time.
+struct BakedLesion {
+  std::string name;                  ///< 1 to 32 letters, digits, '_' or '-'
+  std::uint32_t lung = 0;            ///< index into BakedAsset::lungs
+  std::array<double, 3> centre_mm{};  ///< lung frame (LPS)
+  double radius_mm = 0;              ///< (0, 50]
+  bool from_label = false;           ///< segmented: the ball of its volume at its centroid (sim/motion/lesion.h)
+};
+
 /// The whole asset.
 struct BakedAsset {
   std::uint32_t bands = 4;               ///< L; the SH has L^2 coefficients per vertex
@@ -88,6 +112,7 @@ struct BakedAsset {
   bool has_sphere_dirs() const { return !sphere_dirs.empty(); }
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
+  std::vector<BakedLesion> lesions;      ///< none unless baked with --lesion (format version 4 on)
 
   /// Optional (empty when not baked): explicit rows of T truncated below
   /// transfer_epsilon * T_II, in compressed sparse row form over global vertex indices, mm per unit force,

@@ -3,6 +3,7 @@
 #include "sim/bake_tool/bake_command.h"
 
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 
 #include "config/base/atomic_file.h"
@@ -17,6 +18,8 @@
 #include "sim/voxel/label_surface.h"
 #include "sim/voxel/voxelize.h"
 #include "sim/mesh/spherical_map.h"
+#include "sim/motion/interior_displacement.h"
+#include "sim/motion/lesion.h"
 
 namespace lungar::sim {
 namespace {
@@ -42,9 +45,67 @@ Status simplify_lung(LungMesh& lung, std::uint32_t target, const Workers& worker
   return ok();
 }
 
-/// Surfaces from a label map: one lung per --label, each sized by its share of --nodes.
+/// --lesion, split: labels of the label map (NAME=VALUE) and balls given by their centre and radius.
+struct LesionSpecs {
+  std::vector<LabelRequest> labels;
+  std::vector<Lesion> balls;
+};
+
+Result<LesionSpecs> lesion_specs(const BakeCommand& cmd) {
+  LesionSpecs out;
+  for (const std::string& spec : cmd.lesions) {
+    if (lungar::Result<LabelRequest> label = parse_label_request(spec); label) {
+      if (cmd.labelmap.empty())
+        return fail("--lesion " + spec + ": a label needs --labelmap; expected NAME=x,y,z,radius_mm (LPS, mm) for " +
+                    (cmd.procedural ? "the procedural pair" : "a mesh"));
+      if (!lesion_name_ok(label->name))
+        return fail("--lesion " + spec + ": expected NAME of 1 to 32 letters, digits, '_' or '-'");
+      out.labels.push_back(label.take());
+      continue;
+    }
+    Result<Lesion> ball = parse_lesion(spec);
+    if (!ball) return fail(ball.error() + " or NAME=LABEL with --labelmap");
+    out.balls.push_back(ball.take());
+  }
+  return out;
+}
+
+/// The ball of a segmented lesion's volume at its centroid.
+Result<Lesion> label_lesion_ball(const std::string& map, const LabelLesion& l) {
+  const Lesion ball{l.label.name, l.centroid_mm, std::cbrt(3.0 * l.volume_ml * 1000.0 / (4.0 * std::numbers::pi)), true};
+  if (ball.radius_mm > kMaxLesionRadiusMm) {
+    char text[200];
+    std::snprintf(text, sizeof text, "%.0f mL, the volume of a ball of radius %.0f mm; expected at most %.0f mm",
+                  l.volume_ml, ball.radius_mm, kMaxLesionRadiusMm);
+    return fail(map + ": --lesion " + l.label.name + "=" + std::to_string(l.label.value) + ": " + text);
+  }
+  return ball;
+}
+
+/// The lesions placed in the baked lungs, into the asset; a note each (the report's and the log's).
+Status bake_lesions(const std::vector<Lesion>& lesions, BakedAsset& asset, std::vector<std::string>& notes) {
+  if (lesions.empty()) return ok();
+  const InteriorDisplacement field(asset);
+  Result<std::vector<PlacedLesion>> placed = place_lesions(field, lesions);
+  if (!placed) return fail(placed.error());
+  for (const PlacedLesion& p : *placed) {
+    const Eigen::Vector3d& c = p.lesion.centre_mm;
+    asset.lesions.push_back({p.lesion.name, static_cast<std::uint32_t>(p.lung), {c.x(), c.y(), c.z()},
+                             p.lesion.radius_mm, p.lesion.from_label});
+    char line[240];
+    std::snprintf(line, sizeof line, "lesion %s: %s lung, %.1f mm radius at (%.1f, %.1f, %.1f) mm (LPS)%s",
+                  p.lesion.name.c_str(), asset.lungs[p.lung].name.c_str(), p.lesion.radius_mm, c.x(), c.y(), c.z(),
+                  p.lesion.from_label ? ", the ball of its segmented volume at its centroid" : "");
+    notes.push_back(line);
+  }
+  return ok();
+}
+
+/// Surfaces from a label map: one lung per --label, each sized by its share of --nodes; each lesion label's
+/// voxels inside the lung around it (label_map_io.h), its ball into `lesions`.
 Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const BakeProgress& progress,
-                                              std::vector<std::string>& notes) {
+                                              std::vector<std::string>& notes, const std::vector<LabelRequest>& lesion_labels,
+                                              std::vector<Lesion>& lesions) {
   std::vector<LabelRequest> requests;
   for (const std::string& text : cmd.labels) {
     lungar::Result<LabelRequest> r = parse_label_request(text);
@@ -54,8 +115,14 @@ Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const Bake
     requests.push_back(r.take());
   }
   if (progress) progress("label map", 0.0);
-  lungar::Result<std::vector<LabelMask>> masks = read_label_masks(cmd.labelmap, requests);
+  std::vector<LabelLesion> segmented;
+  lungar::Result<std::vector<LabelMask>> masks = read_label_masks(cmd.labelmap, requests, lesion_labels, segmented);
   if (!masks) return fail(masks.error());
+  for (const LabelLesion& l : segmented) {
+    Result<Lesion> ball = label_lesion_ball(cmd.labelmap, l);
+    if (!ball) return fail(ball.error());
+    lesions.push_back(ball.take());
+  }
   std::vector<double> areas;
   for (const LabelMask& m : *masks) areas.push_back(mask_surface_area_mm2(m.mask));
   const std::vector<std::uint32_t> target = share_by_area(cmd.nodes > 0 ? cmd.nodes : kDefaultLabelMapNodes, areas);
@@ -184,13 +251,17 @@ Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& pr
   if (Status s = check_writable(cmd.out); !s) return fail("--out: " + s.error());
   if (!cmd.report_json.empty())
     if (Status s = check_writable(cmd.report_json); !s) return fail("--report-json: " + s.error());
+  Result<LesionSpecs> specs = lesion_specs(cmd);
+  if (!specs) return fail(specs.error());
+  std::vector<Lesion> lesions;
   std::vector<LungMesh> lungs;
   std::string source = cmd.procedural ? std::string("procedural lungs") : cmd.labelmap;
   if (cmd.procedural) {
     lungs = procedural_lungs(cmd.nodes > 0 ? cmd.nodes : kDefaultProceduralNodes, cmd.seed);
   } else {
-    Result<std::vector<LungMesh>> got =
-        cmd.labelmap.empty() ? mesh_lungs(cmd, progress, notes) : label_map_lungs(cmd, progress, notes);
+    Result<std::vector<LungMesh>> got = cmd.labelmap.empty()
+                                            ? mesh_lungs(cmd, progress, notes)
+                                            : label_map_lungs(cmd, progress, notes, specs->labels, lesions);
     if (!got) return fail(got.error());
     lungs = std::move(*got);
     if (cmd.labelmap.empty()) source = cmd.meshes.front();
@@ -199,6 +270,8 @@ Result<BakeReport> bake_and_write(const BakeCommand& cmd, const BakeProgress& pr
   }
   Result<BakeOutput> baked = bake_lungs(std::move(lungs), cmd.options, progress);
   if (!baked) return fail(source + ": " + baked.error());
+  lesions.insert(lesions.end(), specs->balls.begin(), specs->balls.end());
+  if (Status placed = bake_lesions(lesions, baked->asset, notes); !placed) return fail(placed.error());
   check_cancel(Workers{0, cmd.options.cancel});  // the last chance to leave nothing behind
   if (Status s = write_asset(baked->asset, cmd.out); !s) return fail(s.error());
   if (!cmd.report_json.empty()) {

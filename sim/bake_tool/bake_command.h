@@ -30,6 +30,9 @@ struct BakeCommand {
   std::vector<std::string> meshes;
   std::string labelmap;              ///< NRRD, NIfTI or MetaImage label map
   std::vector<std::string> labels;   ///< NAME=VALUE, one per lung of the label map
+  /// --lesion: NAME=VALUE, a label of the label map (a segmented tumour: the ball of its volume at its centroid),
+  /// or NAME=x,y,z,radius_mm (LPS); baked into the asset, which the runtime then draws (sim/asset/baked_asset.h).
+  std::vector<std::string> lesions;
   std::string units = "mm";
   std::string out;                   ///< the .lungbake path
   std::string report_json;           ///< "" for none

@@ -109,6 +109,11 @@ void add_bake_options(CLI::App& app, lungar::sim::BakeCommand& cmd) {
   app.add_option("--label", cmd.labels, "NAME=VALUE: a lung of the label map and its label (e.g. --label right=2 "
                                         "--label left=3)")
       ->needs(labelmap)->allow_extra_args(false);
+  app.add_option("--lesion", cmd.lesions,
+                 "NAME=VALUE: a lesion (a tumour) segmented in the label map with that label, baked as the ball of "
+                 "its volume at its centroid, its voxels counted in the lung around it; or NAME=x,y,z,radius_mm (LPS, "
+                 "mm) with any input. The runtime draws it moving with the tissue around it; repeatable")
+      ->allow_extra_args(false);
   procedural->excludes(mesh)->excludes(labelmap);
   mesh->excludes(labelmap);
   app.add_option("--out", cmd.out, "the .lungbake file to write (required)");

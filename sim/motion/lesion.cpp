@@ -3,7 +3,6 @@
 #include "sim/motion/lesion.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -27,10 +26,7 @@ Result<Lesion> parse_lesion(const std::string& spec, std::string_view what) {
   if (eq == std::string::npos) return fail(expected);
   Lesion l;
   l.name = spec.substr(0, eq);
-  const bool named = !l.name.empty() && l.name.size() <= 32 &&
-                     std::all_of(l.name.begin(), l.name.end(),
-                                 [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; });
-  if (!named) return fail(expected);
+  if (!lesion_name_ok(l.name)) return fail(expected);
   std::istringstream in(spec.substr(eq + 1));
   char c1 = 0, c2 = 0, c3 = 0;
   in >> l.centre_mm.x() >> c1 >> l.centre_mm.y() >> c2 >> l.centre_mm.z() >> c3 >> l.radius_mm;
@@ -57,19 +53,18 @@ Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& fiel
     if (lung < 0)
       return fail(named + l.name + ": its centre " + point_text(l.centre_mm) +
                   " (LPS, mm) lies outside every lung; expected a point inside the left or right lung");
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          if (dx == 0 && dy == 0 && dz == 0) continue;
-          const Eigen::Vector3d p = l.centre_mm + l.radius_mm * Eigen::Vector3d(dx, dy, dz).normalized();
-          if (field.lung_containing(p) != lung) {
-            char text[64];
-            std::snprintf(text, sizeof text, "%.1f mm", l.radius_mm);
-            return fail(named + l.name + ": a ball of radius " + text + " around " + point_text(l.centre_mm) +
-                        " reaches out of its lung at " + point_text(p) +
-                        "; expected the whole lesion inside one lung (a smaller radius, or a centre further in)");
-          }
-        }
+    for (int d = 0; d < 27 && !l.from_label; ++d) {
+      const int dx = d % 3 - 1, dy = d / 3 % 3 - 1, dz = d / 9 - 1;
+      if (dx == 0 && dy == 0 && dz == 0) continue;
+      const Eigen::Vector3d p = l.centre_mm + l.radius_mm * Eigen::Vector3d(dx, dy, dz).normalized();
+      if (field.lung_containing(p) != lung) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.1f mm", l.radius_mm);
+        return fail(named + l.name + ": a ball of radius " + text + " around " + point_text(l.centre_mm) +
+                    " reaches out of its lung at " + point_text(p) +
+                    "; expected the whole lesion inside one lung (a smaller radius, or a centre further in)");
+      }
+    }
     placed.push_back({l, static_cast<std::size_t>(lung)});
   }
   return placed;

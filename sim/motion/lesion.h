@@ -25,10 +25,10 @@ struct Lesion {
   std::string name;
   Eigen::Vector3d centre_mm = Eigen::Vector3d::Zero();
   double radius_mm = 0;
+  /// Segmented (a label of the map the lungs came from): the lung's surface was made round its voxels, so only its
+  /// centre is checked; the ball of its volume need not fit a tumour that lies against the pleura.
+  bool from_label = false;
 };
-
-/// The largest radius a lesion may have: a 10 cm mass is already larger than the tumours radiotherapy tracks.
-inline constexpr double kMaxLesionRadiusMm = 50.0;
 
 /// "NAME=x,y,z,radius_mm" -> a Lesion, or one line naming the spec and what was expected. NAME: 1 to 32 letters,
 /// digits, '_' or '-'; the radius in (0, kMaxLesionRadiusMm]. `what` names where the spec came from in the error
@@ -42,7 +42,7 @@ struct PlacedLesion {
 };
 
 /// The lung that holds each lesion whole: its centre and 26 points of its surface (the cube's directions) inside
-/// the same lung. One line for the first that is not, naming it and where it lies; two lesions with one name are
+/// the same lung (the centre alone for one from a label). One line for the first that is not, naming it and where it lies; two lesions with one name are
 /// refused too. `what` as for parse_lesion.
 Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions,
                                                 std::string_view what = "--lesion");

@@ -20,6 +20,7 @@
 #include "sim/asset/asset_io.h"
 #include "sim/bake/bake.h"
 #include "sim/motion/interior_displacement.h"
+#include "sim/motion/lesion.h"
 
 using namespace lungar;
 
@@ -536,6 +537,24 @@ TEST_F(RuntimeRun, ALesionLowInTheRightLungMovesCranioCaudallyMoreThanTwiceOneHi
   settings.render.deform = platform::Deform::None;
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   EXPECT_EQ(stats()["lesions"][0]["peak_to_peak_mm"].get<double>(), 0.0);
+
+  // A lesion baked into the asset (lungar-bake --lesion) is drawn with no option, and a run's own come after it.
+  Result<sim::Lesion> lower_spec = sim::parse_lesion(settings.sim.lesions[0]);
+  ASSERT_TRUE(lower_spec);
+  sim::BakedAsset with = *a;
+  const Eigen::Vector3d& c = lower_spec->centre_mm;
+  with.lesions = {{"baked", static_cast<std::uint32_t>(field.lung_containing(c)), {c.x(), c.y(), c.z()}, 4.0, false}};
+  const std::string baked = (dir / "baked.lungbake").string();
+  ASSERT_TRUE(sim::write_asset(with, baked));
+  settings.sim.asset = baked;
+  settings.sim.lesions = {settings.sim.lesions[1]};
+  settings.render.deform = platform::Deform::Gpu;
+  ASSERT_EQ(platform::run_runtime(settings, options), 0);
+  const auto both = stats()["lesions"];
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_EQ(both[0]["name"], "baked");
+  EXPECT_EQ(both[1]["name"], "upper");
+  EXPECT_NEAR(both[0]["si_mm"].get<double>(), lower_si, 0.25 * lower_si) << "the baked lesion is the lower one";
 }
 
 TEST_F(RuntimeRun, ALesionOutsideEveryLungIsOneLineAndNoOutputs) {

@@ -127,6 +127,52 @@ TEST(LabelMap, NrrdAndRasNiftiGiveTheSameRealLungs) {
   expect_same_lungs_from_both_formats(v, 8000);
 }
 
+/// The synthetic pair with a 9 mm tumour (label 7) cut out of the right lung against its lateral surface, which it
+/// just breaks through (into the chest wall), as a segmentation gives it; and a small blob (label 9) outside both
+/// lungs.
+const Eigen::Vector3d kTumourCentre = kRightCentre + Eigen::Vector3d(-19, 0, -20);
+constexpr double kTumourRadius = 9;
+LabelVolume pair_with_a_tumour() {
+  LabelVolume v = synthetic_pair();
+  std::size_t n = 0;
+  for (int k = 0; k < v.size[2]; ++k)
+    for (int j = 0; j < v.size[1]; ++j)
+      for (int i = 0; i < v.size[0]; ++i, ++n) {
+        const Eigen::Vector3d p(v.origin[0] + 1.5 * i, v.origin[1] + 1.5 * j, v.origin[2] + 2.0 * k);
+        if ((p - kTumourCentre).norm() < kTumourRadius) v.labels[n] = 7;
+        if ((p - Eigen::Vector3d(0, -60, -140)).norm() < 4) v.labels[n] = 9;
+      }
+  return v;
+}
+
+TEST(LabelMap, ASegmentedTumourIsBakedAsTheBallOfItsVolumeInsideItsLungWithNoNotch) {
+  TempDir dir;
+  ASSERT_TRUE(test::write_label_volume(dir.file("map.nrrd"), pair_with_a_tumour()));
+  BakeCommand c = label_command(dir.file("map.nrrd"), dir.file("a.lungbake"), 6000);
+  c.lesions = {"tumour=7", "dot=-35,-100,-170,4"};
+  std::vector<std::string> notes;
+  const auto r = run_bake_command(c, nullptr, notes);
+  ASSERT_TRUE(r) << r.error();
+  const Result<BakedAsset> a = load_asset(dir.file("a.lungbake"));
+  ASSERT_TRUE(a) << a.error();
+  ASSERT_EQ(a->lesions.size(), 2u);
+  const BakedLesion& tumour = a->lesions[0];
+  EXPECT_EQ(tumour.name, "tumour");
+  EXPECT_EQ(a->lungs[tumour.lung].name, "right");
+  EXPECT_TRUE(tumour.from_label);
+  EXPECT_LT((Eigen::Vector3d(tumour.centre_mm[0], tumour.centre_mm[1], tumour.centre_mm[2]) - kTumourCentre).norm(), 1.0);
+  EXPECT_NEAR(tumour.radius_mm, kTumourRadius, 0.05 * kTumourRadius) << "the ball of its voxels' volume";
+  EXPECT_EQ(a->lesions[1].name, "dot");
+  EXPECT_FALSE(a->lesions[1].from_label);
+  // The tumour's voxels count in the right lung: its surface goes round them, no notch where the label cut it out
+  // (the tumour's centre would lie in it, outside the lung).
+  const LungReport& right = lung_named(*r, "right");
+  EXPECT_NEAR(right.volume_ml, 4.0 / 3.0 * std::numbers::pi * kRightHalf.prod() / 1000, 0.03 * right.volume_ml);
+  bool said = false;
+  for (const std::string& note : notes) said = said || note.find("lesion tumour: right lung") != std::string::npos;
+  EXPECT_TRUE(said) << "the bake says where the lesion went";
+}
+
 class BadLabelMap : public ::testing::Test {
  protected:
   /// Bakes `map` (with --label values `labels`) and checks the refusal: one line, no asset, no partial file.
@@ -189,6 +235,26 @@ TEST_F(BadLabelMap, NotALabelMapAndBadLabelOptions) {
   EXPECT_NE(refusal(dir_.file("m.nrrd"), {"right=two"}).find("got 'right=two'"), std::string::npos);
   EXPECT_NE(refusal(dir_.file("m.nrrd"), {"right=2", "right=3"}).find("given twice"), std::string::npos);
   EXPECT_NE(refusal(dir_.file("m.nrrd"), {}).find("--label: expected at least one"), std::string::npos);
+}
+
+TEST_F(BadLabelMap, ALesionLabelThatIsMissingOutsideTheLungsOrWithoutAMapIsOneLine) {
+  ASSERT_TRUE(test::write_label_volume(dir_.file("t.nrrd"), pair_with_a_tumour()));
+  auto refused = [&](const std::string& lesion, bool procedural = false) {
+    BakeCommand c = label_command(dir_.file("t.nrrd"), dir_.file("out.lungbake"), 3000);
+    if (procedural) c.labelmap.clear(), c.labels.clear(), c.procedural = true, c.nodes = 2000;
+    c.lesions = {lesion};
+    std::vector<std::string> notes;
+    const auto r = run_bake_command(c, nullptr, notes);
+    test::expect_refused_cleanly(r, dir_, "out.lungbake");
+    return r ? std::string() : r.error();
+  };
+  EXPECT_NE(refused("stray=8").find("t.nrrd: --lesion stray=8: no voxel has this value (the map holds 0, 2, 3, 7, 9)"),
+            std::string::npos);
+  EXPECT_NE(refused("blob=9").find("t.nrrd: --lesion blob=9: no lung's voxels touch it; expected a lesion inside a lung"),
+            std::string::npos);
+  EXPECT_NE(refused("tumour=7", true).find("--lesion tumour=7: a label needs --labelmap"), std::string::npos);
+  EXPECT_NE(refused("far=0,0,500,5").find("--lesion far: its centre (0.0, 0.0, 500.0) (LPS, mm) lies outside every lung"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 /// @file lesion_rows_test.cpp
 /// @brief A lesion's own rows (sim/motion/lesion_rows.h) move it exactly as the interior field moves its centre, in
 ///        every posture; its surface weights are harmonic coordinates (they sum to 1, none below 0); and the run's
-///        excursion (sim/motion/lesion_excursion.h) is exact for a straight path and close for a curved one.
+///        excursion (sim/motion/excursion_tracker.h) is exact for a straight path and close for a curved one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "sim/motion/interior_displacement.h"
-#include "sim/motion/lesion_excursion.h"
+#include "sim/motion/excursion_tracker.h"
 #include "sim/motion/lesion_rows.h"
 #include "sim/motion/motion_figures.h"
 #include "pathology_test_support.h"
@@ -95,15 +95,15 @@ TEST(LesionRows, MoveTheLesionAsTheInteriorFieldMovesItsCentreInEveryPosture) {
   }
 }
 
-TEST(LesionExcursion, IsExactAlongALineAndCloseOnACircle) {
-  LesionExcursion line;
+TEST(ExcursionTracker, IsExactAlongALineAndCloseOnACircle) {
+  ExcursionTracker line;
   EXPECT_EQ(line.peak_to_peak_mm(), 0.0);
   const Eigen::Vector3d axis = Eigen::Vector3d(0.3, -0.5, 2.0);
   for (int i = 0; i <= 100; ++i) line.add(axis * std::cos(std::numbers::pi * i / 10));  // breaths on one line
   EXPECT_NEAR(line.peak_to_peak_mm(), 2 * axis.norm(), 1e-3);
   EXPECT_NEAR(line.si_mm(), 4.0, 1e-3);
   // A circle of radius 5 in a tilted plane: the true peak-to-peak is its diameter, 10.
-  LesionExcursion circle;
+  ExcursionTracker circle;
   const Eigen::Vector3d u = Eigen::Vector3d(1, 2, 0.5).normalized();
   const Eigen::Vector3d v = u.cross(Eigen::Vector3d(0.2, -0.4, 1)).normalized();
   for (int i = 0; i < 720; ++i) {

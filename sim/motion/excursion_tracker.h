@@ -1,4 +1,4 @@
-/// @file lesion_excursion.h
+/// @file excursion_tracker.h
 /// @brief A lesion's excursion over a run, frame by frame, in constant memory: its peak-to-peak (the largest distance
 ///        between two of its positions, radiotherapy's figure; lesion.h, peak_to_peak_mm) and its cranio-caudal
 ///        range.
@@ -19,7 +19,7 @@
 
 namespace lungar::sim {
 
-class LesionExcursion {
+class ExcursionTracker {
  public:
   void add(const Eigen::Vector3d& p) {
     for (std::size_t d = 0; d < kDirections; ++d) {

@@ -27,8 +27,12 @@ Result<LesionDrawable> LesionDrawable::create() {
   auto program = build_program({"lesion.vert+lesion.frag", shaders::lesion_vert, shaders::lesion_frag, "", {}});
   if (!program) return fail(program.error());
   d.program_ = program.take();
-  d.program_.find_uniforms({{&d.mvp_, "u_model_view_proj"}, {&d.eye_, "u_eye_model"}, {&d.centre_, "u_centre"},
-                            {&d.radius_, "u_radius"}, {&d.color_, "u_color"}, {&d.ambient_, "u_ambient"}});
+  d.program_.find_uniforms({{&d.mvp_, "u_model_view_proj"},
+                            {&d.eye_, "u_eye_model"},
+                            {&d.centre_, "u_centre"},
+                            {&d.radius_, "u_radius"},
+                            {&d.color_, "u_color"},
+                            {&d.ambient_, "u_ambient"}});
   std::vector<float> unit;
   for (int r = 0; r <= kRings; ++r) {
     const double polar = std::numbers::pi * r / kRings;

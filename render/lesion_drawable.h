@@ -22,7 +22,7 @@ namespace lungar::render {
 
 /// One lesion this frame.
 struct LesionFrame {
-  glm::vec3 centre_mm{0.f};       ///< moved by the interior field, lung frame
+  glm::vec3 centre_mm{0.f};  ///< moved by the interior field, lung frame
   float radius_mm = 5.f;
   glm::vec3 color{1.0f, 0.85f, 0.1f};
   glm::mat4 rest_transform{1.f};  ///< its lung's (render/renderer.h, LungFrame::rest_transform)

@@ -10,12 +10,13 @@
 
 namespace lungar::platform {
 
-Result<std::vector<sim::LesionRows>> scene_lesions(const std::vector<std::string>& specs, const sim::BakedAsset& asset) {
+Result<std::vector<sim::LesionRows>> scene_lesions(const std::vector<std::string>& specs,
+                                                   const sim::BakedAsset& asset) {
   if (specs.empty() && asset.lesions.empty()) return std::vector<sim::LesionRows>{};
   std::vector<sim::Lesion> lesions;
   for (const sim::BakedLesion& b : asset.lesions)
-    lesions.push_back({b.name, Eigen::Vector3d(b.centre_mm[0], b.centre_mm[1], b.centre_mm[2]), b.radius_mm,
-                       b.from_label});
+    lesions.push_back(
+        {b.name, Eigen::Vector3d(b.centre_mm[0], b.centre_mm[1], b.centre_mm[2]), b.radius_mm, b.from_label});
   for (const std::string& spec : specs) {
     Result<sim::Lesion> l = sim::parse_lesion(spec, "lesion");
     if (!l) return fail(l.error());

@@ -15,8 +15,8 @@ namespace lungar::platform {
 
 /// The asset's own lesions (baked by `lungar-bake --lesion`), then each spec ("NAME=x,y,z,radius_mm") parsed; each
 /// checked to lie whole inside one lung of `asset` (the drawn one, its pathologies applied) and given its rows;
-/// one line for the first that is not (a spec that repeats a baked lesion's name among them). The interior field is built only
-/// when there is a lesion (a second or two on the CT lungs).
+/// one line for the first that is not (a spec that repeats a baked lesion's name among them). The interior field is
+/// built only when there is a lesion (a second or two on the CT lungs).
 Result<std::vector<sim::LesionRows>> scene_lesions(const std::vector<std::string>& specs, const sim::BakedAsset& asset);
 
 }  // namespace lungar::platform

@@ -96,9 +96,9 @@ Result<std::vector<sim::LesionRows>> BenchScene::lesion_rows(int count) {
   const sim::InteriorPoints points = interior_->sample(static_cast<std::size_t>(50 * count));
   std::vector<sim::PlacedLesion> placed;
   for (std::size_t p = 0; p < points.size() && placed.size() < static_cast<std::size_t>(count); ++p) {
-    const sim::Lesion l{"bench" + std::to_string(placed.size()),
-                        Eigen::Vector3d(points.positions[3 * p], points.positions[3 * p + 1], points.positions[3 * p + 2]),
-                        5.0};
+    const sim::Lesion l{
+        "bench" + std::to_string(placed.size()),
+        Eigen::Vector3d(points.positions[3 * p], points.positions[3 * p + 1], points.positions[3 * p + 2]), 5.0};
     if (auto one = sim::place_lesions(*interior_, {l}); one) placed.push_back(one->front());
   }
   if (placed.size() < static_cast<std::size_t>(count))

@@ -20,6 +20,7 @@
 #include "config/base/clock.h"
 #include "config/base/result.h"
 #include "drivers/breath/source/breathing_clock.h"
+#include "platform/runtime/breath_swing.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/frame_output.h"
 #include "platform/runtime/frame_stats.h"
@@ -27,7 +28,6 @@
 #include "platform/runtime/lung_scene.h"
 #include "platform/runtime/pose_source.h"
 #include "platform/runtime/runtime_config.h"
-#include "platform/runtime/breath_swing.h"
 #include "render/hud_line.h"
 #include "render/lesion_drawable.h"
 #include "render/renderer.h"
@@ -119,7 +119,7 @@ class Runtime {
   std::vector<render::LungFrame> lung_frames_;
   std::optional<render::LesionDrawable> lesion_drawable_;  ///< made when there are lesions
   std::vector<render::LesionFrame> lesion_frames_;         ///< one per RuntimeParts::lesions
-  std::vector<sim::ExcursionTracker> lesion_excursions_;    ///< each lesion's path so far, for the stats
+  std::vector<sim::ExcursionTracker> lesion_excursions_;   ///< each lesion's path so far, for the stats
   render::PositionSource source_ = render::PositionSource::Shader;
 
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene

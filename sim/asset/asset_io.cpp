@@ -111,8 +111,10 @@ class Reader {
     if ((length < least || length > most) && !(optional_empty && length == 0)) {
       std::ostringstream m;
       m << name << ": length " << length << " bytes; expected ";
-      if (least == most) m << least << (optional_empty ? " (or 0)" : "") << " from the header's counts";
-      else m << least << " to " << most;
+      if (least == most)
+        m << least << (optional_empty ? " (or 0)" : "") << " from the header's counts";
+      else
+        m << least << " to " << most;
       return fail(m.str());
     }
     if (length + 4 > left_) {

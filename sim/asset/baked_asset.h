@@ -74,11 +74,11 @@ inline bool lesion_name_ok(std::string_view name) {
 /// A lesion baked with the lungs (`lungar-bake --lesion`): a ball inside one lung, which the runtime draws and moves
 /// with the interior field (sim/motion/lesion_rows.h) as it does one given at run time.
 struct BakedLesion {
-  std::string name;                  ///< 1 to 32 letters, digits, '_' or '-'
-  std::uint32_t lung = 0;            ///< index into BakedAsset::lungs
+  std::string name;                   ///< 1 to 32 letters, digits, '_' or '-'
+  std::uint32_t lung = 0;             ///< index into BakedAsset::lungs
   std::array<double, 3> centre_mm{};  ///< lung frame (LPS)
-  double radius_mm = 0;              ///< (0, 50]
-  bool from_label = false;           ///< segmented: the ball of its volume at its centroid (sim/motion/lesion.h)
+  double radius_mm = 0;               ///< (0, 50]
+  bool from_label = false;            ///< segmented: the ball of its volume at its centroid (sim/motion/lesion.h)
 };
 
 /// The whole asset.
@@ -112,7 +112,7 @@ struct BakedAsset {
   bool has_sphere_dirs() const { return !sphere_dirs.empty(); }
   std::vector<std::uint32_t> triangles;  ///< 3 per triangle, global vertex indices
   std::vector<BakedLung> lungs;
-  std::vector<BakedLesion> lesions;      ///< none unless baked with --lesion (format version 4 on)
+  std::vector<BakedLesion> lesions;  ///< none unless baked with --lesion (format version 4 on)
 
   /// Optional (empty when not baked): explicit rows of T truncated below
   /// transfer_epsilon * T_II, in compressed sparse row form over global vertex indices, mm per unit force,

@@ -3,8 +3,8 @@
 #include "sim/bake_tool/bake_command.h"
 
 #include <cmath>
-#include <numbers>
 #include <cstdio>
+#include <numbers>
 
 #include "config/base/atomic_file.h"
 #include "config/base/number_text.h"
@@ -13,13 +13,13 @@
 #include "sim/bake_tool/mesh_import.h"
 #include "sim/bake_tool/report_json.h"
 #include "sim/bake_tool/surface_simplify.h"
+#include "sim/mesh/spherical_map.h"
 #include "sim/mesh/surface_distance.h"
+#include "sim/motion/interior_displacement.h"
+#include "sim/motion/lesion.h"
 #include "sim/parallel/parallel_for.h"
 #include "sim/voxel/label_surface.h"
 #include "sim/voxel/voxelize.h"
-#include "sim/mesh/spherical_map.h"
-#include "sim/motion/interior_displacement.h"
-#include "sim/motion/lesion.h"
 
 namespace lungar::sim {
 namespace {
@@ -72,7 +72,8 @@ Result<LesionSpecs> lesion_specs(const BakeCommand& cmd) {
 
 /// The ball of a segmented lesion's volume at its centroid.
 Result<Lesion> label_lesion_ball(const std::string& map, const LabelLesion& l) {
-  const Lesion ball{l.label.name, l.centroid_mm, std::cbrt(3.0 * l.volume_ml * 1000.0 / (4.0 * std::numbers::pi)), true};
+  const Lesion ball{l.label.name, l.centroid_mm, std::cbrt(3.0 * l.volume_ml * 1000.0 / (4.0 * std::numbers::pi)),
+                    true};
   if (ball.radius_mm > kMaxLesionRadiusMm) {
     char text[200];
     std::snprintf(text, sizeof text, "%.0f mL, the volume of a ball of radius %.0f mm; expected at most %.0f mm",
@@ -90,8 +91,11 @@ Status bake_lesions(const std::vector<Lesion>& lesions, BakedAsset& asset, std::
   if (!placed) return fail(placed.error());
   for (const PlacedLesion& p : *placed) {
     const Eigen::Vector3d& c = p.lesion.centre_mm;
-    asset.lesions.push_back({p.lesion.name, static_cast<std::uint32_t>(p.lung), {c.x(), c.y(), c.z()},
-                             p.lesion.radius_mm, p.lesion.from_label});
+    asset.lesions.push_back({p.lesion.name,
+                             static_cast<std::uint32_t>(p.lung),
+                             {c.x(), c.y(), c.z()},
+                             p.lesion.radius_mm,
+                             p.lesion.from_label});
     char line[240];
     std::snprintf(line, sizeof line, "lesion %s: %s lung, %.1f mm radius at (%.1f, %.1f, %.1f) mm (LPS)%s",
                   p.lesion.name.c_str(), asset.lungs[p.lung].name.c_str(), p.lesion.radius_mm, c.x(), c.y(), c.z(),
@@ -104,7 +108,8 @@ Status bake_lesions(const std::vector<Lesion>& lesions, BakedAsset& asset, std::
 /// Surfaces from a label map: one lung per --label, each sized by its share of --nodes; each lesion label's
 /// voxels inside the lung around it (label_map_io.h), its ball into `lesions`.
 Result<std::vector<LungMesh>> label_map_lungs(const BakeCommand& cmd, const BakeProgress& progress,
-                                              std::vector<std::string>& notes, const std::vector<LabelRequest>& lesion_labels,
+                                              std::vector<std::string>& notes,
+                                              const std::vector<LabelRequest>& lesion_labels,
                                               std::vector<Lesion>& lesions) {
   std::vector<LabelRequest> requests;
   for (const std::string& text : cmd.labels) {

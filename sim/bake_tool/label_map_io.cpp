@@ -72,7 +72,8 @@ lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path,
   return read_label_masks(path, labels, {}, none);
 }
 
-lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path, const std::vector<LabelRequest>& labels,
+lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path,
+                                                        const std::vector<LabelRequest>& labels,
                                                         const std::vector<LabelRequest>& lesion_labels,
                                                         std::vector<LabelLesion>& lesions) {
   std::error_code ec;
@@ -118,8 +119,7 @@ lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path,
     lesion.centroid_mm /= static_cast<double>(c.voxels);
     lesion.volume_ml = static_cast<double>(c.voxels) * whole.voxel_volume_mm3() / 1000.0;
     const auto most = std::max_element(touches.begin(), touches.end());
-    if (*most == 0)
-      return fail(who + ": no lung's voxels touch it; expected a lesion inside a lung (--label)");
+    if (*most == 0) return fail(who + ": no lung's voxels touch it; expected a lesion inside a lung (--label)");
     lesion.lung = static_cast<std::size_t>(most - touches.begin());
     merge_into(image->labels[lesion.lung], c);
     lesions.push_back(lesion);

@@ -38,7 +38,7 @@ lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path,
 /// A lesion asked for by `lungar-bake --lesion NAME=VALUE`: a label of the same map (a segmented tumour).
 struct LabelLesion {
   LabelRequest label;
-  std::size_t lung = 0;  ///< index into the masks: the lung around it
+  std::size_t lung = 0;                                   ///< index into the masks: the lung around it
   Eigen::Vector3d centroid_mm = Eigen::Vector3d::Zero();  ///< LPS
   double volume_ml = 0;
   std::int64_t voxels = 0;
@@ -48,7 +48,8 @@ struct LabelLesion {
 /// most of its faces, so that the lung's surface goes round the tumour instead of leaving a cavity where the
 /// segmentation cut it out; its centroid and volume are measured on its voxels. A lesion label with no voxel, or
 /// that no lung touches, is one line naming it.
-lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path, const std::vector<LabelRequest>& labels,
+lungar::Result<std::vector<LabelMask>> read_label_masks(const std::string& path,
+                                                        const std::vector<LabelRequest>& labels,
                                                         const std::vector<LabelRequest>& lesion_labels,
                                                         std::vector<LabelLesion>& lesions);
 

@@ -45,13 +45,15 @@ class ExcursionTracker {
   static constexpr std::size_t kDirections = 13;
   static Eigen::Vector3d direction(std::size_t d) {
     static const std::array<Eigen::Vector3d, kDirections> all = {
-        Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(0, 1, 0),  Eigen::Vector3d(0, 0, 1),  Eigen::Vector3d(1, 1, 0),
-        Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(1, 0, 1),  Eigen::Vector3d(1, 0, -1), Eigen::Vector3d(0, 1, 1),
-        Eigen::Vector3d(0, 1, -1), Eigen::Vector3d(1, 1, 1),  Eigen::Vector3d(1, 1, -1), Eigen::Vector3d(1, -1, 1),
+        Eigen::Vector3d(1, 0, 0),  Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1),  Eigen::Vector3d(1, 1, 0),
+        Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(1, 0, -1), Eigen::Vector3d(0, 1, 1),
+        Eigen::Vector3d(0, 1, -1), Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, -1), Eigen::Vector3d(1, -1, 1),
         Eigen::Vector3d(-1, 1, 1)};
     return all[d];
   }
-  const Eigen::Vector3d& extreme(std::size_t i) const { return i < kDirections ? low_at_[i] : high_at_[i - kDirections]; }
+  const Eigen::Vector3d& extreme(std::size_t i) const {
+    return i < kDirections ? low_at_[i] : high_at_[i - kDirections];
+  }
 
   std::array<double, kDirections> low_{}, high_{};
   std::array<Eigen::Vector3d, kDirections> low_at_{}, high_at_{};

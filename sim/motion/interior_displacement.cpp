@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -81,8 +81,8 @@ std::array<Corner, 8> corners(const VoxelGrid& g, double h, const Eigen::Vector3
   std::array<Corner, 8> out;
   for (int corner = 0; corner < 8; ++corner) {
     const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
-    out[static_cast<std::size_t>(corner)] = {
-        base + Eigen::Vector3i(di, dj, dk), (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2])};
+    out[static_cast<std::size_t>(corner)] = {base + Eigen::Vector3i(di, dj, dk),
+                                             (di ? t[0] : 1 - t[0]) * (dj ? t[1] : 1 - t[1]) * (dk ? t[2] : 1 - t[2])};
   }
   return out;
 }
@@ -278,9 +278,12 @@ std::vector<VertexWeight> InteriorDisplacement::surface_weights(const Eigen::Vec
   for (const Corner& c : corners(g, spacing_, p)) {
     if (c.weight <= 0) continue;
     const auto n = static_cast<std::size_t>(g.index(c.node[0], c.node[1], c.node[2]));
-    if (l.unknown[n] >= 0) a[l.unknown[n]] += c.weight;
-    else if (l.boundary[n] >= 0) direct.emplace_back(l.boundary_point[static_cast<std::size_t>(l.boundary[n])], c.weight);
-    else direct.emplace_back(l.tree->nearest(g.point(c.node.cast<double>())), c.weight);
+    if (l.unknown[n] >= 0)
+      a[l.unknown[n]] += c.weight;
+    else if (l.boundary[n] >= 0)
+      direct.emplace_back(l.boundary_point[static_cast<std::size_t>(l.boundary[n])], c.weight);
+    else
+      direct.emplace_back(l.tree->nearest(g.point(c.node.cast<double>())), c.weight);
   }
   // The boundary values' weights: C' z with L z = a.
   if (a.any()) {

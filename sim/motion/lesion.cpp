@@ -20,8 +20,9 @@ std::string point_text(const Eigen::Vector3d& p) {
 }  // namespace
 
 Result<Lesion> parse_lesion(const std::string& spec, std::string_view what) {
-  const std::string expected =
-      std::string(what) + ": expected NAME=x,y,z,radius_mm (LPS, mm; NAME of letters, digits, '_' or '-'), got '" + spec + "'";
+  const std::string expected = std::string(what) +
+                               ": expected NAME=x,y,z,radius_mm (LPS, mm; NAME of letters, digits, '_' or '-'), got '" +
+                               spec + "'";
   const std::size_t eq = spec.find('=');
   if (eq == std::string::npos) return fail(expected);
   Lesion l;

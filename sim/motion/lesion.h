@@ -42,8 +42,8 @@ struct PlacedLesion {
 };
 
 /// The lung that holds each lesion whole: its centre and 26 points of its surface (the cube's directions) inside
-/// the same lung (the centre alone for one from a label). One line for the first that is not, naming it and where it lies; two lesions with one name are
-/// refused too. `what` as for parse_lesion.
+/// the same lung (the centre alone for one from a label). One line for the first that is not, naming it and where it
+/// lies; two lesions with one name are refused too. `what` as for parse_lesion.
 Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions,
                                                 std::string_view what = "--lesion");
 

@@ -17,7 +17,8 @@ std::vector<LesionRows> lesion_rows(const BakedAsset& asset, const InteriorDispl
       const std::size_t i = e.vertex;
       for (int k = 0; k < 3; ++k) {
         const double along = e.weight * asset.directions[3 * i + static_cast<std::size_t>(k)];
-        for (std::size_t lm = 0; lm < c; ++lm) a[static_cast<std::size_t>(k) * c + lm] += along * asset.sh_coeffs[i * c + lm];
+        for (std::size_t lm = 0; lm < c; ++lm)
+          a[static_cast<std::size_t>(k) * c + lm] += along * asset.sh_coeffs[i * c + lm];
       }
       if (asset.has_off_axis())
         for (std::size_t j = 0; j < 12; ++j) b[j] += e.weight * asset.off_axis[12 * i + j];

@@ -24,7 +24,7 @@ namespace lungar::sim {
 
 struct LesionRows {
   PlacedLesion placed;
-  std::vector<float> sh;            ///< A: rows x, y, z of L^2 values each, mm per mL per unit force SH
+  std::vector<float> sh;             ///< A: rows x, y, z of L^2 values each, mm per mL per unit force SH
   std::array<float, 12> off_axis{};  ///< B: rows x, y, z of (r0, r_x, r_y, r_z), mm per mL per unit weight
 
   /// The lesion's displacement (mm, lung frame) for its lung's force SH f (L^2 values), linear weights w and

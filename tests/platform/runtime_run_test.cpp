@@ -499,7 +499,8 @@ std::string lesion_in(const sim::BakedAsset& a, const sim::InteriorDisplacement&
     c /= a.lungs[l].vertex_count;
     double low = 1e9, high = -1e9;
     for (double z = c.z() - 400; z < c.z() + 400; z += 0.5)
-      if (field.lung_containing({c.x(), c.y(), z}) == static_cast<int>(l)) low = std::min(low, z), high = std::max(high, z);
+      if (field.lung_containing({c.x(), c.y(), z}) == static_cast<int>(l))
+        low = std::min(low, z), high = std::max(high, z);
     char spec[160];
     std::snprintf(spec, sizeof spec, "%s=%.2f,%.2f,%.2f,%g", name.c_str(), c.x(), c.y(), low + up * (high - low),
                   radius);
@@ -515,7 +516,8 @@ TEST_F(RuntimeRun, ALesionLowInTheRightLungMovesCranioCaudallyMoreThanTwiceOneHi
   ASSERT_TRUE(a) << a.error();
   const sim::InteriorDisplacement field(*a);
   lay_patient("supine", 2.2);  // one whole breath at 30 a minute, and a little
-  settings.sim.lesions = {lesion_in(*a, field, "right", "lower", 0.2, 4), lesion_in(*a, field, "right", "upper", 0.8, 4)};
+  settings.sim.lesions = {lesion_in(*a, field, "right", "lower", 0.2, 4),
+                          lesion_in(*a, field, "right", "upper", 0.8, 4)};
   ASSERT_EQ(platform::run_runtime(settings, options), 0);
   const auto j = stats();
   ASSERT_TRUE(j.contains("lesions")) << j.dump();

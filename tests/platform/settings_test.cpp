@@ -198,10 +198,11 @@ TEST(BadConfig, UnknownTopLevelSection) {
 }
 
 TEST(BadConfig, UnknownKeyInSection) {
-  EXPECT_EQ(error_of("[render]\nmode = \"points\"\npointsize = 5\n"),
-            "bad.toml:3: unknown key 'render.pointsize'; expected one of: background, color_left, color_lesion, color_right, "
-            "deform, half_float, hud, lod, mode, overlay_rest, point_size_px, stereo_strategy, "
-            "ventilation_full_scale_mm, ventilation_map");
+  EXPECT_EQ(
+      error_of("[render]\nmode = \"points\"\npointsize = 5\n"),
+      "bad.toml:3: unknown key 'render.pointsize'; expected one of: background, color_left, color_lesion, color_right, "
+      "deform, half_float, hud, lod, mode, overlay_rest, point_size_px, stereo_strategy, "
+      "ventilation_full_scale_mm, ventilation_map");
 }
 
 TEST(BadConfig, UnknownKeyInNestedTable) {

@@ -160,7 +160,8 @@ TEST(LabelMap, ASegmentedTumourIsBakedAsTheBallOfItsVolumeInsideItsLungWithNoNot
   EXPECT_EQ(tumour.name, "tumour");
   EXPECT_EQ(a->lungs[tumour.lung].name, "right");
   EXPECT_TRUE(tumour.from_label);
-  EXPECT_LT((Eigen::Vector3d(tumour.centre_mm[0], tumour.centre_mm[1], tumour.centre_mm[2]) - kTumourCentre).norm(), 1.0);
+  EXPECT_LT((Eigen::Vector3d(tumour.centre_mm[0], tumour.centre_mm[1], tumour.centre_mm[2]) - kTumourCentre).norm(),
+            1.0);
   EXPECT_NEAR(tumour.radius_mm, kTumourRadius, 0.05 * kTumourRadius) << "the ball of its voxels' volume";
   EXPECT_EQ(a->lesions[1].name, "dot");
   EXPECT_FALSE(a->lesions[1].from_label);
@@ -250,11 +251,13 @@ TEST_F(BadLabelMap, ALesionLabelThatIsMissingOutsideTheLungsOrWithoutAMapIsOneLi
   };
   EXPECT_NE(refused("stray=8").find("t.nrrd: --lesion stray=8: no voxel has this value (the map holds 0, 2, 3, 7, 9)"),
             std::string::npos);
-  EXPECT_NE(refused("blob=9").find("t.nrrd: --lesion blob=9: no lung's voxels touch it; expected a lesion inside a lung"),
-            std::string::npos);
+  EXPECT_NE(
+      refused("blob=9").find("t.nrrd: --lesion blob=9: no lung's voxels touch it; expected a lesion inside a lung"),
+      std::string::npos);
   EXPECT_NE(refused("tumour=7", true).find("--lesion tumour=7: a label needs --labelmap"), std::string::npos);
-  EXPECT_NE(refused("far=0,0,500,5").find("--lesion far: its centre (0.0, 0.0, 500.0) (LPS, mm) lies outside every lung"),
-            std::string::npos);
+  EXPECT_NE(
+      refused("far=0,0,500,5").find("--lesion far: its centre (0.0, 0.0, 500.0) (LPS, mm) lies outside every lung"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -7,13 +7,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "pathology_test_support.h"
 #include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
-#include "sim/motion/interior_displacement.h"
 #include "sim/motion/excursion_tracker.h"
+#include "sim/motion/interior_displacement.h"
 #include "sim/motion/lesion_rows.h"
 #include "sim/motion/motion_figures.h"
-#include "pathology_test_support.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
@@ -84,8 +84,8 @@ TEST(LesionRows, MoveTheLesionAsTheInteriorFieldMovesItsCentreInEveryPosture) {
     for (std::size_t k = 0; k < rows.size(); ++k) {
       const std::size_t l = rows[k].placed.lung;
       force_sh_exact(a, a.lungs[l], patient.lungs[l], g, force.data());
-      const Eigen::Vector3d d = rows[k].displacement(force, linear_weights(a, patient.lungs[l], g),
-                                                     500.0 * breath_share(a, patient, l, g));
+      const Eigen::Vector3d d =
+          rows[k].displacement(force, linear_weights(a, patient.lungs[l], g), 500.0 * breath_share(a, patient, l, g));
       const Eigen::Vector3d want(expected[3 * k], expected[3 * k + 1], expected[3 * k + 2]);
       EXPECT_LT((d - want).norm(), 0.01 + 0.002 * want.norm())
           << rows[k].placed.lesion.name << " g " << g.transpose() << ": rows " << d.transpose() << ", field "

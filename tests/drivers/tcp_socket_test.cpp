@@ -5,6 +5,8 @@
 
 #include <cerrno>
 #include <chrono>
+#include <fstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -12,6 +14,13 @@
 
 namespace lungar::drivers {
 namespace {
+
+/// The third field (the maximum, bytes) of /proc/sys/net/ipv4/`name`, or 64 MiB where it cannot be read.
+std::size_t kernel_max(const std::string& name) {
+  std::ifstream in("/proc/sys/net/ipv4/" + name);
+  std::size_t low = 0, initial = 0, most = 0;
+  return in >> low >> initial >> most ? most : std::size_t{64} << 20;
+}
 
 /// A connected pair on 127.0.0.1: `near` from connect() (non-blocking), `far` from accept().
 struct Pair {
@@ -61,7 +70,11 @@ TEST(TcpSocket, WriteAllWaitsForAReaderAndGivesUpOnOneThatNeverReads) {
   EXPECT_TRUE(p.near.write_all(big));
   reader.join();
   EXPECT_EQ(received, big.size());
-  EXPECT_FALSE(p.near.write_all(big)) << "nobody reads any more";
+  // Nobody reads any more: the write must outgrow what both sockets' buffers can hold, and the first transfer has
+  // let the kernel autotune the reader's buffer up to its maximum (tcp_rmem's third field: 32 MiB on Debian 12's
+  // defaults here, so 32 MiB could fit whole and the write succeed), plus the writer's (tcp_wmem's).
+  const std::vector<std::uint8_t> more(2 * (kernel_max("tcp_rmem") + kernel_max("tcp_wmem")) + (1u << 20), 0x5a);
+  EXPECT_FALSE(p.near.write_all(more)) << "nobody reads any more";
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 /// @brief Summing a lesion's surface weights into its rows, and evaluating them (lesion_rows.h).
 #include "sim/motion/lesion_rows.h"
 
+#include <cassert>
+
 namespace lungar::sim {
 
 std::vector<LesionRows> lesion_rows(const BakedAsset& asset, const InteriorDisplacement& field,
@@ -33,10 +35,11 @@ std::vector<LesionRows> lesion_rows(const BakedAsset& asset, const InteriorDispl
 Eigen::Vector3d LesionRows::displacement(std::span<const float> force, const std::array<float, 4>& w,
                                          double dv_ml) const {
   const std::size_t c = force.size();
+  assert(sh.size() == 3 * c);  // rows of the asset whose force this is (Runtime::create checks it)
   Eigen::Vector3d u;
   for (std::size_t k = 0; k < 3; ++k) {
     double sum = 0;
-    for (std::size_t lm = 0; lm < c && k * c + lm < sh.size(); ++lm) sum += double{sh[k * c + lm]} * force[lm];
+    for (std::size_t lm = 0; lm < c; ++lm) sum += double{sh[k * c + lm]} * force[lm];
     for (std::size_t j = 0; j < 4; ++j) sum += double{off_axis[4 * k + j]} * w[j];
     u[static_cast<Eigen::Index>(k)] = sum;
   }

@@ -21,6 +21,7 @@
 #include "sim/bake/bake.h"
 #include "sim/motion/interior_displacement.h"
 #include "sim/motion/lesion.h"
+#include "tests/lung_axis.h"
 
 using namespace lungar;
 
@@ -493,17 +494,9 @@ std::string lesion_in(const sim::BakedAsset& a, const sim::InteriorDisplacement&
                       const std::string& name, double up, double radius) {
   for (std::size_t l = 0; l < a.lungs.size(); ++l) {
     if (a.lungs[l].name != lung_name) continue;
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (std::uint32_t i = a.lungs[l].first_vertex; i < a.lungs[l].first_vertex + a.lungs[l].vertex_count; ++i)
-      c += Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
-    c /= a.lungs[l].vertex_count;
-    double low = 1e9, high = -1e9;
-    for (double z = c.z() - 400; z < c.z() + 400; z += 0.5)
-      if (field.lung_containing({c.x(), c.y(), z}) == static_cast<int>(l))
-        low = std::min(low, z), high = std::max(high, z);
+    const Eigen::Vector3d p = lungar::testing::lung_axis(a, field, l).at(up);
     char spec[160];
-    std::snprintf(spec, sizeof spec, "%s=%.2f,%.2f,%.2f,%g", name.c_str(), c.x(), c.y(), low + up * (high - low),
-                  radius);
+    std::snprintf(spec, sizeof spec, "%s=%.2f,%.2f,%.2f,%g", name.c_str(), p.x(), p.y(), p.z(), radius);
     return spec;
   }
   ADD_FAILURE() << "no lung " << lung_name;
@@ -566,9 +559,9 @@ TEST_F(RuntimeRun, ALesionLowInTheRightLungMovesCranioCaudallyMoreThanTwiceOneHi
 
 TEST_F(RuntimeRun, ALesionOutsideEveryLungIsOneLineAndNoOutputs) {
   settings.sim.lesions = {"far=5000,5000,5000,5"};
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_EQ(platform::run_runtime(settings, options), 1);
-  const std::string log = testing::internal::GetCapturedStderr();
+  const std::string log = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(log.find("error: lesion far: its centre (5000.0, 5000.0, 5000.0) (LPS, mm) lies outside every lung"),
             std::string::npos)
       << log;

@@ -12,6 +12,7 @@
 #include "sim/motion/interior_displacement.h"
 #include "sim/motion/motion_figures.h"
 #include "pathology_test_support.h"
+#include "tests/lung_axis.h"
 #include "sim_test_support.h"
 
 namespace lungar::sim {
@@ -52,20 +53,14 @@ Eigen::Vector3d vertex(const BakedAsset& a, std::size_t i) {
 
 TEST(InteriorDisplacement, APointNearTheBaseMovesMoreThanOneNearTheApex) {
   const BakedAsset& a = sliding_asset();
-  for (const BakedLung& lung : a.lungs) {
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    const BakedLung& lung = a.lungs[l];
     // The vertical line through the lung's rest centroid of vertices; its lowest and highest points inside.
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (std::uint32_t i = lung.first_vertex; i < lung.first_vertex + lung.vertex_count; ++i) c += vertex(a, i);
-    c /= lung.vertex_count;
-    double low = 1e9, high = -1e9;
-    for (double z = c.z() - 400; z < c.z() + 400; z += 0.5)
-      if (field().lung_containing({c.x(), c.y(), z}) >= 0) {
-        low = std::min(low, z);
-        high = std::max(high, z);
-      }
-    ASSERT_LT(low, high) << lung.name;
-    const double base = moved_by(supine_surface(), {c.x(), c.y(), low + 10}).norm();
-    const double apex = moved_by(supine_surface(), {c.x(), c.y(), high - 10}).norm();
+    const testing::LungAxis axis = testing::lung_axis(a, field(), l);
+    ASSERT_LT(axis.low_z, axis.high_z) << lung.name;
+    const Eigen::Vector3d& c = axis.centroid;
+    const double base = moved_by(supine_surface(), {c.x(), c.y(), axis.low_z + 10}).norm();
+    const double apex = moved_by(supine_surface(), {c.x(), c.y(), axis.high_z - 10}).norm();
     EXPECT_GT(base, 3.0) << lung.name << ": 10 mm above the diaphragm moves with it";
     EXPECT_GT(base, 2.0 * apex) << lung.name << ": base " << base << " mm, apex " << apex << " mm";
   }

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "pathology_test_support.h"
+#include "tests/lung_axis.h"
 #include "sim/force/breath_share.h"
 #include "sim/force/force_sh.h"
 #include "sim/motion/excursion_tracker.h"
@@ -29,20 +30,9 @@ const InteriorDisplacement& rows_field() {
 /// A lesion 8 mm across, `up` of the way from the lung's lowest inside point to its highest on the vertical
 /// through its vertices' centroid.
 PlacedLesion lesion_at(std::size_t lung_index, double up) {
-  const BakedAsset& a = sliding_asset();
-  const BakedLung& lung = a.lungs[lung_index];
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (std::uint32_t i = lung.first_vertex; i < lung.first_vertex + lung.vertex_count; ++i)
-    c += Eigen::Vector3d(a.positions[3 * i], a.positions[3 * i + 1], a.positions[3 * i + 2]);
-  c /= lung.vertex_count;
-  double low = 1e9, high = -1e9;
-  for (double z = c.z() - 400; z < c.z() + 400; z += 0.5)
-    if (rows_field().lung_containing({c.x(), c.y(), z}) == static_cast<int>(lung_index)) {
-      low = std::min(low, z);
-      high = std::max(high, z);
-    }
-  EXPECT_LT(low, high);
-  const Lesion l{"l" + std::to_string(lung_index), {c.x(), c.y(), low + up * (high - low)}, 4.0};
+  const testing::LungAxis axis = testing::lung_axis(sliding_asset(), rows_field(), lung_index);
+  EXPECT_LT(axis.low_z, axis.high_z);
+  const Lesion l{"l" + std::to_string(lung_index), axis.at(up), 4.0};
   Result<std::vector<PlacedLesion>> placed = place_lesions(rows_field(), {l});
   EXPECT_TRUE(placed) << (placed ? "" : placed.error());
   return placed ? placed->front() : PlacedLesion{l, lung_index};

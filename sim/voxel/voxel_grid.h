@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/LU>  // determinant(), for voxel_volume_mm3()
 
 #include <array>
 #include <cstdint>

@@ -148,6 +148,24 @@ TEST(AssetIo, BakedLesionsSurviveTheRoundTripAndABadOneIsNamed) {
     EXPECT_NE(refused.error().find(field), std::string::npos) << refused.error();
   }
   EXPECT_EQ(dir.entries(), 1u) << "no partial file beside the good one";
+  // The most an asset may hold: 64 lesions with names of 32 characters load; a 65th is refused.
+  BakedAsset most = a;
+  most.lesions.clear();
+  for (int k = 0; k < 64; ++k) {
+    std::string name = "lesion-" + std::to_string(k);
+    name.resize(32, 'x');
+    most.lesions.push_back({name, static_cast<std::uint32_t>(k % 2), {0, 0, double(k)}, 5, k % 3 == 0});
+  }
+  ASSERT_TRUE(write_asset(most, dir.file("most.lungbake")));
+  const Result<BakedAsset> loaded = load_asset(dir.file("most.lungbake"));
+  ASSERT_TRUE(loaded) << loaded.error();
+  ASSERT_EQ(loaded->lesions.size(), 64u);
+  EXPECT_EQ(loaded->lesions[63].name, most.lesions[63].name);
+  most.lesions.push_back({"one-more", 0, {0, 0, 0}, 5, false});
+  const Status too_many = write_asset(most, dir.file("more.lungbake"));
+  ASSERT_FALSE(too_many);
+  EXPECT_NE(too_many.error().find("lesions: expected at most 64"), std::string::npos) << too_many.error();
+  std::filesystem::remove(dir.file("most.lungbake"));
   // What the reader refuses in the file itself: unknown flags, named by section and lesion.
   std::string bytes = read_bytes(path);
   const std::size_t at = bytes.rfind("LESN");

@@ -85,6 +85,31 @@ TEST(LesionRows, MoveTheLesionAsTheInteriorFieldMovesItsCentreInEveryPosture) {
   }
 }
 
+TEST(PlaceLesions, ABallThatReachesOutAlongAnyOneAxisIsRefusedAndOneThatFitsIsKept) {
+  const BakedAsset& a = sliding_asset();
+  for (std::size_t l = 0; l < a.lungs.size(); ++l) {
+    const Eigen::Vector3d middle = testing::lung_axis(a, rows_field(), l).at(0.5);
+    for (int axis = 0; axis < 3; ++axis)
+      for (double sign : {-1.0, 1.0}) {
+        Eigen::Vector3d u = Eigen::Vector3d::Zero();
+        u[axis] = sign;
+        // Out from the middle along u to the surface, then 3 mm back in: a 4 mm ball there pokes 1 mm out along u
+        // alone (its points along the diagonals next to u reach 2.8 mm along it, not out), a 2 mm one fits.
+        double out = 0;
+        while (rows_field().lung_containing(middle + out * u) == static_cast<int>(l) && out < 400) out += 0.25;
+        const Eigen::Vector3d centre = middle + (out - 3.0) * u;
+        const std::string where = a.lungs[l].name + " along " + std::to_string(sign * (axis + 1));
+        const auto big = place_lesions(rows_field(), {{"big", centre, 4.0}});
+        ASSERT_FALSE(big) << where << ": a ball reaching 3 mm out of its lung was kept";
+        EXPECT_NE(big.error().find("reaches out of its lung"), std::string::npos) << big.error();
+        const auto small = place_lesions(rows_field(), {{"small", centre, 2.0}});
+        EXPECT_TRUE(small) << where << ": " << (small ? "" : small.error());
+        // A segmented lesion (from a label) is checked at its centre only: the lung was meshed round its voxels.
+        EXPECT_TRUE(place_lesions(rows_field(), {{"segmented", centre, 4.0, true}})) << where;
+      }
+  }
+}
+
 TEST(ExcursionTracker, IsExactAlongALineAndCloseOnACircle) {
   ExcursionTracker line;
   EXPECT_EQ(line.peak_to_peak_mm(), 0.0);

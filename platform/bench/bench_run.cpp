@@ -290,7 +290,7 @@ class Run {
     plain.method = Method::Rest;
     FrameConfig plain_mono = plain;  // what a second eye costs with no deformation at all: the floor of the ratio
     plain_mono.stereo = false;
-    FrameConfig lesion = stereo;  // what a lesion drawn inside the lungs adds (issue 38)
+    FrameConfig lesion = stereo;  // the same frame with one lesion in the lungs: what a lesion costs
     lesion.lesions = 1;
     per_eye.strategy = StereoStrategy::PerEye;
     once.strategy = StereoStrategy::DeformOnce;

@@ -90,17 +90,8 @@ Status bake_lesions(const std::vector<Lesion>& lesions, BakedAsset& asset, std::
   Result<std::vector<PlacedLesion>> placed = place_lesions(field, lesions);
   if (!placed) return fail(placed.error());
   for (const PlacedLesion& p : *placed) {
-    const Eigen::Vector3d& c = p.lesion.centre_mm;
-    asset.lesions.push_back({p.lesion.name,
-                             static_cast<std::uint32_t>(p.lung),
-                             {c.x(), c.y(), c.z()},
-                             p.lesion.radius_mm,
-                             p.lesion.from_label});
-    char line[240];
-    std::snprintf(line, sizeof line, "lesion %s: %s lung, %.1f mm radius at (%.1f, %.1f, %.1f) mm (LPS)%s",
-                  p.lesion.name.c_str(), asset.lungs[p.lung].name.c_str(), p.lesion.radius_mm, c.x(), c.y(), c.z(),
-                  p.lesion.from_label ? ", the ball of its segmented volume at its centroid" : "");
-    notes.push_back(line);
+    asset.lesions.push_back(baked_lesion(p));
+    notes.push_back(describe_lesion(p, asset));
   }
   return ok();
 }

@@ -71,6 +71,24 @@ Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& fiel
   return placed;
 }
 
+BakedLesion baked_lesion(const PlacedLesion& p) {
+  const Eigen::Vector3d& c = p.lesion.centre_mm;
+  return {p.lesion.name, static_cast<std::uint32_t>(p.lung), {c.x(), c.y(), c.z()}, p.lesion.radius_mm,
+          p.lesion.from_label};
+}
+
+Lesion lesion_of(const BakedLesion& b) {
+  return {b.name, Eigen::Vector3d(b.centre_mm[0], b.centre_mm[1], b.centre_mm[2]), b.radius_mm, b.from_label};
+}
+
+std::string describe_lesion(const PlacedLesion& p, const BakedAsset& asset) {
+  char radius[48];
+  std::snprintf(radius, sizeof radius, "%.1f mm radius", p.lesion.radius_mm);
+  return "lesion " + p.lesion.name + ": " + asset.lungs.at(p.lung).name + " lung, " + radius + " at " +
+         point_text(p.lesion.centre_mm) + " mm (LPS)" +
+         (p.lesion.from_label ? ", the ball of its segmented volume at its centroid" : "");
+}
+
 InteriorPoints lesion_centres(const std::vector<PlacedLesion>& lesions) {
   InteriorPoints points;
   for (const PlacedLesion& p : lesions) {

@@ -47,6 +47,14 @@ struct PlacedLesion {
 Result<std::vector<PlacedLesion>> place_lesions(const InteriorDisplacement& field, const std::vector<Lesion>& lesions,
                                                 std::string_view what = "--lesion");
 
+/// A lesion as the asset keeps it, and back (sim/asset/baked_asset.h, BakedLesion).
+BakedLesion baked_lesion(const PlacedLesion& p);
+Lesion lesion_of(const BakedLesion& b);
+
+/// One line saying where a placed lesion is: "lesion tumour: right lung, 5.0 mm radius at (x, y, z) mm (LPS)",
+/// with ", segmented" for one from a label (the bake's notes and the runtime's log).
+std::string describe_lesion(const PlacedLesion& p, const BakedAsset& asset);
+
 /// The lesions' centres as interior points, for InteriorDisplacement::displacement().
 InteriorPoints lesion_centres(const std::vector<PlacedLesion>& lesions);
 

@@ -92,24 +92,21 @@ const std::vector<sim::LungShape>& PathologyCourse::at(std::int64_t now_ns) {
 }
 
 const std::vector<sim::LungShape>& PathologyCourse::at_seconds(double t_s) {
-  const std::vector<sim::LungShape>* done = &start_;
-  done_ = 0;
-  under_way_ = false;
-  for (const Step& step : steps_) {
-    if (t_s >= step.at_s + step.over_s) {
-      done = &step.to;
-      ++done_;
-      continue;
-    }
-    if (t_s > step.at_s) {  // under way: from where the steps before left the lungs
-      under_way_ = true;
-      now_ = sim::blend(*done, step.to, ease((t_s - step.at_s) / step.over_s));
-      return now_;
-    }
-    break;
-  }
-  now_ = *done;
+  std::size_t begun = 0;  // steps under way or done at t_s; they are in time order
+  while (begun < steps_.size() && t_s > steps_[begun].at_s) ++begun;
+  under_way_ = begun > 0 && t_s < steps_[begun - 1].at_s + steps_[begun - 1].over_s;
+  done_ = under_way_ ? begun - 1 : begun;
+  now_ = state_at(t_s, begun);
   return now_;
+}
+
+std::vector<sim::LungShape> PathologyCourse::state_at(double t_s, std::size_t begun) const {
+  if (begun == 0) return start_;
+  const Step& step = steps_[begun - 1];
+  if (t_s >= step.at_s + step.over_s) return step.to;
+  // Under way: from where the lungs were when it began, which is the step before still changing when an instructor
+  // adds a change before the last one ended; so the lungs never jump, however the changes overlap.
+  return sim::blend(state_at(step.at_s, begun - 1), step.to, ease((t_s - step.at_s) / step.over_s));
 }
 
 const std::string& PathologyCourse::label_now() const {

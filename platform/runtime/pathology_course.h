@@ -55,6 +55,8 @@ class PathologyCourse : public LungCourse {
     std::string label_under_way, label_done;  ///< pathologies_now() while it changes, and after
   };
   const std::string& label_now() const;
+  /// The lungs at t_s when the first `begun` steps have begun.
+  std::vector<sim::LungShape> state_at(double t_s, std::size_t begun) const;
   sim::PathologyTimeline timeline_;
   std::size_t done_ = 0;    ///< events done at the last at(): what the stats JSON's `pathologies` lists
   bool under_way_ = false;  ///< the event after those done was changing the lungs at the last at()

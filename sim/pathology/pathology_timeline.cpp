@@ -19,19 +19,21 @@ Status check_timeline(const PathologyTimeline& timeline) {
     if (!std::isfinite(e.at_s) || e.at_s < previous_s)
       return fail(where + "at_s: expected a time in seconds, not before the event before it");
     if (!std::isfinite(e.over_s) || e.over_s <= 0) return fail(where + "over_s: expected a time in seconds above 0");
-    if (e.add.empty() == e.remove.empty()) return fail(where + "expected one of add and remove");
+    if (e.add.empty() && e.remove.empty()) return fail(where + "expected add, remove, or both (a change of severity)");
     previous_s = e.at_s;
+    std::vector<std::string> then = present_after(timeline, k);  // at most 64 events: quadratic is fine
+    if (!e.remove.empty()) {
+      const auto it = std::find(then.begin(), then.end(), e.remove);
+      if (it == then.end())
+        return fail(where + "remove: '" + e.remove + "' is not present then (the start and the events before it add "
+                    "what can be removed)");
+      then.erase(it);
+    }
     if (!e.add.empty()) {
       if (auto p = parse_pathology(e.add); !p) return p.with_context(where + "add: ");
-      std::vector<std::string> then = present_after(timeline, k);  // at most 64 events: quadratic is fine
       then.push_back(e.add);
       if (Status s = check_pathologies(then); !s) return s.with_context(where + "add: ");
-      continue;
     }
-    const std::vector<std::string> present = present_after(timeline, k);
-    if (std::find(present.begin(), present.end(), e.remove) == present.end())
-      return fail(where + "remove: '" + e.remove + "' is not present then (the start and the events before it add "
-                  "what can be removed)");
   }
   return {};
 }
@@ -40,11 +42,9 @@ std::vector<std::string> present_after(const PathologyTimeline& timeline, std::s
   std::vector<std::string> present = timeline.start;
   for (std::size_t k = 0; k < events && k < timeline.events.size(); ++k) {
     const PathologyEvent& e = timeline.events[k];
-    if (!e.add.empty()) {
-      present.push_back(e.add);
-    } else if (const auto it = std::find(present.begin(), present.end(), e.remove); it != present.end()) {
+    if (const auto it = std::find(present.begin(), present.end(), e.remove); !e.remove.empty() && it != present.end())
       present.erase(it);
-    }
+    if (!e.add.empty()) present.push_back(e.add);
   }
   return present;
 }
@@ -56,7 +56,11 @@ std::string describe(const PathologyTimeline& timeline) {
   for (const PathologyEvent& e : timeline.events) {
     char when[96];
     std::snprintf(when, sizeof when, " at %.1f s over %.1f s", e.at_s, e.over_s);
-    out += e.add.empty() ? ", then " + e.remove + " goes" + when : ", then " + e.add + " comes" + when;
+    if (!e.add.empty() && !e.remove.empty()) {
+      out += ", then " + e.remove + " becomes " + e.add + when;
+    } else {
+      out += e.add.empty() ? ", then " + e.remove + " goes" + when : ", then " + e.add + " comes" + when;
+    }
   }
   return out;
 }

@@ -11,7 +11,8 @@
 
 namespace lungar::sim {
 
-/// A pathology coming (add) or going (remove) at breathing time at_s over over_s; one of add and remove is set.
+/// A pathology coming (add) or going (remove) at breathing time at_s over over_s; both set: one becomes the other (a
+/// change of severity, as an instructor's console makes it), the lungs going from one state to the other.
 struct PathologyEvent {
   double at_s = 0;
   double over_s = 0;
@@ -29,7 +30,7 @@ struct PathologyTimeline {
   bool operator==(const PathologyTimeline&) const = default;
 };
 
-/// Every spec parses, each event adds or removes one and lasts a real, positive time, the events are in time
+/// Every spec parses, each event adds, removes or replaces one and lasts a real, positive time, the events are in time
 /// order, each removal takes away what the start and the events before it put there, and nothing added is there
 /// already (check_pathologies: a second pneumothorax of a lung would compound the first). The error names the
 /// event (from 1) and what was expected.

@@ -145,3 +145,30 @@ TEST(PathologyCourse, StartsFromLungsDrawnOtherwiseAndTakesAnArdsFromTheStart) {
 }
 
 }  // namespace
+
+TEST(PathologyCourse, AChangeMadeBeforeTheLastEndedGoesOnFromWhereTheLungsAreWithoutAJump) {
+  // An instructor drops a pneumothorax over 10 s and, 4 s in, makes it larger over 5 s (one event replacing it):
+  // the lungs go on from the part-collapsed state, never back to the start or ahead to the first one's end.
+  const sim::PathologyTimeline timeline{
+      {}, {{10.0, 10.0, "pneumothorax:right:20", ""}, {14.0, 5.0, "pneumothorax:right:50", "pneumothorax:right:20"}}};
+  ASSERT_TRUE(sim::check_timeline(timeline)) << sim::check_timeline(timeline).error();
+  EXPECT_EQ(sim::present_after(timeline, 2), std::vector<std::string>{"pneumothorax:right:50"});
+  auto course = platform::PathologyCourse::create(healthy(), healthy(), timeline);
+  ASSERT_TRUE(course) << course.error();
+  const std::size_t right = right_of(healthy());
+  const auto volume = [&](double t) { return (*course)->at_seconds(t)[right].figures.rest_volume_ml; };
+  double largest_step = 0;
+  for (double t = 9.0; t < 21.0; t += 0.01) largest_step = std::max(largest_step, std::abs(volume(t + 0.01) - volume(t)));
+  const double swing = volume(9.0) - volume(20.0);
+  ASSERT_GT(swing, 100.0) << "the lung collapses by half";
+  EXPECT_LT(largest_step, 0.01 * swing) << "no jump when the second change starts or the first would have ended";
+  EXPECT_LT(volume(15.0), volume(14.0)) << "the second change goes on collapsing it";
+  nlohmann::json j;
+  (*course)->at_seconds(16.0);
+  (*course)->add_stats(j);
+  EXPECT_EQ(j["pathologies"], (std::vector<std::string>{"pneumothorax:right:20", "pneumothorax:right:50"}))
+      << "while one becomes the other, both show, as a pathology coming or going does";
+  (*course)->at_seconds(19.5);
+  (*course)->add_stats(j);
+  EXPECT_EQ(j["pathologies"], (std::vector<std::string>{"pneumothorax:right:50"}));
+}

@@ -36,12 +36,13 @@ LUNGAR_SYNC_TOPIC(ScenarioEvents, "lungar_scenario_events");
 LUNGAR_SYNC_TOPIC(Heartbeat, "lungar_heartbeat");
 LUNGAR_SYNC_TOPIC(TimeRequest, "lungar_time_request");
 LUNGAR_SYNC_TOPIC(TimeReply, "lungar_time_reply");
+LUNGAR_SYNC_TOPIC(StationStatus, "lungar_station_status");
 #undef LUNGAR_SYNC_TOPIC
 
 /// Every topic of the classroom, in the order a station creates them.
-using ClassroomTopics =
-    dds::EntitySet<dds::Topic, lungar_sync_Station, lungar_sync_PatientPose, lungar_sync_BreathingState,
-                   lungar_sync_ScenarioEvents, lungar_sync_Heartbeat, lungar_sync_TimeRequest, lungar_sync_TimeReply>;
+using ClassroomTopics = dds::EntitySet<dds::Topic, lungar_sync_Station, lungar_sync_PatientPose,
+                                       lungar_sync_BreathingState, lungar_sync_ScenarioEvents, lungar_sync_Heartbeat,
+                                       lungar_sync_TimeRequest, lungar_sync_TimeReply, lungar_sync_StationStatus>;
 /// The topics the instructor writes and every trainee reads, as a set of E (dds::Writer or dds::Reader) in
 /// the order a station creates them.
 template <template <class> class E>
@@ -50,7 +51,7 @@ using FromInstructor = dds::EntitySet<E, lungar_sync_PatientPose, lungar_sync_Br
 
 /// How a topic is delivered.
 enum class Delivery {
-  Latest,   ///< best effort, volatile, keep-last 1: the pose, the heartbeat, the clock exchange
+  Latest,   ///< best effort, volatile, keep-last 1: the pose, the heartbeat, the clock exchange, a trainee's status
   Durable,  ///< reliable, transient-local, keep-last 1: the station, the breathing state, the scenario events
 };
 

@@ -2,6 +2,7 @@
 /// @brief The instructor's probe for another instructor, its writers, and its sync thread.
 #include "drivers/classroom/instructor.h"
 
+#include <algorithm>
 #include <cstring>
 #include <ctime>
 
@@ -60,6 +61,10 @@ Status Instructor::open_writers() {
   auto request = link_->reader<lungar_sync_TimeRequest>();
   if (!request) return Error{request.error()};
   request_reader_.emplace(request.take());
+  auto status = link_->reader<lungar_sync_StationStatus>();
+  if (!status) return Error{status.error()};
+  status_reader_.emplace(status.take());
+  if (Status s = link_->waitset().attach_reader(status_reader_->get()); !s) return s;
   for (dds_entity_t durable :
        {writers_.get<lungar_sync_BreathingState>().get(), writers_.get<lungar_sync_ScenarioEvents>().get()}) {
     if (Status s = link_->waitset().attach_publication_matched(durable); !s) return s;
@@ -90,12 +95,42 @@ Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<
   return ok();
 }
 
+Status Instructor::reshare(const sim::BreathingParams& start, std::span<const sim::Event> events,
+                           const sim::PathologyTimeline& lungs) {
+  if (!shared_.load()) return fail("sync: the class changed before its breathing was shared");
+  std::lock_guard lock(share_mutex_);
+  // Built in copies first: a change the wire refuses leaves the shared revision as it was.
+  lungar_sync_BreathingState state = state_;
+  lungar_sync_ScenarioEvents sample = events_;
+  std::vector<lungar_sync_ScenarioEvent> event_storage;
+  std::vector<lungar_sync_PathologyEvent> pathology_storage;
+  to_wire(start, state);
+  if (Status s = to_wire(events, event_storage, sample); !s) return s;
+  if (Status s = to_wire(lungs, pathology_storage, sample); !s) return s;
+  state.revision = sample.revision = state_.revision + 1;
+  const std::int64_t now = link_->clock().now_ns();
+  // The events first: a trainee installs a revision once both halves of it have come.
+  if (Status s = writers_.get<lungar_sync_ScenarioEvents>().write(sample, now); !s) return fail("sync: " + s.error());
+  if (Status s = writers_.get<lungar_sync_BreathingState>().write(state, now); !s) return fail("sync: " + s.error());
+  state_ = state;
+  events_ = sample;
+  event_storage_ = std::move(event_storage);  // the sample's sequences point into these buffers, which moved whole
+  pathology_storage_ = std::move(pathology_storage);
+  return ok();
+}
+
+std::uint32_t Instructor::revision() const {
+  std::lock_guard lock(share_mutex_);
+  return state_.revision;
+}
+
 void Instructor::push_to_new_readers() {
   const auto& state_writer = writers_.get<lungar_sync_BreathingState>();
   const auto& events_writer = writers_.get<lungar_sync_ScenarioEvents>();
   const int state_readers = state_writer.matched();  // reading the status clears the waitset's trigger
   const int event_readers = events_writer.matched();
   if (shared_.load() && (state_readers > state_readers_ || event_readers > event_readers_)) {
+    std::lock_guard lock(share_mutex_);
     const std::int64_t now = link_->clock().now_ns();
     (void)events_writer.write(events_, now);  // reliable: a failure here is Cyclone's to retry
     (void)state_writer.write(state_, now);
@@ -128,6 +163,7 @@ void Instructor::run() {
     link_->waitset().wait(next_heartbeat - lungar::monotonic_ns());
     if (link_->poll_roster() > 0) check_roster();
     answer_requests();
+    take_statuses();
     push_to_new_readers();
     send_pose();
     if (followed_.load(std::memory_order_relaxed) && breath_box_.published() != sent_breath_) send_heartbeat();
@@ -183,6 +219,45 @@ void Instructor::answer_requests() {
     // A lost reply is a lost exchange: the trainee's next request makes another.
     (void)writers_.get<lungar_sync_TimeReply>().write(reply, link_->clock().now_ns());
   });
+}
+
+void Instructor::take_statuses() {
+  const std::int64_t now = lungar::monotonic_ns();
+  status_reader_->take_each<8>([&](const lungar_sync_StationStatus& s, const dds_sample_info_t& info) {
+    if (!info.valid_data) return;
+    if (Status c = check(s); !c) {
+      link_->malformed(c.error());
+      return;
+    }
+    StationStatus st;
+    st.name = s.name;
+    st.state = s.state == static_cast<std::uint8_t>(SyncState::InSync) ? "in step" : "joining";
+    st.breath_offset_ms = s.breath_offset_ms;
+    st.pose_age_ms = s.pose_age_ms;
+    st.fps = s.fps;
+    st.secure = s.secure;
+    std::lock_guard lock(stations_mutex_);
+    auto it = std::find_if(stations_.begin(), stations_.end(),
+                           [&](const HeardStatus& h) { return h.status.name == st.name; });
+    if (it == stations_.end()) {
+      stations_.push_back({std::move(st), now});
+    } else {
+      *it = {std::move(st), now};
+    }
+  });
+}
+
+std::vector<StationStatus> Instructor::stations() const {
+  const std::int64_t now = lungar::monotonic_ns();
+  std::vector<StationStatus> out;
+  std::lock_guard lock(stations_mutex_);
+  for (const HeardStatus& h : stations_) {
+    StationStatus st = h.status;
+    st.heard_s_ago = 1e-9 * static_cast<double>(now - h.heard_mono_ns);
+    if (now - h.heard_mono_ns > kStationLostNs) st.state = "lost";
+    out.push_back(std::move(st));
+  }
+  return out;
 }
 
 void Instructor::check_roster() {

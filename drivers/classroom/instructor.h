@@ -44,6 +44,14 @@ class Instructor {
   /// breathing time, and the monotonic instant of breathing time 0. Call once before the frames (it allocates).
   Status share_breathing(const sim::BreathingParams& start, std::span<const sim::Event> events,
                          const sim::PathologyTimeline& lungs, std::int64_t t0_mono_ns);
+  /// The class changed while it runs (the instructor's console): the same start and time base with more events
+  /// or pathologies, as the next revision. Every trainee rebuilds its breathing and its lungs from it; an event
+  /// timed a little ahead of now reaches them before it is due, so no station jumps. Any thread but the frame's
+  /// (it allocates and writes to DDS); after share_breathing().
+  Status reshare(const sim::BreathingParams& start, std::span<const sim::Event> events,
+                 const sim::PathologyTimeline& lungs);
+  /// The revision last shared (1 after share_breathing()).
+  std::uint32_t revision() const;
   /// From the frame: the lung pose in the world it drew and when the tracker read it (monotonic ns). A pose
   /// with the same reading time as the last is not sent again. Allocates nothing.
   void publish_pose(const std::array<double, 3>& position_mm, const std::array<double, 4>& orientation_wxyz,
@@ -60,6 +68,10 @@ class Instructor {
   std::string fatal_error() const;
   SyncReport report() const;
   const std::string& station() const { return link_->name(); }
+  /// The trainees heard from, by name, as their last status said (for the console); "lost" when it is older than
+  /// kStationLostNs. Any thread.
+  std::vector<StationStatus> stations() const;
+  static constexpr std::int64_t kStationLostNs = 2'000'000'000;
 
  private:
   struct PoseMsg {
@@ -80,6 +92,7 @@ class Instructor {
   void send_heartbeat();
   void answer_requests();
   void check_roster();
+  void take_statuses();
   /// Writes the breathing state and events again when a new reader matched: it gets them at once, instead of
   /// on the reliable protocol's next heartbeat (about 100 ms later).
   void push_to_new_readers();
@@ -87,7 +100,15 @@ class Instructor {
   std::unique_ptr<ClassroomLink> link_;
   FromInstructor<dds::Writer> writers_;
   std::optional<dds::Reader<lungar_sync_TimeRequest>> request_reader_;
+  std::optional<dds::Reader<lungar_sync_StationStatus>> status_reader_;
+  struct HeardStatus {
+    StationStatus status;
+    std::int64_t heard_mono_ns = 0;
+  };
+  mutable std::mutex stations_mutex_;  ///< guards stations_: the sync thread writes, the console reads
+  std::vector<HeardStatus> stations_;
 
+  mutable std::mutex share_mutex_;       ///< guards state_ and events_ (and their storage) against reshare()
   lungar_sync_BreathingState state_{};   ///< the shared state, as last written
   lungar_sync_ScenarioEvents events_{};  ///< points into event_storage_
   std::vector<lungar_sync_ScenarioEvent> event_storage_;

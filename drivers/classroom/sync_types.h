@@ -22,6 +22,17 @@ inline constexpr EnumNames<SyncState, 3> kSyncStateNames{
 
 inline const char* to_string(SyncState s) { return kSyncStateNames.name(s); }
 
+/// A trainee as the instructor's console shows it, from the status it sends about twice a second.
+struct StationStatus {
+  std::string name;
+  std::string state;            ///< "in step", "joining" (not yet in step) or "lost" (no status for 2 s)
+  double breath_offset_ms = 0;  ///< the largest |breath offset| over its last status's interval
+  double pose_age_ms = 0;       ///< the oldest patient pose it applied over that interval
+  double fps = 0;               ///< frames it drew per second over that interval
+  bool secure = false;
+  double heard_s_ago = 0;  ///< since its last status
+};
+
 struct SyncOptions {
   SyncRole role = SyncRole::Off;
   std::string classroom = "classroom";           ///< the DDS partition: stations of one classroom see only each other

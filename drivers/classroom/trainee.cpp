@@ -36,6 +36,9 @@ Status Trainee::open_endpoints() {
   auto w = link_->writer<lungar_sync_TimeRequest>();
   if (!w) return Error{w.error()};
   request_writer_.emplace(w.take());
+  auto status = link_->writer<lungar_sync_StationStatus>();
+  if (!status) return Error{status.error()};
+  status_writer_.emplace(status.take());
   // Each reader wakes the sync thread on data from the moment it is made.
   return readers_.open([this](auto type) { return link_->reader<typename decltype(type)::type>(); },
                        [this](const auto& reader) { return link_->waitset().attach_reader(reader.get()); });
@@ -83,6 +86,7 @@ void Trainee::run() {
     take_replies();
     request_time(now);
     update_state(lungar::monotonic_ns());
+    send_status(now);
   }
 }
 
@@ -176,6 +180,7 @@ void Trainee::compare_breath(const lungar_sync_Heartbeat& hb) {
   const std::int64_t frame_on_instructor_clock = link_->clock().from_monotonic(f.now_mono_ns) + estimate_->offset_ns;
   const double instructor_t = hb.breath_t_s + static_cast<double>(frame_on_instructor_clock - hb.frame_ns) * 1e-9;
   record(breath_offset_ms_, std::abs(f.t_s - instructor_t) * 1e3);
+  status_offset_ms_ = std::max(status_offset_ms_, std::abs(f.t_s - instructor_t) * 1e3);
 }
 
 void Trainee::take_poses() {
@@ -203,7 +208,9 @@ void Trainee::take_poses() {
     p.orientation_wxyz = pose->orientation_wxyz;
     if (estimate_) {  // publication -> receipt, both on the instructor's clock
       p.t_device_ns = link_->clock().to_monotonic(pose->measured_ns - estimate_->offset_ns);
-      record(pose_age_ms_, static_cast<double>(here_ns + estimate_->offset_ns - info.source_timestamp) * 1e-6);
+      const double age_ms = static_cast<double>(here_ns + estimate_->offset_ns - info.source_timestamp) * 1e-6;
+      record(pose_age_ms_, age_ms);
+      status_pose_age_ms_ = std::max(status_pose_age_ms_, age_ms);
     }
     pose_box_.publish(p);
     poses_.fetch_add(1, std::memory_order_relaxed);
@@ -293,6 +300,26 @@ void Trainee::transition(SyncState to) {
   std::lock_guard lock(report_mutex_);
   if (transitions_.size() < transitions_.capacity())
     transitions_.push_back({to, StationClock().now_ns()});  // the machine's clock, unskewed
+}
+
+void Trainee::send_status(std::int64_t now_mono) {
+  constexpr std::int64_t kStatusPeriodNs = 500'000'000;
+  if (now_mono < next_status_mono_) return;
+  const double interval_s =
+      next_status_mono_ == 0 ? 0.0 : 1e-9 * static_cast<double>(now_mono - next_status_mono_ + kStatusPeriodNs);
+  next_status_mono_ = now_mono + kStatusPeriodNs;
+  const std::uint64_t frames = frame_box_.published();
+  lungar_sync_StationStatus s{};
+  std::snprintf(s.name, sizeof s.name, "%s", link_->name().c_str());
+  s.session = link_->session();
+  s.state = static_cast<std::uint8_t>(state());
+  s.breath_offset_ms = status_offset_ms_;
+  s.pose_age_ms = status_pose_age_ms_;
+  s.fps = interval_s > 0 ? static_cast<double>(frames - status_frames_) / interval_s : 0.0;
+  s.secure = link_->secure();
+  status_frames_ = frames;
+  status_offset_ms_ = status_pose_age_ms_ = 0;
+  (void)status_writer_->write(s, link_->clock().now_ns());  // best effort: the next one comes in half a second
 }
 
 void Trainee::record(LogHistogram& values, double v) {

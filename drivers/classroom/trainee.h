@@ -84,6 +84,8 @@ class Trainee {
   void take_heartbeats(std::int64_t now_mono);
   void take_poses();
   void take_replies();
+  /// About twice a second: this station's status, for the instructor's console.
+  void send_status(std::int64_t now_mono);
   /// A sample from instructor `session` arrived: it is alive; a new session restarts the clock estimate.
   void hear(std::uint64_t session, std::int64_t now_mono);
   /// Until the first clock exchange, a one-way estimate from a sample's source timestamp: the instructor's clock
@@ -97,6 +99,7 @@ class Trainee {
 
   std::unique_ptr<ClassroomLink> link_;
   std::optional<dds::Writer<lungar_sync_TimeRequest>> request_writer_;
+  std::optional<dds::Writer<lungar_sync_StationStatus>> status_writer_;
   FromInstructor<dds::Reader> readers_;
 
   drivers::LatestMailbox<drivers::PoseSample> pose_box_;
@@ -119,6 +122,10 @@ class Trainee {
   std::int64_t join_mono_ = 0;           ///< first word from the current instructor session
   std::int64_t in_sync_since_mono_ = 0;  ///< frames from here on are compared with the instructor
   std::uint32_t request_seq_ = 0;
+  std::int64_t next_status_mono_ = 0;
+  std::uint64_t status_frames_ = 0;  ///< frame_box_'s count at the last status
+  double status_offset_ms_ = 0;      ///< the largest |breath offset| since the last status
+  double status_pose_age_ms_ = 0;    ///< the oldest pose applied since the last status
   std::int64_t next_request_mono_ = 0;
   int exchanges_ = 0;
 

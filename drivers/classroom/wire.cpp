@@ -1,7 +1,9 @@
 /// @file wire.cpp
 /// @brief Checked conversions between the classroom's IDL types and lungar's.
 #include "drivers/classroom/wire.h"
+
 #include "config/base/number_text.h"
+#include "drivers/classroom/sync_types.h"
 
 #include <algorithm>
 #include <cmath>
@@ -261,6 +263,19 @@ Status check(const lungar_sync_Station& s) {
     return fail("lungar_station: role: expected 1 (instructor) or 2 (trainee), got " + std::to_string(s.role));
   }
   if (s.name[0] == '\0') return fail("lungar_station: name: expected a station name, got an empty one");
+  return ok();
+}
+
+Status check(const lungar_sync_StationStatus& s) {
+  if (s.name[0] == '\0') return fail("lungar_station_status: name: expected a station name, got an empty one");
+  if (s.state > static_cast<std::uint8_t>(SyncState::Lost))
+    return fail("lungar_station_status: state: expected a sync state (0 to " +
+                std::to_string(static_cast<int>(SyncState::Lost)) + "), got " + std::to_string(s.state));
+  for (auto [name, v] :
+       {std::pair{"breath_offset_ms", s.breath_offset_ms}, {"pose_age_ms", s.pose_age_ms}, {"fps", s.fps}}) {
+    if (!std::isfinite(v) || v < 0)
+      return fail(std::string("lungar_station_status: ") + name + ": expected a real number, not negative");
+  }
   return ok();
 }
 

@@ -61,5 +61,7 @@ Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_P
 Status check(const lungar_sync_Heartbeat& s);
 /// A station's role must be instructor or trainee and its name not empty.
 Status check(const lungar_sync_Station& s);
+/// A trainee's status: a name, a known state, and figures that are real numbers, none negative.
+Status check(const lungar_sync_StationStatus& s);
 
 }  // namespace lungar::classroom

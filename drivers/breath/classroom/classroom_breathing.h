@@ -5,6 +5,7 @@
 /// @ingroup platform
 #pragma once
 
+#include <atomic>
 #include <memory>
 
 #include "drivers/breath/source/breathing_clock.h"
@@ -20,10 +21,14 @@ class ClassroomBreathing final : public breath::BreathingClock {
   sim::BreathingSample at(std::int64_t now_ns) const override;
   /// The station's own pattern; null on a trainee, which draws its instructor's breath.
   const sim::Pattern* pattern_at(std::int64_t now_ns) const override;
+  /// The clock's own keys, the sync_* keys, and `breath_state`: "paused" while the breath is held (an instructor's
+  /// console paused it), else the source's own state, or "breathing".
   void add_stats(nlohmann::json& stats) const override;
 
  private:
   std::unique_ptr<breath::BreathingClock> own_;
+  /// The phase of the last sample drawn (frame thread), for the stats' `breath_state`: "paused" in a breath hold.
+  mutable std::atomic<sim::BreathPhase> last_phase_{sim::BreathPhase::Expiration};
   std::shared_ptr<ClassroomStation> station_;
 };
 

@@ -184,8 +184,10 @@ TEST(SyncWire, MalformedPathologiesAreRefusedNamingWhatIsWrong) {
   refused("pathology event 1: at_s");
   storage[0].t_s = 10.0;
   std::strcpy(storage[0].remove, "ards:0.6");
-  refused("expected one of add and remove");
+  EXPECT_TRUE(pathologies_from_wire(w)) << "both: one pathology becomes another (a console's change of severity)";
   storage[0].add[0] = '\0';
+  storage[0].remove[0] = '\0';
+  refused("expected add, remove, or both");
   std::strcpy(storage[0].remove, "pneumothorax:left:20");
   refused("is not present then");
   EXPECT_TRUE(pathologies_from_wire(w).error().find("pneumothorax:left:20") != std::string::npos);
@@ -260,4 +262,23 @@ TEST(SyncWire, HeartbeatsAndStationsAreChecked) {
   st.role = 2;
   st.name[0] = '\0';
   EXPECT_FALSE(check(st));
+}
+
+TEST(SyncWire, ATraineesStatusIsCheckedNamingTheField) {
+  lungar_sync_StationStatus s{};
+  std::snprintf(s.name, sizeof s.name, "bed-2");
+  s.state = 1;
+  s.fps = 60.0;
+  EXPECT_TRUE(check(s));
+  s.state = 9;
+  EXPECT_NE(check(s).error().find("lungar_station_status: state"), std::string::npos);
+  s.state = 2;
+  s.pose_age_ms = kNaN;
+  EXPECT_NE(check(s).error().find("pose_age_ms"), std::string::npos);
+  s.pose_age_ms = 1.0;
+  s.breath_offset_ms = -1.0;
+  EXPECT_NE(check(s).error().find("breath_offset_ms"), std::string::npos);
+  s.breath_offset_ms = 0.0;
+  s.name[0] = '\0';
+  EXPECT_NE(check(s).error().find("name"), std::string::npos);
 }

@@ -2,6 +2,9 @@
 /// @brief The authority, the identities and the signed documents of classroom_keys.h, through `openssl`.
 #include "drivers/classroom/classroom_keys.h"
 
+#include "drivers/classroom/console_login_line.h"
+
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -9,8 +12,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -75,6 +80,89 @@ Status check_name(const std::string& what, const std::string& name) {
   if (name.empty() || name.size() > 63 || !ok_chars || name[0] == '.')
     return fail(what + ": expected 1 to 63 letters, digits, '-', '_' or '.' (not first), got \"" + name + "\"");
   return ok();
+}
+
+/// Whether `host` is an IPv4 or IPv6 address (then "IP:host" in a certificate's names), else a DNS name.
+bool is_ip(const std::string& host) {
+  unsigned char buf[16];
+  return inet_pton(AF_INET, host.c_str(), buf) == 1 || inet_pton(AF_INET6, host.c_str(), buf) == 1;
+}
+
+/// A DNS name as a certificate names a host: dot-separated labels of letters, digits and '-' (not at a label's
+/// ends), each 1 to 63 long, 253 in all. Nothing else may reach the openssl configuration it is written into.
+bool is_dns_name(const std::string& host) {
+  if (host.empty() || host.size() > 253) return false;
+  std::size_t start = 0;
+  while (start <= host.size()) {
+    const std::size_t end = std::min(host.find('.', start), host.size());
+    const std::string label = host.substr(start, end - start);
+    if (label.empty() || label.size() > 63 || label.front() == '-' || label.back() == '-') return false;
+    if (!std::all_of(label.begin(), label.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-'; }))
+      return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+/// Writes `text` to `path` with mode 0600 (a private key's or a password's).
+Status write_private(const fs::path& path, const std::string& text) {
+  if (Status s = write_file_atomically(path.string(), text); !s) return s;
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  return ok();
+}
+
+/// DIR/console: the console's HTTPS certificate signed by the authority, its key, the authority's certificate for
+/// the browsers, the logins and their passwords.
+Status make_console(const ClassroomKeysOptions& o, const fs::path& dir, const std::string& ca_cert,
+                    const std::string& ca_key, std::uint64_t serial) {
+  const fs::path c = dir / "console";
+  fs::create_directories(c);
+  std::vector<std::string> names{"DNS:localhost", "IP:127.0.0.1"};
+  for (const std::string& host : o.console_hosts) {
+    const std::string name = (is_ip(host) ? "IP:" : "DNS:") + host;
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  std::string san;
+  for (const std::string& n : names) san += (san.empty() ? "" : ", ") + n;
+  const fs::path ext = dir / "console.ext", csr = c / "server.csr";
+  if (Status s = write_file_atomically(ext.string(),
+                                       "[server]\nbasicConstraints = critical, CA:FALSE\n"
+                                       "keyUsage = critical, digitalSignature\nextendedKeyUsage = serverAuth\n"
+                                       "subjectKeyIdentifier = hash\nauthorityKeyIdentifier = keyid, issuer\n"
+                                       "subjectAltName = " +
+                                           san + "\n");
+      !s)
+    return s;
+  const std::string key = (c / "server_key.pem").string();
+  if (Status r =
+          openssl(o,
+                  {"req", "-new", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes", "-keyout", key,
+                   "-out", csr.string(), "-subj", "/O=lungar/OU=" + o.classroom + "/CN=lungar console"},
+                  dir);
+      !r)
+    return r;
+  fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  if (Status r = openssl(o,
+                         {"x509", "-req", "-in", csr.string(), "-CA", ca_cert, "-CAkey", ca_key, "-set_serial",
+                          std::to_string(serial), "-days", std::to_string(o.days), "-extfile", ext.string(),
+                          "-extensions", "server", "-out", (c / "server_cert.pem").string()},
+                         dir);
+      !r)
+    return r;
+  fs::remove(csr);
+  fs::remove(ext);
+  fs::copy_file(ca_cert, c / "ca.pem");
+  std::string logins = "# the console's logins (lungar classroom-keys): NAME ROLE pbkdf2-sha256 ITERATIONS SALT HASH\n";
+  for (const char* role : {"instructor", "observer"}) {
+    auto password = random_password(20);
+    if (!password) return password.with_context("");
+    auto line = make_login_line(role, role, *password);
+    if (!line) return line.with_context("");
+    logins += *line + "\n";
+    if (Status s = write_private(c / (std::string(role) + ".password"), *password + "\n"); !s) return s;
+  }
+  return write_private(c / "logins", logins);
 }
 
 /// Everything into `dir` (a fresh folder); the caller renames it into place.
@@ -143,6 +231,11 @@ Result<std::vector<std::string>> make_into(const ClassroomKeysOptions& o, const 
                     (fs::path(o.out_dir) / station).string() + "/ to its HMD PC (its identity, the authority's " +
                     "certificate, the signed governance and permissions)");
   }
+  if (Status c = make_console(o, dir, ca_cert, ca_key, rng() >> 2); !c) return c.with_context("the console: ");
+  const std::string console = (fs::path(o.out_dir) / "console").string();
+  lines.push_back("console: copy " + console + "/ to the instructor station (lungar --console); give the trainer " +
+                  console + "/instructor.password and observer.password (logins instructor and observer); each " +
+                  "browser imports " + console + "/ca.pem as an authority");
   fs::remove(dir / "openssl.err");
   lines.push_back("keep " + (fs::path(o.out_dir) / "ca").string() +
                   "/ (the authority's private key) off the classroom's machines; --ca reuses it for new stations");
@@ -204,7 +297,7 @@ std::vector<std::string> topics_published_by(bool instructor) {
   if (instructor)
     return {"lungar_station",         "lungar_patient_pose", "lungar_breathing_state",
             "lungar_scenario_events", "lungar_heartbeat",    "lungar_time_reply"};
-  return {"lungar_station", "lungar_time_request"};
+  return {"lungar_station", "lungar_time_request", "lungar_station_status"};
 }
 
 std::string classroom_governance_xml() {
@@ -272,11 +365,16 @@ Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions&
   for (const std::string& s : o.stations) {
     if (Status c = check_name("--station", s); !c) return c.with_context("");
     if (s == "ca") return fail("--station: \"ca\" is the authority's folder; name the station otherwise");
+    if (s == "console") return fail("--station: \"console\" is the console's folder; name the station otherwise");
     if (!seen.insert(s).second) return fail("--station: \"" + s + "\" given twice");
   }
   if (o.instructor.empty()) o.instructor = o.stations.front();
   if (!seen.count(o.instructor))
     return fail("--instructor: expected one of the --station names, got \"" + o.instructor + "\"");
+  for (const std::string& host : o.console_hosts)
+    if (!is_ip(host) && !is_dns_name(host))
+      return fail("--console-host: expected an IP address or a DNS name (letters, digits, '-', dots), got \"" + host +
+                  "\"");
   if (o.days < 1 || o.days > 3650) return fail("--days: expected 1 to 3650, got " + std::to_string(o.days));
   if (!o.ca_dir.empty()) {
     for (const char* f : {"ca_cert.pem", "ca_key.pem"})

@@ -10,6 +10,12 @@
 /// `DIR/ca/` holds the authority (its key stays there, mode 0600: keep it off the classroom's machines);
 /// `DIR/<station>/` is everything that station needs, self-contained: identity_ca.pem, identity_cert.pem,
 /// identity_key.pem (0600), permissions_ca.pem, governance.p7s, permissions.p7s.
+/// `DIR/console/` is the instructor's console (platform/console/, issue 39), for the instructor station:
+/// server_cert.pem (an HTTPS server certificate signed by the authority, for localhost, 127.0.0.1 and each
+/// --console-host), server_key.pem (0600), ca.pem (the authority's certificate, for the browsers to trust), logins
+/// (an `instructor` and an `observer` login: PBKDF2 hashes, platform/console/console_logins.h) and their random
+/// passwords, instructor.password and observer.password (0600), for the trainer. A station's identity is never a
+/// console login.
 #pragma once
 
 #include <string>
@@ -25,11 +31,15 @@ struct ClassroomKeysOptions {
   std::string instructor;             ///< which station teaches; empty: the first
   std::string out_dir;                ///< must not exist, or be empty: written whole or not at all
   std::string ca_dir;                 ///< reuse this authority (ca_cert.pem, ca_key.pem) instead of making one
+  /// Names the console's certificate is valid for besides localhost and 127.0.0.1: each an IP address or a DNS name
+  /// by which the trainer's tablet reaches the instructor station.
+  std::vector<std::string> console_hosts;
   int days = 365;                     ///< validity of the certificates and the permissions
   std::string openssl = "openssl";    ///< the command (tests point it elsewhere to see a failure)
 };
 
-/// One line per station of what to copy where, or the error (one line; nothing left in out_dir).
+/// One line per station (and for the console) of what to copy where, or the error (one line; nothing left in
+/// out_dir).
 Result<std::vector<std::string>> make_classroom_keys(const ClassroomKeysOptions& o);
 
 /// `lungar classroom-revoke`: the authority withdraws a station's identity (a lost or stolen HMD PC).
@@ -49,8 +59,8 @@ std::string classroom_permissions_xml(const ClassroomKeysOptions& o, const std::
                                       const std::string& not_after);
 std::string classroom_governance_xml();
 
-/// The topics a role may publish (instructor: every classroom topic it writes; trainee: its status and its clock
-/// requests).
+/// The topics a role may publish (instructor: every classroom topic it writes; trainee: its station, its status
+/// for the console and its clock requests).
 std::vector<std::string> topics_published_by(bool instructor);
 
 }  // namespace lungar::classroom

@@ -45,7 +45,7 @@ TEST(ClassroomKeys, EveryStationGetsAFolderThatOpensslAccepts) {
   o.out_dir = (d.path / "keys").string();
   auto made = make_classroom_keys(o);
   ASSERT_TRUE(made) << made.error();
-  EXPECT_EQ(made->size(), 4u) << "a line per station and one for the authority";
+  EXPECT_EQ(made->size(), 5u) << "a line per station, one for the console and one for the authority";
   const fs::path ca = d.path / "keys" / "ca" / "ca_cert.pem";
   for (const std::string& s : o.stations) {
     const fs::path f = d.path / "keys" / s;

@@ -4,7 +4,9 @@
 /// @ingroup platform
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -20,6 +22,9 @@ struct FrameState {
   Eigen::Quaterniond lung_in_world = Eigen::Quaterniond::Identity();  ///< step 2: after the registration
   Eigen::Vector3d lung_origin_mm = Eigen::Vector3d::Zero();           ///< the lung frame's origin in the world
   Eigen::Vector3d gravity_lung = Eigen::Vector3d(0, 0, -1);  ///< g-hat in the lung frame (of lung_in_world)
+  /// Step 4: the first two lungs' dV as drawn, in the asset's order (each its posture's share of breath.dv_ml, or its
+  /// own when the source measures each lung); NaN for a lung the asset lacks. What a session record keeps of each.
+  std::array<double, 2> lung_dv_ml{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 
 class FrameListener {

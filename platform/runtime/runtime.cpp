@@ -200,7 +200,10 @@ Status Runtime::deform_and_draw(const FrameState& state, const FrameViews& views
   if (Status drawn = draw_views(frame_inputs(state, views), views); !drawn) return drawn;
   draw_status_line(state.now_ns, state.breath.dv_ml, views);
   draw_legend(views);
-  for (const auto& listener : parts_.listeners) listener->on_frame(state);
+  FrameState told = state;  // with each lung's dV as drawn, for the listeners (a session record keeps it)
+  for (std::size_t l = 0; l < told.lung_dv_ml.size() && l < lung_frames_.size(); ++l)
+    told.lung_dv_ml[l] = lung_frames_[l].volume_change_ml;
+  for (const auto& listener : parts_.listeners) listener->on_frame(told);
   return ok();
 }
 

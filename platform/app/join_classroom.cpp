@@ -9,19 +9,40 @@
 
 namespace lungar::platform::sync {
 
-Result<std::shared_ptr<classroom::ClassroomStation>> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
-                                                                    const sim::BreathingScript& script,
-                                                                    const LoadedLungs& lungs, std::int64_t t0_ns,
-                                                                    RuntimeParts& parts,
-                                                                    std::function<void(const std::string&)> log) {
+Status can_draw(const std::shared_ptr<const sim::BakedAsset>& healthy,
+                const std::shared_ptr<const sim::BakedAsset>& drawn, const sim::PathologyTimeline& timeline) {
+  if (!healthy || !drawn) return fail("the loaded lungs are not kept: none of their pathologies can change");
+  auto course = PathologyCourse::create(*healthy, *drawn, timeline);  // on the console's thread: the frame goes on
+  if (!course) return fail(course.error());
+  return ok();
+}
+
+Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_skew_ns,
+                                       const sim::BreathingScript& script, const LoadedLungs& lungs, std::int64_t t0_ns,
+                                       const std::string& followed, RuntimeParts& parts,
+                                       std::function<void(const std::string&)> log) {
   auto opened = classroom::ClassroomStation::open(s.sync, log, clock_skew_ns);
   if (!opened) return Error{opened.error()};
-  auto station = std::make_shared<classroom::ClassroomStation>(opened.take());
+  JoinedClassroom joined;
+  auto station = joined.station = std::make_shared<classroom::ClassroomStation>(opened.take());
   if (classroom::Instructor* instructor = station->instructor()) {
     if (Status shared = instructor->share_breathing(script.start, script.events, lungs.own, t0_ns); !shared)
       return shared.with_context("");
     parts.listeners.push_back(std::make_shared<InstructorPublisher>(station));
     if (!lungs.own.empty() && log) log("classroom: sharing the lungs' pathologies: " + sim::describe(lungs.own));
+    if (!s.console.listen.empty()) {
+      // The console changes the class as it runs: the instructor's own breath and lungs follow what it shares.
+      auto control = ClassControl::create({script.start, script.events, lungs.own, t0_ns, followed}, station, log);
+      if (!control) return control.with_context("");
+      joined.control = control.take();
+      joined.control->can_draw = [healthy = lungs.healthy, drawn = lungs.drawn](const sim::PathologyTimeline& t) {
+        return can_draw(healthy, drawn, t);
+      };
+      parts.listeners.push_back(joined.control);
+      if (followed.empty()) parts.breathing = joined.control->breathing_clock();
+      if (!lungs.healthy || !lungs.drawn) return fail("console: the instructor needs its loaded lungs to change them");
+      parts.course = std::make_shared<ClassroomCourse>(parts.course, joined.control, lungs, log);
+    }
   } else if (station->trainee() != nullptr) {
     parts.poses = std::make_unique<TraineePoses>(
         std::move(parts.poses), station,
@@ -29,8 +50,10 @@ Result<std::shared_ptr<classroom::ClassroomStation>> join_classroom(const Settin
     if (!lungs.healthy || !lungs.drawn) return fail("classroom: a trainee needs the loaded lungs to draw the instructor's");
     parts.course = std::make_shared<ClassroomCourse>(parts.course, station, lungs, log);
   }
+  if (!s.console.listen.empty() && !joined.control)
+    return fail("console: the console runs on the classroom's instructor; start this station with --sync instructor");
   parts.breathing = std::make_unique<classroom::ClassroomBreathing>(std::move(parts.breathing), station);
-  return station;
+  return joined;
 }
 
 }  // namespace lungar::platform::sync

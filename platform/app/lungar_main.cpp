@@ -1,5 +1,6 @@
 /// @file lungar_main.cpp
-/// @brief The `lungar` entry point: the runtime (no arguments: the demo), `lungar calibrate` and `lungar doctor`.
+/// @brief The `lungar` entry point: the runtime (no arguments: the demo), `lungar calibrate`, `lungar doctor` and
+/// `lungar replay`.
 #include <csignal>
 #include <cstdio>
 #include <optional>
@@ -15,7 +16,9 @@
 #include "lungar/version.h"
 #include "platform/app/calibrate_command.h"
 #include "platform/app/calibrate_display_command.h"
+#include "platform/app/replay_command.h"
 #include "platform/app/run.h"
+#include "platform/app/session_recording.h"
 #include "platform/app/settings_load.h"
 #include "platform/doctor/doctor.h"
 
@@ -38,6 +41,8 @@ struct Commands {
   CLI::App* keys_app = nullptr;
   lungar::classroom::ClassroomRevokeOptions revoke;
   CLI::App* revoke_app = nullptr;
+  lungar::platform::ReplayOptions replay;  ///< `lungar replay`: run after the settings load, as the runtime is
+  CLI::App* replay_app = nullptr;
 };
 
 /// An option of three comma-separated millimetres (a point or an offset), each within a metre.
@@ -107,8 +112,9 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   lungar::classroom::ClassroomKeysOptions& k = m.keys;
   CLI::App* keys = m.keys_app =
       app.add_subcommand("classroom-keys",
-                         "make a secure classroom's authority, each station's identity and the signed DDS Security "
-                         "governance and permissions (with Debian's openssl)");
+                         "make a secure classroom's authority, each station's identity, the signed DDS Security "
+                         "governance and permissions, and the instructor's console (its HTTPS certificate and "
+                         "logins) (with Debian's openssl)");
   keys->add_option("--classroom", k.classroom, "the classroom's name (its DDS partition)")->required();
   keys->add_option("--station", k.stations, "a station's name, repeatable: one folder each")
       ->required()
@@ -117,6 +123,10 @@ void add_display_and_keys(CLI::App& app, Commands& m) {
   keys->add_option("--out", k.out_dir, "a new or empty folder for the keys")->required();
   keys->add_option("--ca", k.ca_dir, "reuse the authority in this folder (ca_cert.pem, ca_key.pem)");
   keys->add_option("--days", k.days, "validity of the certificates and permissions, days")->capture_default_str();
+  keys->add_option("--console-host", k.console_hosts,
+                   "an IP address or DNS name the console's HTTPS certificate also names (besides localhost and "
+                   "127.0.0.1): how tablets reach the instructor station; repeatable")
+      ->allow_extra_args(false);
   CLI::App* revoke = m.revoke_app = app.add_subcommand(
       "classroom-revoke", "withdraw stations' identities (a lost HMD PC): the authority's revocation list, crl.pem");
   revoke->add_option("--ca", m.revoke.ca_dir, "the authority's folder (DIR/ca of classroom-keys)")->required();
@@ -183,6 +193,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("doctor", "check this machine's set-up, one line each with the fix")->fallthrough();
   add_calibrate(app, commands);
   add_display_and_keys(app, commands);
+  commands.replay_app = lungar::platform::add_replay_command(app, commands.replay);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -207,5 +218,11 @@ int main(int argc, char** argv) {
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  if (*commands.replay_app) return lungar::platform::run_replay(commands.replay, settings, o);
+  // An unwritable --session-record is refused before anything slow loads.
+  if (const lungar::Status writable = lungar::platform::check_session_record_path(o.session_record_path); !writable) {
+    std::fprintf(stderr, "lungar: %s\n", writable.error().c_str());
+    return 2;
+  }
   return lungar::platform::run_runtime(settings, o);
 }

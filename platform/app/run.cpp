@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -15,6 +16,7 @@
 #include "drivers/classroom/classroom_station.h"
 #include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker_factory/tracker_factory.h"
+#include "platform/app/console_run.h"
 #include "platform/app/demo_asset.h"
 #include "platform/app/join_classroom.h"
 #include "platform/app/log.h"
@@ -24,6 +26,7 @@
 #include "platform/app/runtime_settings.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/app/scene_lesions.h"
+#include "platform/app/session_recording.h"
 #include "platform/app/settings_load.h"
 #include "platform/app/tracker_poses.h"
 #include "platform/runtime/pathology_course.h"
@@ -65,12 +68,14 @@ Result<std::shared_ptr<LungScene>> load_scene(Settings& s, bool procedural, cons
   // After centring: the registration places the healthy pair, and a collapsed lung shrinks inside it.
   lungs.own = timeline_of(s.sim.pathologies, scenario ? &*scenario : nullptr);
   const bool trainee = s.sync.role == classroom::SyncRole::Trainee;
-  if (!lungs.own.events.empty() || trainee)  // each state of a course is built from it
+  // A trainee's lungs, and those of an instructor with its console, change as the class goes.
+  const bool changing = trainee || (s.sync.role == classroom::SyncRole::Instructor && !s.console.listen.empty());
+  if (!lungs.own.events.empty() || changing)  // each state of a course is built from it
     lungs.healthy = std::make_shared<const sim::BakedAsset>(drawn->asset);
   sim::PatientState patient = sim::PatientState::of(drawn->asset);
   if (Status p = sim::apply_pathologies(drawn->asset, patient, s.sim.pathologies); !p)
     return p.with_context("sim.pathology: ");
-  if (trainee) {
+  if (changing) {
     lungs.drawn = s.sim.pathologies.empty() ? lungs.healthy : std::make_shared<const sim::BakedAsset>(drawn->asset);
     lungs.drawn_patient = patient;
   }
@@ -111,8 +116,7 @@ Result<std::string> given_breath(const RuntimeOptions& o) {
 /// This station's tracker, and the breathing script; with the mock tracker (no real patient to follow) a scenario
 /// file, or a script with turns, lays the patient: its start pose, then its turns.
 Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                   const LoadedLungs& lungs, RuntimeParts& parts,
-                   std::shared_ptr<classroom::ClassroomStation>& classroom) {
+                   const LoadedLungs& lungs, RuntimeParts& parts, sync::JoinedClassroom& classroom) {
   auto script = load_breathing_script(s.breathing, limit_s > 0 ? limit_s : 60.0);
   if (!script) return script.with_context("");
   auto shared_script = std::make_shared<const sim::BreathingScript>(script.take());
@@ -144,11 +148,12 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   auto breathing = breath::make_breath_source(*chosen, breath_options(s, shared_script), t0);
   if (!breathing) return breathing.with_context(where);
   parts.breathing = breathing.take();
-  auto joined = sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs,
-                                     t0, parts, [](const std::string& line) { log_line(line); });
+  auto joined =
+      sync::join_classroom(s, static_cast<std::int64_t>(o.sync_clock_skew_ms * 1e6), *shared_script, lungs, t0,
+                           chosen->followed() ? breath : "", parts, [](const std::string& line) { log_line(line); });
   if (!joined) return joined.with_context("");
   classroom = joined.take();
-  if (classroom::Instructor* instructor = classroom ? classroom->instructor() : nullptr;
+  if (classroom::Instructor* instructor = classroom.station ? classroom.station->instructor() : nullptr;
       instructor && chosen->followed()) {
     instructor->share_followed_breath();
     log_line("classroom: sharing the followed breath: every frame's dV goes to the trainees");
@@ -175,10 +180,33 @@ Status open_output_and_scene(Settings& s, bool procedural, const std::optional<c
   return ok();
 }
 
-/// Frames until a limit, a closed output, the end of a replay, a stop request or an error.
+/// The stats JSON: the runtime's, the lungs' pathologies for the whole run when no course of them says, and the
+/// console's counts.
+nlohmann::ordered_json stats_of(Runtime& runtime, double wall_s, const std::vector<std::string>& pathologies,
+                                const ConsoleRun* console) {
+  nlohmann::ordered_json stats = runtime.stats_json(wall_s);
+  if (!stats.contains("pathologies")) stats["pathologies"] = pathologies;
+  if (console != nullptr) {
+    nlohmann::json keys;
+    console->add_stats(keys);
+    for (const auto& [key, value] : keys.items()) stats[key] = value;
+  }
+  return stats;
+}
+
+/// Frames until a limit, a closed output, the end of a replay, a stop request or an error; with --stats-every,
+/// the stats JSON written again as it goes.
 Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std::int64_t t0,
-                  const classroom::ClassroomStation& classroom) {
+                  const classroom::ClassroomStation& classroom, const std::vector<std::string>& pathologies,
+                  const ConsoleRun* console) {
+  std::int64_t next_stats = o.stats_every_s ? t0 : std::numeric_limits<std::int64_t>::max();
+  const std::string stats_path = !o.stats_json_path.empty() ? o.stats_json_path : std::string(kDefaultStats);
   while (!g_stop_requested.load()) {
+    if (const std::int64_t now = monotonic_ns(); now >= next_stats) {
+      next_stats = now + static_cast<std::int64_t>(*o.stats_every_s * 1e9);
+      const std::string text = stats_of(runtime, seconds_between(t0, now), pathologies, console).dump(2) + "\n";
+      if (Status written = write_file_atomically(stats_path, text); !written) return fail("stats: " + written.error());
+    }
     if (const std::string refused = classroom.fatal_error(); !refused.empty()) return fail(refused);
     if (o.frames && runtime.frames() >= *o.frames) break;
     if (limit_s > 0 && seconds_between(t0, monotonic_ns()) >= limit_s) break;
@@ -195,7 +223,7 @@ Status run_frames(Runtime& runtime, const RuntimeOptions& o, double limit_s, std
 /// The snapshot (a last frame, not counted) and the stats JSON; every output is written whole or not at all.
 /// `pathologies`: the lungs' for the whole run, which the stats JSON reports when no course of them does.
 int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool frames_ok,
-                  const std::vector<std::string>& pathologies) {
+                  const std::vector<std::string>& pathologies, const ConsoleRun* console) {
   int exit_code = frames_ok ? 0 : 1;
   const std::string snapshot = !o.snapshot_path.empty() ? o.snapshot_path : std::string(kDefaultSnapshot);
   const std::string stats_path = !o.stats_json_path.empty() ? o.stats_json_path : std::string(kDefaultStats);
@@ -208,8 +236,7 @@ int write_outputs(Runtime& runtime, const RuntimeOptions& o, double wall_s, bool
     }
   }
   runtime.poses().stop();
-  nlohmann::ordered_json stats = runtime.stats_json(wall_s);
-  if (!stats.contains("pathologies")) stats["pathologies"] = pathologies;
+  const nlohmann::ordered_json stats = stats_of(runtime, wall_s, pathologies, console);
   if (Status written = write_file_atomically(stats_path, stats.dump(2) + "\n"); !written) {
     log_line("error: stats: " + written.error());
     exit_code = 1;
@@ -281,21 +308,40 @@ int run_runtime(const Settings& configured, const RuntimeOptions& o) {
     course->start_at(t0);
     parts.course = course;
   }
-  std::shared_ptr<classroom::ClassroomStation> classroom;
+  sync::JoinedClassroom classroom;
   if (Status sources = add_sources(s, o, limit_s, t0, lungs, parts, classroom); !sources) {
     log_line("error: " + sources.error());
     return 1;
   }
   log_line("tracker: " + parts.poses->describe());
+  // --session-record: the session's record from the first frame on (platform/app/session_recording.h).
+  auto recording = start_session_recording(s, o, lungs.own, t0, parts);
+  if (!recording) {
+    log_line("error: " + recording.error());
+    return 1;
+  }
+  const std::shared_ptr<record::SessionRecorder> recorder = recording.take();
   auto runtime = Runtime::create(runtime_config(s), std::move(parts));
   if (!runtime) {
     log_line("error: " + runtime.error());
     return 1;
   }
+  std::unique_ptr<ConsoleRun> console;
+  if (classroom.control) {
+    auto started = ConsoleRun::start(s, classroom.control, recorder, [](const std::string& line) { log_line(line); });
+    if (!started) {
+      log_line("error: " + started.error());
+      return 1;
+    }
+    console = started.take();
+  }
   log_line(describe_limit(o, scenario ? &*scenario : nullptr));
-  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom);
+  const Status frames = run_frames(**runtime, o, limit_s, t0, *classroom.station, s.sim.pathologies, console.get());
   if (!frames) log_line("error: " + frames.error());
-  int exit_code = write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok(), s.sim.pathologies);
+  int exit_code =
+      write_outputs(**runtime, o, seconds_between(t0, monotonic_ns()), frames.ok(), s.sim.pathologies, console.get());
+  console.reset();                                         // no request reaches the class after its last frame
+  if (!finish_session_recording(recorder)) exit_code = 1;  // --session-record: closed whole
   if (tracker_record_path(o.record_path) != o.record_path) {
     runtime->reset();  // the tracker closes its log first
     auto plus = finish_plus_recording(o.record_path, s.trackers());

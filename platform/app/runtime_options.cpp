@@ -11,6 +11,7 @@
 
 #include "config/base/clock.h"
 #include "drivers/tracker/tracker_config.h"
+#include "platform/app/console_run.h"
 #include "sim/motion/lesion.h"
 #include "sim/pathology/pathology.h"
 
@@ -164,10 +165,15 @@ void add_output_options(CLI::App& app, RuntimeOptions& o) {
       ->check(CLI::IsMember(names_of(kDeformNames)));
   app.add_option("--snapshot", o.snapshot_path, "PNG of the last frame (default $XDG_STATE_HOME/lungar/snapshot.png)");
   app.add_option("--stats-json", o.stats_json_path, "stats JSON (default $XDG_STATE_HOME/lungar/stats.json)");
+  app.add_option("--stats-every", o.stats_every_s,
+                 "also write the stats JSON every SECONDS while running (a monitor, or a test, watching a station)");
   app.add_option("--record", o.record_path,
                  "record the raw tracker reports into FILE.trk, or the poses as a PLUS sequence FILE.igs.mha (3D "
                  "Slicer opens it) (no FILE: a .trk in $XDG_STATE_HOME/lungar/recordings/)")
       ->expected(0, 1);
+  app.add_option("--session-record", o.session_record_path,
+                 "record the session (each frame's breath and poses, the pathologies, the class's events) into FILE, "
+                 "or into DIR/<UTC time>-<station>.lungarsession, crash-safe; `lungar replay FILE` plays it back");
 }
 
 void add_classroom_options(CLI::App& app, RuntimeOptions& o) {
@@ -180,6 +186,12 @@ void add_classroom_options(CLI::App& app, RuntimeOptions& o) {
   app.add_option("--sync-security", o.sync_security,
                  "join a secure classroom (DDS Security) with this station's folder from `lungar classroom-keys` "
                  "(default: sync.security; none: the classroom is open)");
+  app.add_option("--console", o.console,
+                 "[ADDR:]PORT: the instructor serves its console there, a web page over HTTPS that runs the class "
+                 "live (default: console.listen; none: no console)");
+  app.add_option("--console-keys", o.console_keys,
+                 "the console's folder from `lungar classroom-keys` (DIR/console: its certificate and logins; "
+                 "default: console.keys, else the folder console beside --sync-security's)");
   // For the tests alone: in no group, so --help leaves it out.
   app.add_option("--sync-clock-skew-ms", o.sync_clock_skew_ms, "pretend this station's clock is off by MS")->group("");
 }
@@ -232,6 +244,14 @@ Status apply_overrides(const RuntimeOptions& o, Settings& s) {
   }
   if (!o.station.empty()) s.sync.station = o.station;
   if (!o.sync_security.empty()) s.sync.security = o.sync_security;
+  if (!o.console.empty()) {
+    if (auto listen = parse_listen(o.console); !listen) return listen.with_context("--console: ");
+    s.console.listen = o.console;
+  }
+  if (!o.console_keys.empty()) s.console.keys = o.console_keys;
+  if (o.stats_every_s && !(*o.stats_every_s > 0 && *o.stats_every_s <= 3600))
+    return fail("--stats-every: expected a period in seconds, above 0 and at most 3600, got " +
+                std::to_string(*o.stats_every_s));
   return ok();
 }
 

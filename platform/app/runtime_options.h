@@ -36,12 +36,16 @@ struct RuntimeOptions {
   std::string snapshot_path;      ///< PNG of the last frame
   std::string stats_json_path;
   std::string record_path;         ///< raw tracker reports into a .trk
+  std::string session_record_path;  ///< --session-record: the session's record (platform/app/session_recording.h)
   std::string sync;                ///< a name of classroom::kSyncRoleNames; empty: from the config
   std::string classroom;           ///< the classroom's name; empty: from the config
   std::optional<int> sync_domain;  ///< the DDS domain id
   std::string station;             ///< this station's name in the classroom
   std::string sync_security;       ///< this station's folder of `lungar classroom-keys`: a secure classroom
   double sync_clock_skew_ms = 0;   ///< tests: pretend this station's clock is off by this much
+  std::string console;             ///< --console [ADDR:]PORT: the instructor serves its console there
+  std::string console_keys;        ///< --console-keys DIR: the console's folder of `lungar classroom-keys`
+  std::optional<double> stats_every_s;  ///< --stats-every: the stats JSON written again this often while running
   bool record_requested = false;   ///< --record given, with or without a file
   bool replay_truncated = false;   ///< --replay-truncated: replay a truncated .trk as far as it goes
 };

@@ -68,6 +68,14 @@ struct SimSettings {
   std::vector<std::string> lesions;
 };
 
+/// [console]: the instructor's console, a web page over HTTPS (platform/console/) that runs the class live.
+struct ConsoleSettings {
+  std::string listen;  ///< "[ADDR:]PORT" the console is served on (an instructor only); empty: no console
+  /// The console's folder of `lungar classroom-keys` (its certificate and logins); empty: the folder `console`
+  /// beside this station's [sync] security folder.
+  std::string keys;
+};
+
 /// [trackers] behind a pointer, a value all the same: copied whole, never null (a move copies too; settings are
 /// copied a few times at start, never per frame). Its members are defined in settings.cpp, where the type is
 /// complete, so that Settings' own copy, assignment and destruction stay the compiler's, member by member.
@@ -101,6 +109,7 @@ struct Settings {
   RegistrationSettings registration;
   SimSettings sim;
   classroom::SyncSettings sync;
+  ConsoleSettings console;
   std::string source = "<defaults>";
 
  private:

@@ -12,6 +12,7 @@
 #include "drivers/breath/breath_factory/breath_factory.h"
 #include "drivers/tracker/tracker_config.h"
 #include "drivers/tracker/tracker_config_toml.h"
+#include "platform/app/console_run.h"
 #include "sim/motion/lesion.h"
 #include "sim/pathology/pathology.h"
 
@@ -76,6 +77,13 @@ void read_sim(TomlSection s, SimSettings& m) {
   s.finish();
 }
 
+void read_console(TomlSection s, ConsoleSettings& c) {
+  s.text("listen", c.listen);
+  if (auto listen = parse_listen(c.listen); !c.listen.empty() && !listen) s.fail("listen", listen.error());
+  s.text("keys", c.keys);
+  s.finish();
+}
+
 /// The settings a (possibly merged) tree holds over the defaults; `name` is what errors call a value with no file.
 Result<Settings> read_tree(const toml::table& tree, const std::string& name) {
   Settings s;
@@ -91,6 +99,7 @@ Result<Settings> read_tree(const toml::table& tree, const std::string& name) {
     read_registration(top.section("registration"), s.registration);
     read_sim(top.section("sim"), s.sim);
     classroom::read_sync_settings(top.section("sync"), s.sync);
+    read_console(top.section("console"), s.console);
     top.finish();
   } catch (const config::ConfigError& e) {
     return fail(e.what());
@@ -112,6 +121,7 @@ void resolve_relative_paths(const toml::table& tree, Settings& s) {
   resolve("sim.asset", s.sim.asset);
   resolve("sync.cyclonedds_xml", s.sync.cyclonedds_xml);
   resolve("sync.security", s.sync.security);
+  resolve("console.keys", s.console.keys);
 }
 
 }  // namespace

@@ -6,9 +6,9 @@
 
 namespace lungar::platform {
 
-ClassroomCourse::ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<classroom::ClassroomStation> station,
+ClassroomCourse::ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<const TimelineFeed> feed,
                                  LoadedLungs lungs, std::function<void(const std::string&)> log)
-    : own_(std::move(own)), station_(std::move(station)), lungs_(std::move(lungs)), log_(std::move(log)) {
+    : own_(std::move(own)), feed_(std::move(feed)), lungs_(std::move(lungs)), log_(std::move(log)) {
   // A station that loaded no pathologies may leave the drawn patient out: it is then the drawn asset's healthy one.
   if (lungs_.drawn_patient.lungs.size() != lungs_.drawn->lungs.size())
     lungs_.drawn_patient = sim::PatientState::of(*lungs_.drawn);
@@ -22,9 +22,8 @@ ClassroomCourse::~ClassroomCourse() {
 
 void ClassroomCourse::take_new_timeline() {
   if (building_.load(std::memory_order_acquire)) return;
-  classroom::Trainee* trainee = station_->trainee();
   sim::PathologyTimeline timeline;
-  if (trainee == nullptr || !trainee->lungs_since(seen_version_, timeline)) return;
+  if (!feed_->lungs_since(seen_version_, timeline)) return;
   if (followed_ && followed_->timeline() == timeline) return;  // a restarted instructor with the same patient
   if (builder_.joinable()) builder_.join();                   // done: building_ is false
   building_.store(true, std::memory_order_release);
@@ -52,8 +51,7 @@ const std::vector<sim::LungShape>& ClassroomCourse::at(std::int64_t now_ns) {
     ready_.store(false, std::memory_order_relaxed);
   }
   double t_s = 0;
-  if (followed_ && station_->trainee() != nullptr && station_->trainee()->breath_time(now_ns, t_s))
-    return followed_->at_seconds(t_s);
+  if (followed_ && feed_->breath_time(now_ns, t_s)) return followed_->at_seconds(t_s);
   return own_ ? own_->at(now_ns) : as_loaded_;
 }
 

@@ -38,11 +38,42 @@ struct LoadedLungs {
   sim::PathologyTimeline own;
 };
 
+/// Where the course followed comes from: a trainee's instructor, or the instructor's own console changing the
+/// class while it runs.
+class TimelineFeed {
+ public:
+  virtual ~TimelineFeed() = default;
+  /// A timeline newer than `version` (which it then updates): true.
+  virtual bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const = 0;
+  /// The breathing time the timeline's events are on, at `now_ns`; false before there is one.
+  virtual bool breath_time(std::int64_t now_ns, double& t_s) const = 0;
+};
+
+/// A trainee's feed: its instructor's timeline, on the instructor's breathing time.
+class TraineeFeed final : public TimelineFeed {
+ public:
+  explicit TraineeFeed(std::shared_ptr<classroom::ClassroomStation> station) : station_(std::move(station)) {}
+  bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const override {
+    return station_->trainee() != nullptr && station_->trainee()->lungs_since(version, out);
+  }
+  bool breath_time(std::int64_t now_ns, double& t_s) const override {
+    return station_->trainee() != nullptr && station_->trainee()->breath_time(now_ns, t_s);
+  }
+
+ private:
+  std::shared_ptr<classroom::ClassroomStation> station_;
+};
+
 class ClassroomCourse final : public LungCourse {
  public:
-  /// `own`: this station's course (none: its lungs as loaded); `station` a trainee's.
+  /// `own`: this station's course (none: its lungs as loaded); `feed` the timeline it follows once one comes.
+  ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<const TimelineFeed> feed, LoadedLungs lungs,
+                  std::function<void(const std::string&)> log);
+  /// A trainee's: its instructor's timeline.
   ClassroomCourse(std::shared_ptr<LungCourse> own, std::shared_ptr<classroom::ClassroomStation> station,
-                  LoadedLungs lungs, std::function<void(const std::string&)> log);
+                  LoadedLungs lungs, std::function<void(const std::string&)> log)
+      : ClassroomCourse(std::move(own), std::make_shared<TraineeFeed>(std::move(station)), std::move(lungs),
+                        std::move(log)) {}
   ~ClassroomCourse() override;
   ClassroomCourse(const ClassroomCourse&) = delete;
   ClassroomCourse& operator=(const ClassroomCourse&) = delete;
@@ -57,13 +88,13 @@ class ClassroomCourse final : public LungCourse {
   }
 
  private:
-  /// A new timeline from the instructor: builds its course unless it is the one drawn (or the builder is busy:
+  /// A new timeline from the feed: builds its course unless it is the one drawn (or the builder is busy:
   /// the next frame asks again).
   void take_new_timeline();
   void build(sim::PathologyTimeline timeline);  ///< the builder thread
 
   std::shared_ptr<LungCourse> own_;
-  std::shared_ptr<classroom::ClassroomStation> station_;
+  std::shared_ptr<const TimelineFeed> feed_;
   LoadedLungs lungs_;
   std::function<void(const std::string&)> log_;
   std::vector<sim::LungShape> as_loaded_;

@@ -9,6 +9,7 @@
 
 #include "config/scenario_load.h"
 #include "drivers/tracker/tracker_config.h"
+#include "platform/app/console_run.h"
 #include "platform/app/settings_load.h"
 
 using lungar::platform::load_settings;
@@ -149,6 +150,23 @@ TEST(Settings, LesionsAndTheirColourAreReadAndABadOneNamesTheFileTheFieldAndTheS
   EXPECT_NE(huge.find("lesion t: expected a radius above 0 and at most 50 mm, got 80 mm"), std::string::npos) << huge;
 }
 
+TEST(Settings, TheConsolesAddressIsReadAndABadOneNamesTheFileTheFieldAndTheForm) {
+  auto r = load_settings_from_string("[console]\nlisten = \"127.0.0.1:8443\"\nkeys = \"/k/console\"\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  EXPECT_EQ(r->console.listen, "127.0.0.1:8443");
+  EXPECT_EQ(r->console.keys, "/k/console");
+  EXPECT_TRUE(Settings{}.console.listen.empty()) << "no console by default";
+  for (const char* bad : {"8443x", "host:", ":8443", "70000", "a:b:c"}) {
+    const std::string e = error_of(std::string("[console]\nlisten = \"") + bad + "\"\n");
+    EXPECT_NE(e.find("bad.toml:2: key 'console.listen': expected [ADDR:]PORT"), std::string::npos) << e;
+  }
+  auto port = lungar::platform::parse_listen("[::1]:8443");
+  ASSERT_TRUE(port) << port.error();
+  EXPECT_EQ(port->address, "::1");
+  EXPECT_EQ(port->port, 8443);
+  EXPECT_EQ(lungar::platform::parse_listen("8443")->address, "0.0.0.0") << "every interface: the classroom's network";
+}
+
 TEST(Settings, OpenXrOutputAndItsHead) {
   auto r = load_settings_from_string(
       "[display]\noutput = \"openxr\"\n[display.openxr]\nhead = \"tracker\"\nreference_space = \"stage\"\n"
@@ -193,7 +211,8 @@ TEST(Settings, RelativePathsResolveAgainstTheConfigFolder) {
 
 TEST(BadConfig, UnknownTopLevelSection) {
   EXPECT_EQ(error_of("[displya]\nwidth_px = 3\n"),
-            "bad.toml:1: unknown key 'displya'; expected one of: breathing, display, hmd, registration, render, sim, sync, "
+            "bad.toml:1: unknown key 'displya'; expected one of: breathing, console, display, hmd, registration, "
+            "render, sim, sync, "
             "trackers");
 }
 

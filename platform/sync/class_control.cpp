@@ -1,0 +1,399 @@
+/// @file class_control.cpp
+/// @brief Console requests into the class's events, shared as the next revision; the live view from the frames.
+#include "platform/sync/class_control.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "config/base/clock.h"
+#include "config/base/patient_names.h"
+#include "drivers/classroom/shared_breathing.h"
+#include "sim/breathing/orientation.h"
+#include "sim/breathing/pv_curve.h"
+#include "sim/pathology/pathology.h"
+
+namespace lungar::platform::sync {
+
+namespace {
+
+/// The instructor's breathing: the newest driver the console installed, on breathing time since t0.
+class LiveBreathing final : public breath::BreathingClock {
+ public:
+  explicit LiveBreathing(std::shared_ptr<const ClassControl> control) : control_(std::move(control)) {}
+  sim::BreathingSample at(std::int64_t now_ns) const override {
+    return control_->driver().at(seconds_between(control_->t0_ns(), now_ns));
+  }
+  const sim::Pattern* pattern_at(std::int64_t now_ns) const override {
+    return &control_->driver().pattern_at(seconds_between(control_->t0_ns(), now_ns));
+  }
+  void add_stats(nlohmann::json& stats) const override {
+    stats["breathing_preset"] = std::string(sim::to_string(control_->driver().params().preset));
+  }
+
+ private:
+  std::shared_ptr<const ClassControl> control_;
+};
+
+console::ControlReply refuse(int status, const std::string& line) { return {status, {{"error", line}}}; }
+
+/// A request's number field: absent (nullopt in `out`), a finite number, or an error naming the field.
+Status optional_number(const nlohmann::json& request, const char* key, std::optional<double>& out) {
+  out.reset();
+  if (!request.contains(key)) return ok();
+  const nlohmann::json& v = request[key];
+  if (!v.is_number() || !std::isfinite(v.get<double>()))
+    return fail(std::string(key) + ": expected a number, not " + v.dump());
+  out = v.get<double>();
+  return ok();
+}
+
+/// A request's string field, which must be there.
+Status required_text(const nlohmann::json& request, const char* key, std::string& out) {
+  if (!request.contains(key) || !request[key].is_string() || request[key].get<std::string>().empty())
+    return fail(std::string(key) + ": expected a text");
+  out = request[key].get<std::string>();
+  return ok();
+}
+
+/// The transition a request asks for: over_s, (0, 600] s, or the default.
+Status transition_of(const nlohmann::json& request, double& over_s) {
+  std::optional<double> given;
+  if (Status s = optional_number(request, "over_s", given); !s) return s;
+  over_s = given.value_or(ClassControl::kDefaultOverS);
+  if (over_s <= 0 || over_s > 600) return fail("over_s: expected a transition in seconds, above 0 and at most 600");
+  return ok();
+}
+
+/// "pitch" and "roll" of a lung orientation, degrees: its long axis (+z) from the vertical, and the side tilt.
+std::pair<double, double> tilt_deg(double w, double x, double y, double z) {
+  const Eigen::Quaterniond q(w, x, y, z);
+  const Eigen::Vector3d up = q * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d front = q * Eigen::Vector3d::UnitY();
+  const double kDeg = 180.0 / M_PI;
+  return {std::atan2(up.y(), up.z()) * kDeg, std::atan2(-front.x(), front.y()) * kDeg};
+}
+
+/// The named posture whose gravity (in the lung's frame) is within 30 degrees of `g`, or "between".
+std::string posture_of(const Eigen::Vector3d& g) {
+  for (const Pose pose : sim::kAllPoses) {
+    const Eigen::Vector3d gp = sim::pose_rotation(pose).inverse() * Eigen::Vector3d(0, 0, -1);
+    if (g.normalized().dot(gp) > std::cos(30.0 * M_PI / 180.0)) return std::string(sim::to_string(pose));
+  }
+  return "between";
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return out + "\"";
+}
+
+}  // namespace
+
+ClassControl::ClassControl(ClassStart start, std::shared_ptr<classroom::ClassroomStation> station,
+                           std::function<void(const std::string&)> log, sim::BreathingDriver driver)
+    : start_(std::move(start)), station_(std::move(station)), log_(std::move(log)) {
+  drivers_.push_back(std::make_unique<const sim::BreathingDriver>(std::move(driver)));
+  driver_.store(drivers_.back().get(), std::memory_order_release);
+  breath_events_ = start_.events;
+  lungs_ = start_.lungs;
+  log_lines_.push_back({0.0, "class start", "", sim::describe(lungs_)});
+}
+
+Result<std::shared_ptr<ClassControl>> ClassControl::create(ClassStart start,
+                                                           std::shared_ptr<classroom::ClassroomStation> station,
+                                                           std::function<void(const std::string&)> log) {
+  if (!station || station->instructor() == nullptr)
+    return fail("console: the console runs on the classroom's instructor (--sync instructor)");
+  auto driver = classroom::SharedBreathing::build(start.start, start.events);
+  if (!driver) return driver.with_context("console: ");
+  return std::shared_ptr<ClassControl>(
+      new ClassControl(std::move(start), std::move(station), std::move(log), driver.take()));
+}
+
+std::unique_ptr<breath::BreathingClock> ClassControl::breathing_clock() const {
+  return std::make_unique<LiveBreathing>(shared_from_this());
+}
+
+double ClassControl::now_s() const { return seconds_between(start_.t0_ns, monotonic_ns()); }
+
+void ClassControl::on_frame(const FrameState& s) {
+  const Eigen::Quaterniond& q = s.lung_in_world;
+  const Eigen::Vector3d& g = s.gravity_lung;
+  samples_.push({s.breath.t_s, s.breath.dv_ml, s.lung_dv_ml[0], s.lung_dv_ml[1], s.breath.phase, q.w(), q.x(), q.y(),
+                 q.z(), g.x(), g.y(), g.z()});
+}
+
+bool ClassControl::lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const {
+  const std::uint64_t now = lungs_version_.load(std::memory_order_acquire);
+  if (now <= version) return false;  // the frame's usual answer: no lock, no copy
+  std::lock_guard lock(mutex_);
+  out = lungs_;
+  version = lungs_version_.load(std::memory_order_relaxed);
+  return true;
+}
+
+bool ClassControl::breath_time(std::int64_t now_ns, double& t_s) const {
+  t_s = seconds_between(start_.t0_ns, now_ns);
+  return true;
+}
+
+console::ControlReply ClassControl::control(const console::ConsoleUser& user, const nlohmann::json& request) {
+  if (!request.is_object() || !request.contains("action") || !request["action"].is_string())
+    return refuse(400, "expected a JSON object with an \"action\"");
+  const std::string action = request["action"].get<std::string>();
+  if (action.rfind("breath_", 0) == 0) return breath_request(user, action, request);
+  if (action.rfind("pathology_", 0) == 0) return pathology_request(user, action, request);
+  if (action == "marker") {
+    std::string text;
+    if (Status s = required_text(request, "text", text); !s) return refuse(400, "marker: " + s.error());
+    if (text.size() > 500) return refuse(400, "marker: text: expected at most 500 characters");
+    const double t = now_s();
+    note({t, "marker", user.name, text});
+    return {200, {{"t_s", t}}};
+  }
+  return refuse(400,
+                "action: expected one of breath_pause, breath_resume, breath_set, pathology_add, "
+                "pathology_remove, pathology_severity, marker; not '" +
+                    action + "'");
+}
+
+console::ControlReply ClassControl::breath_request(const console::ConsoleUser& user, const std::string& action,
+                                                   const nlohmann::json& request) {
+  if (!start_.followed.empty())
+    return refuse(409, action + ": the breath is the patient's own, followed from " + start_.followed +
+                           "; the console changes a modelled breath only");
+  const double t = now_s() + kLeadS;
+  sim::Event event;
+  std::string text;
+  if (action == "breath_pause" || action == "breath_resume") {
+    const bool pause = action == "breath_pause";
+    if (pause == paused_)
+      return refuse(409, action + ": the breath is " + (paused_ ? "paused" : "not paused") + " already");
+    event = sim::Event::of(t, pause ? sim::EventKind::HoldStart : sim::EventKind::HoldEnd);
+    text = pause ? "breath hold" : "breathing again";
+  } else if (action == "breath_set") {
+    sim::PatternChange change;
+    std::optional<double> rate, tidal, ie;
+    for (auto [key, out] : {std::pair{"rate_bpm", &rate}, {"tidal_volume_ml", &tidal}, {"ie_ratio", &ie}})
+      if (Status s = optional_number(request, key, *out); !s) return refuse(400, action + ": " + s.error());
+    change.rate_bpm = rate;
+    change.tidal_volume_ml = tidal;
+    change.ie_ratio = ie;
+    if (request.contains("preset")) {
+      const auto preset =
+          request["preset"].is_string() ? kPresetNames.parse(request["preset"].get<std::string>()) : std::nullopt;
+      if (!preset) return refuse(400, action + ": preset: expected " + kPresetNames.expected());
+      change.preset = *preset;
+    }
+    if (!change.preset && !rate && !tidal && !ie)
+      return refuse(400, action + ": expected at least one of preset, rate_bpm, tidal_volume_ml, ie_ratio");
+    event = sim::Event::set(t, change);
+    char line[160];
+    std::snprintf(line, sizeof line, "%s%s%s", change.preset ? kPresetNames.name(*change.preset) : "",
+                  rate ? (" " + std::to_string(static_cast<int>(std::lround(*rate))) + "/min").c_str() : "",
+                  tidal ? (" " + std::to_string(static_cast<int>(std::lround(*tidal))) + " mL").c_str() : "");
+    text = line;
+    if (ie) text += " I:E " + std::to_string(*ie).substr(0, 4);
+  } else {
+    return refuse(400, "action: expected breath_pause, breath_resume or breath_set; not '" + action + "'");
+  }
+  // The new driver is the one in force with the event applied: what a trainee builds from the whole list.
+  auto next = std::make_unique<sim::BreathingDriver>(driver());
+  if (Status applied = next->apply(event); !applied) return refuse(400, action + ": " + applied.error());
+  std::vector<sim::Event> events;
+  sim::PathologyTimeline lungs;
+  {
+    std::lock_guard lock(mutex_);
+    events = breath_events_;
+    lungs = lungs_;
+  }
+  events.push_back(event);
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs); !shared)
+    return refuse(400, action + ": " + shared.error());
+  {
+    std::lock_guard lock(mutex_);
+    breath_events_ = std::move(events);
+  }
+  drivers_.push_back(std::move(next));
+  driver_.store(drivers_.back().get(), std::memory_order_release);
+  if (action != "breath_set") paused_ = action == "breath_pause";
+  note({t,
+        action == "breath_pause"    ? "breath pause"
+        : action == "breath_resume" ? "breath resume"
+                                    : "breath set",
+        user.name, text});
+  return {200, {{"t_s", t}}};
+}
+
+console::ControlReply ClassControl::pathology_request(const console::ConsoleUser& user, const std::string& action,
+                                                      const nlohmann::json& request) {
+  sim::PathologyEvent event;
+  if (Status s = transition_of(request, event.over_s); !s) return refuse(400, action + ": " + s.error());
+  std::string spec;
+  if (Status s = required_text(request, "spec", spec); !s) return refuse(400, action + ": " + s.error());
+  if (action == "pathology_add") {
+    event.add = spec;
+  } else if (action == "pathology_remove") {
+    event.remove = spec;
+  } else if (action == "pathology_severity") {
+    event.remove = spec;
+    if (Status s = required_text(request, "to", event.add); !s) return refuse(400, action + ": " + s.error());
+  } else {
+    return refuse(400, "action: expected pathology_add, pathology_remove or pathology_severity; not '" + action + "'");
+  }
+  if (!event.add.empty()) {
+    auto p = sim::parse_pathology(event.add);
+    if (!p) return refuse(400, action + ": " + p.error());
+    if (!(*p)->model().may_change_in_a_run())
+      return refuse(400, action + ": '" + std::string((*p)->model().name()) +
+                             "' cannot come or go during a class (it would switch at once); start the class with it");
+  }
+  event.at_s = now_s() + kLeadS;
+  sim::PathologyTimeline lungs;
+  std::vector<sim::Event> events;
+  {
+    std::lock_guard lock(mutex_);
+    lungs = lungs_;
+    events = breath_events_;
+  }
+  lungs.events.push_back(event);
+  if (Status s = sim::check_timeline(lungs); !s) return refuse(400, action + ": " + s.error());
+  if (can_draw) {  // the instructor draws what it shares: what it cannot, no trainee is sent
+    if (Status s = can_draw(lungs); !s) return refuse(400, action + ": " + s.error());
+  }
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs); !shared)
+    return refuse(400, action + ": " + shared.error());
+  {
+    std::lock_guard lock(mutex_);
+    lungs_ = lungs;
+  }
+  lungs_version_.fetch_add(1, std::memory_order_release);
+  if (on_timeline) on_timeline(lungs);
+  char over[48];
+  std::snprintf(over, sizeof over, " over %.1f s", event.over_s);
+  const std::string what = event.remove.empty() ? event.add
+                           : event.add.empty()  ? event.remove
+                                                : event.remove + " -> " + event.add;
+  note({event.at_s,
+        action == "pathology_add"      ? "pathology add"
+        : action == "pathology_remove" ? "pathology remove"
+                                       : "pathology severity",
+        user.name, what + over});
+  return {200, {{"t_s", event.at_s}}};
+}
+
+void ClassControl::note(ClassEvent event) {
+  if (log_) log_("console: " + event.kind + (event.user.empty() ? "" : " by " + event.user) + ": " + event.text);
+  if (on_event) on_event(event);
+  std::lock_guard lock(mutex_);
+  log_lines_.push_back(std::move(event));
+}
+
+void ClassControl::refused(int status, const std::string& line) {
+  refused_.fetch_add(1, std::memory_order_relaxed);
+  note({now_s(), "refused", "", std::to_string(status) + ": " + line});
+}
+
+std::vector<ClassEvent> ClassControl::events() const {
+  std::lock_guard lock(mutex_);
+  return log_lines_;
+}
+
+std::vector<std::string> ClassControl::present_at(double t_s) const {
+  std::lock_guard lock(mutex_);
+  std::size_t begun = 0;
+  while (begun < lungs_.events.size() && t_s > lungs_.events[begun].at_s) ++begun;
+  std::vector<std::string> present = sim::present_after(lungs_, begun);
+  return present;
+}
+
+std::string ClassControl::changing_at(double t_s) const {
+  std::lock_guard lock(mutex_);
+  std::string changing;
+  for (const sim::PathologyEvent& e : lungs_.events) {
+    if (t_s < e.at_s || t_s >= e.at_s + e.over_s) continue;
+    changing += (changing.empty() ? "" : ", ") + (e.add.empty() ? e.remove + " (going)" : e.add + " (coming)");
+  }
+  return changing;
+}
+
+std::string ClassControl::snapshot_json() {
+  const double t = now_s();
+  samples_.drain([&](const FrameSample& s) { recent_.push_back(s); });
+  // Only the last kSamplesS: the ring also holds what waited in it while nobody watched (a full ring drops the
+  // newest), which a page opened now would draw as an old stub before a gap.
+  while (!recent_.empty() && recent_.front().t_s < t - kSamplesS) recent_.pop_front();
+  nlohmann::json j;
+  j["station"] = station_->instructor()->station();
+  j["t_s"] = t;
+  const classroom::SyncReport report = station_->report();
+  j["secure"] = report.secure;
+  j["refused"] = refused_.load(std::memory_order_relaxed);
+  const sim::Pattern& pattern = driver().pattern_at(t);
+  j["breath"] = {{"state", pattern.held     ? "paused"
+                           : pattern.apnoea ? "apnoea"
+                                            : "breathing"},
+                 {"source", start_.followed.empty() ? "model" : start_.followed},
+                 {"preset", std::string(sim::to_string(pattern.params.preset))},
+                 {"rate_bpm", pattern.params.rate_bpm},
+                 {"tidal_volume_ml", pattern.params.tidal_volume_ml},
+                 {"ie_ratio", pattern.params.ie_ratio}};
+  nlohmann::json samples = nlohmann::json::array();
+  for (const FrameSample& s : recent_) {
+    samples.push_back({s.t_s, s.dv_ml, std::isfinite(s.left_ml) ? nlohmann::json(s.left_ml) : nlohmann::json(),
+                       std::isfinite(s.right_ml) ? nlohmann::json(s.right_ml) : nlohmann::json()});
+  }
+  j["samples"] = std::move(samples);
+  if (!recent_.empty()) {
+    const FrameSample& s = recent_.back();
+    const auto [pitch, roll] = tilt_deg(s.w, s.x, s.y, s.z);
+    j["orientation"] = {{"posture", posture_of({s.gx, s.gy, s.gz})},
+                        {"wxyz", {s.w, s.x, s.y, s.z}},
+                        {"pitch_deg", pitch},
+                        {"roll_deg", roll}};
+  }
+  j["pathologies"] = present_at(t);
+  j["pathologies_changing"] = changing_at(t);
+  j["stations"] = stations_json();
+  nlohmann::json events = nlohmann::json::array();
+  for (const ClassEvent& e : this->events())
+    events.push_back({{"t_s", e.t_s}, {"kind", e.kind}, {"user", e.user}, {"text", e.text}});
+  j["events"] = std::move(events);
+  nlohmann::json presets = nlohmann::json::array();
+  for (const auto& [preset, name] : kPresetNames.entries) presets.push_back(name);
+  j["presets"] = std::move(presets);
+  nlohmann::json forms = nlohmann::json::array();
+  for (const sim::PathologyModel* m : sim::pathology_models())
+    if (m->may_change_in_a_run()) forms.push_back(std::string(m->syntax()));
+  j["pathology_forms"] = std::move(forms);
+  return j.dump();
+}
+
+nlohmann::json ClassControl::stations_json() const {
+  nlohmann::json stations = nlohmann::json::array();
+  for (const classroom::StationStatus& st : station_->instructor()->stations()) {
+    stations.push_back({{"name", st.name},
+                        {"state", st.state},
+                        {"breath_offset_ms", st.breath_offset_ms},
+                        {"pose_age_ms", st.pose_age_ms},
+                        {"fps", st.fps},
+                        {"secure", st.secure},
+                        {"heard_s_ago", st.heard_s_ago}});
+  }
+  return stations;
+}
+
+std::string ClassControl::timeline_csv() {
+  std::string out = "t_s,kind,user,text\n";
+  char t[32];
+  for (const ClassEvent& e : events()) {
+    std::snprintf(t, sizeof t, "%.3f", e.t_s);
+    out += std::string(t) + "," + csv_field(e.kind) + "," + csv_field(e.user) + "," + csv_field(e.text) + "\n";
+  }
+  return out;
+}
+
+}  // namespace lungar::platform::sync

@@ -1,0 +1,156 @@
+/// @file class_control.h
+/// @brief The instructor running the class live from its console: a request (pause the breath, add a tension
+///        pneumothorax over 5 s, a marker) becomes an event of the class, timed a little ahead of now, on the
+///        instructor's own breathing and lungs and, as the next revision of what the instructor shares, on every
+///        trainee's. It also gives the console its live view, from what each frame hands it.
+/// @ingroup platform
+///
+/// Threads. Requests and views come on the console server's thread; the frame only reads: the breathing through
+/// an atomic pointer to the newest driver (drivers are kept for the run, so a pointer read is never left
+/// dangling), the lungs through a version number it checks before it copies the timeline (ClassroomCourse builds
+/// the course off the frame), and its samples go the other way through a ring. The frame never waits for the
+/// console.
+///
+/// Why events and not a live setting: a trainee computes the breath itself from the shared start and events
+/// (classroom/shared_breathing.h), so a change that is an event reaches it as what it already knows how to
+/// follow, and a trainee joining later draws the same course from the start.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "config/base/result.h"
+#include "config/base/spsc_ring.h"
+#include "drivers/breath/source/breathing_clock.h"
+#include "drivers/classroom/classroom_station.h"
+#include "platform/console/console_handler.h"
+#include "platform/runtime/frame_listener.h"
+#include "platform/sync/classroom_course.h"
+#include "sim/breathing/driver.h"
+#include "sim/breathing/event.h"
+#include "sim/pathology/pathology_timeline.h"
+
+namespace lungar::platform::sync {
+
+/// The class as the instructor started it: what it shared.
+struct ClassStart {
+  sim::BreathingParams start;
+  std::vector<sim::Event> events;
+  sim::PathologyTimeline lungs;
+  std::int64_t t0_ns = 0;  ///< breathing time 0 (monotonic)
+  /// The breath's source when it is the patient's own, followed ("trace", "marker"...): the console cannot
+  /// change that breath; empty: the model, which it can.
+  std::string followed;
+};
+
+/// One line of the class's timeline: what happened, when (breathing time) and who did it.
+struct ClassEvent {
+  double t_s = 0;
+  std::string kind;  ///< "pathology add", "breath pause", "marker", "refused"...
+  std::string user;  ///< the console login; empty for the class itself
+  std::string text;
+};
+
+class ClassControl final : public console::ConsoleHandler,
+                           public TimelineFeed,
+                           public FrameListener,
+                           public std::enable_shared_from_this<ClassControl> {
+ public:
+  /// How far ahead of the request a change is timed: the trainees have it before it is due (one loopback or LAN
+  /// round of DDS is milliseconds), so no station jumps to catch up.
+  static constexpr double kLeadS = 0.1;
+  /// A transition time the console gives when the request gives none, s.
+  static constexpr double kDefaultOverS = 5.0;
+  /// The console's plot: each frame's sample of the last this many seconds.
+  static constexpr double kSamplesS = 0.5;
+
+  /// `station`: the instructor's (its Instructor shares each change). The start must build a breathing driver.
+  static Result<std::shared_ptr<ClassControl>> create(ClassStart start,
+                                                      std::shared_ptr<classroom::ClassroomStation> station,
+                                                      std::function<void(const std::string&)> log);
+
+  /// The instructor's own breathing clock, which follows every change the console makes (the model's; a followed
+  /// breath stays the source's own).
+  std::unique_ptr<breath::BreathingClock> breathing_clock() const;
+
+  /// Whether this station can draw a timeline (ClassroomCourse builds it from the loaded lungs; a consolidation
+  /// changes the lungs' response, which only the loaded asset has); set before the console starts. Unset: any
+  /// timeline that passes sim::check_timeline.
+  std::function<Status(const sim::PathologyTimeline&)> can_draw;
+  /// Each event of the class as it is made (for the session record); set before the console starts.
+  std::function<void(const ClassEvent&)> on_event;
+  /// The pathology timeline after each change (for the session record).
+  std::function<void(const sim::PathologyTimeline&)> on_timeline;
+
+  // FrameListener: the frame's sample for the live view. Allocates nothing.
+  void on_frame(const FrameState& s) override;
+
+  // TimelineFeed: the instructor's own lungs follow the console's pathologies.
+  bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const override;
+  bool breath_time(std::int64_t now_ns, double& t_s) const override;
+
+  // ConsoleHandler.
+  std::string snapshot_json() override;
+  console::ControlReply control(const console::ConsoleUser& user, const nlohmann::json& request) override;
+  std::string timeline_csv() override;
+  void refused(int status, const std::string& line) override;
+
+  /// Each trainee as the instructor last heard it (the live view's `stations`, and the record's).
+  nlohmann::json stations_json() const;
+  /// The class's events so far (for tests and the record).
+  std::vector<ClassEvent> events() const;
+  /// The breathing driver in force now (frame and console threads).
+  const sim::BreathingDriver& driver() const { return *driver_.load(std::memory_order_acquire); }
+  std::int64_t t0_ns() const { return start_.t0_ns; }
+
+ private:
+  struct FrameSample {
+    double t_s, dv_ml, left_ml, right_ml;
+    sim::BreathPhase phase;
+    double w, x, y, z;  ///< the lung's orientation in the world
+    double gx, gy, gz;  ///< gravity in the lung's frame: what the posture is
+  };
+  ClassControl(ClassStart start, std::shared_ptr<classroom::ClassroomStation> station,
+               std::function<void(const std::string&)> log, sim::BreathingDriver driver);
+
+  /// Breathing time now (s), the time a change is timed from.
+  double now_s() const;
+  console::ControlReply breath_request(const console::ConsoleUser& user, const std::string& action,
+                                       const nlohmann::json& request);
+  console::ControlReply pathology_request(const console::ConsoleUser& user, const std::string& action,
+                                          const nlohmann::json& request);
+  /// Installs `events` (breathing) and `lungs` here and shares them as the next revision; the error leaves the
+  /// class as it was.
+  Status commit(std::vector<sim::Event> events, sim::PathologyTimeline lungs);
+  void note(ClassEvent event);
+  /// The pathologies present at breathing time t_s (one under way counts).
+  std::vector<std::string> present_at(double t_s) const;
+  /// The pathologies coming or going at t_s ("pneumothorax:right:30 (coming)"), "" when none.
+  std::string changing_at(double t_s) const;
+
+  ClassStart start_;
+  std::shared_ptr<classroom::ClassroomStation> station_;
+  std::function<void(const std::string&)> log_;
+
+  std::vector<std::unique_ptr<const sim::BreathingDriver>> drivers_;  ///< console thread; every driver installed
+  std::atomic<const sim::BreathingDriver*> driver_{nullptr};
+  bool paused_ = false;  ///< console thread: a breath hold the console started is in force
+
+  mutable std::mutex mutex_;  ///< guards events_ (breathing), lungs_ and log_lines_ against readers on other threads
+  std::vector<sim::Event> breath_events_;
+  sim::PathologyTimeline lungs_;
+  std::vector<ClassEvent> log_lines_;
+  std::atomic<std::uint64_t> lungs_version_{0};  ///< 0: as started (the station's own course draws it)
+  std::atomic<std::uint64_t> refused_{0};
+
+  SpscRing<FrameSample, 256> samples_;  ///< frame -> console thread
+  std::deque<FrameSample> recent_;      ///< console thread: the last kSamplesS of them
+};
+
+}  // namespace lungar::platform::sync

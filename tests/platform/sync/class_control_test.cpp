@@ -1,0 +1,222 @@
+// The instructor's class control in one process with a trainee over loopback DDS: a console request becomes an
+// event the instructor breathes and the trainee follows (a breath hold and its end, a pathology coming, one
+// changing severity), a resumed breath never jumps, the requests that cannot be met are refused with one line
+// and change nothing, and the live view says what is going on.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "config/base/clock.h"
+#include "platform/app/join_classroom.h"
+#include "platform/app/scenario_adapter.h"
+#include "platform/sync/class_control.h"
+#include "sim/bake/bake.h"
+#include "sim/breathing/orientation.h"
+#include "sync_test_support.h"
+
+using namespace lungar;
+using classroom::ClassroomStation;
+
+namespace {
+
+classroom::SyncSettings control_sync_settings(classroom::SyncRole role, const std::string& room) {
+  classroom::SyncSettings s;
+  s.role = role;
+  s.classroom = room;
+  s.domain = static_cast<int>(lungar::testing::test_domain());
+  s.cyclonedds_xml = lungar::testing::kLoopbackXml;
+  s.station = role == classroom::SyncRole::Instructor ? "instructor" : "trainee";
+  return s;
+}
+
+/// Procedural lungs, baked once for the suite: what the instructor draws (and checks a change against).
+std::shared_ptr<const sim::BakedAsset> control_lungs() {
+  static const auto a = [] {
+    sim::BakeOptions options;
+    options.threads = 2;
+    options.evaluate = false;
+    options.transfer_rows = false;
+    return std::make_shared<const sim::BakedAsset>(sim::bake_procedural(3000, 7, options, nullptr).take().asset);
+  }();
+  return a;
+}
+
+const console::ConsoleUser kTeacher{"instructor", console::Role::Instructor};
+
+/// An instructor whose class control runs with `lungs` and `followed`, and a trainee of the same classroom.
+struct ControlledRoom {
+  std::shared_ptr<ClassroomStation> teacher, learner;
+  std::shared_ptr<platform::sync::ClassControl> control;
+  std::vector<std::string> lines;
+  std::mutex lines_mutex;
+
+  explicit ControlledRoom(const std::string& tag, sim::PathologyTimeline lungs = {}, std::string followed = "") {
+    const std::string room = lungar::testing::test_classroom(tag);
+    auto quiet = [](const std::string&) {};
+    auto instructor = ClassroomStation::open(control_sync_settings(classroom::SyncRole::Instructor, room), quiet);
+    EXPECT_TRUE(instructor) << instructor.error();
+    teacher = std::make_shared<ClassroomStation>(instructor.take());
+    auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
+    EXPECT_TRUE(script);
+    const std::int64_t t0 = monotonic_ns() - 1'000'000'000;  // the class has been going for 1 s
+    EXPECT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, lungs, t0));
+    auto made = platform::sync::ClassControl::create({script->start, script->events, lungs, t0, followed}, teacher,
+                                                     [this](const std::string& line) {
+                                                       std::lock_guard lock(lines_mutex);
+                                                       lines.push_back(line);
+                                                     });
+    EXPECT_TRUE(made) << made.error();
+    control = made.take();
+    control->can_draw = [](const sim::PathologyTimeline& t) {
+      return platform::sync::can_draw(control_lungs(), control_lungs(), t);
+    };
+    auto trainee = ClassroomStation::open(control_sync_settings(classroom::SyncRole::Trainee, room), quiet);
+    EXPECT_TRUE(trainee) << trainee.error();
+    learner = std::make_shared<ClassroomStation>(trainee.take());
+  }
+
+  /// Polls `done` every 2 ms for at most 10 s.
+  template <class Done>
+  static bool within_10_s(Done done) {
+    const std::int64_t until = monotonic_ns() + 10'000'000'000;
+    while (monotonic_ns() < until) {
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  }
+
+  /// The trainee's breathing at now.
+  bool trainee_breath(sim::BreathingSample& out) const { return learner->trainee()->breathing(monotonic_ns(), out); }
+};
+
+}  // namespace
+
+TEST(ClassControl, APausedBreathHoldsOnBothStationsAndResumesWithoutAJump) {
+  ControlledRoom room("pause");
+  sim::BreathingSample s;
+  ASSERT_TRUE(ControlledRoom::within_10_s([&] { return room.trainee_breath(s); }));
+
+  const console::ControlReply paused = room.control->control(kTeacher, {{"action", "breath_pause"}});
+  ASSERT_EQ(paused.status, 200) << paused.body.dump();
+  const double pause_at = paused.body["t_s"];
+  EXPECT_EQ(room.control->control(kTeacher, {{"action", "breath_pause"}}).status, 409) << "paused already";
+  // The trainee holds too, once the new revision has come and the hold's ramp is over.
+  ASSERT_TRUE(ControlledRoom::within_10_s([&] { return room.trainee_breath(s) && s.phase == sim::BreathPhase::Hold; }));
+  EXPECT_LT(s.t_s, pause_at + 2.0) << "the hold came with the request, not on some later event";
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the breath slows to a stop over 0.2 s
+  ASSERT_TRUE(room.trainee_breath(s));
+  const double held_ml = s.dv_ml;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_TRUE(room.trainee_breath(s));
+  EXPECT_NEAR(s.dv_ml, held_ml, 1e-9) << "a hold stands still";
+  EXPECT_EQ(nlohmann::json::parse(room.control->snapshot_json())["breath"]["state"], "paused");
+
+  const console::ControlReply resumed = room.control->control(kTeacher, {{"action", "breath_resume"}});
+  ASSERT_EQ(resumed.status, 200) << resumed.body.dump();
+  const double resume_at = resumed.body["t_s"];
+  // The instructor's own breath across the resume, in 10 ms steps: no step larger than 5 mL.
+  const sim::BreathingDriver& d = room.control->driver();
+  double largest_ml = 0;
+  for (double t = resume_at - 1.0; t < resume_at + 4.0; t += 0.01)
+    largest_ml = std::max(largest_ml, std::abs(d.at(t + 0.01).dv_ml - d.at(t).dv_ml));
+  EXPECT_LE(largest_ml, 5.0);
+  EXPECT_GT(std::abs(d.at(resume_at + 3.0).dv_ml - d.at(resume_at).dv_ml), 20.0) << "it breathes again";
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.trainee_breath(s) && s.phase != sim::BreathPhase::Hold && s.t_s > resume_at + 0.5; }));
+}
+
+TEST(ClassControl, APathologyAddedReachesTheTraineeAndChangesSeverityInOneEvent) {
+  ControlledRoom room("pathology");
+  std::uint64_t version = 0;
+  sim::PathologyTimeline seen;
+  const console::ControlReply added =
+      room.control->control(kTeacher, {{"action", "pathology_add"}, {"spec", "pneumothorax:right:30"}, {"over_s", 2}});
+  ASSERT_EQ(added.status, 200) << added.body.dump();
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->lungs_since(version, seen) && !seen.events.empty(); }));
+  ASSERT_EQ(seen.events.size(), 1u);
+  EXPECT_EQ(seen.events[0].add, "pneumothorax:right:30");
+  EXPECT_DOUBLE_EQ(seen.events[0].over_s, 2.0);
+  EXPECT_DOUBLE_EQ(seen.events[0].at_s, added.body["t_s"].get<double>());
+  // The instructor's own lungs follow the same timeline (its course's feed).
+  std::uint64_t own_version = 0;
+  sim::PathologyTimeline own;
+  ASSERT_TRUE(room.control->lungs_since(own_version, own));
+  EXPECT_EQ(own, seen);
+
+  const console::ControlReply worse = room.control->control(
+      kTeacher, {{"action", "pathology_severity"}, {"spec", "pneumothorax:right:30"}, {"to", "pneumothorax:right:50"}});
+  ASSERT_EQ(worse.status, 200) << worse.body.dump();
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->lungs_since(version, seen) && seen.events.size() == 2; }));
+  EXPECT_EQ(seen.events[1].remove, "pneumothorax:right:30");
+  EXPECT_EQ(seen.events[1].add, "pneumothorax:right:50");
+  EXPECT_EQ(sim::present_after(seen, 2), std::vector<std::string>{"pneumothorax:right:50"});
+  const auto view = nlohmann::json::parse(room.control->snapshot_json());
+  EXPECT_EQ(view["events"].back()["kind"], "pathology severity");
+  EXPECT_EQ(view["events"].back()["user"], "instructor");
+}
+
+TEST(ClassControl, RequestsThatCannotBeMetAreRefusedWithOneLineAndChangeNothing) {
+  ControlledRoom room("refused");
+  const std::uint32_t revision = room.teacher->instructor()->revision();
+  const std::pair<nlohmann::json, std::string> cases[] = {
+      {{{"action", "pathology_add"}, {"spec", "pneumothorax:middle:30"}}, "pneumothorax"},
+      {{{"action", "pathology_add"}, {"spec", "consolidation:right:lower"}}, "must be the drawn lungs' own"},
+      {{{"action", "pathology_remove"}, {"spec", "pneumothorax:right:30"}}, "is not present then"},
+      {{{"action", "pathology_add"}, {"spec", "pneumothorax:right:30"}, {"over_s", -1}}, "over_s"},
+      {{{"action", "breath_set"}, {"rate_bpm", "fast"}}, "rate_bpm: expected a number"},
+      {{{"action", "breath_set"}, {"preset", "asthma"}}, "preset: expected normal, emphysema or fibrosis"},
+      {{{"action", "breath_set"}, {"tidal_volume_ml", 9000}}, "tidal"},
+      {{{"action", "breath_resume"}}, "not paused"},
+      {{{"action", "dance"}}, "action: expected one of"},
+      {{{"action", "marker"}}, "text: expected a text"},
+  };
+  for (const auto& [request, says] : cases) {
+    SCOPED_TRACE(request.dump());
+    const console::ControlReply r = room.control->control(kTeacher, request);
+    EXPECT_GE(r.status, 400);
+    EXPECT_NE(r.body["error"].get<std::string>().find(says), std::string::npos) << r.body.dump();
+  }
+  EXPECT_EQ(room.teacher->instructor()->revision(), revision) << "nothing was shared";
+  std::uint64_t version = 0;
+  sim::PathologyTimeline lungs;
+  EXPECT_FALSE(room.control->lungs_since(version, lungs)) << "the lungs never changed";
+}
+
+TEST(ClassControl, AFollowedBreathIsNotTheConsolesToChange) {
+  ControlledRoom room("followed", {}, "trace");
+  const console::ControlReply r = room.control->control(kTeacher, {{"action", "breath_pause"}});
+  EXPECT_EQ(r.status, 409);
+  EXPECT_NE(r.body["error"].get<std::string>().find("followed from trace"), std::string::npos) << r.body.dump();
+  EXPECT_EQ(room.control->control(kTeacher, {{"action", "marker"}, {"text", "apex palpated"}}).status, 200);
+}
+
+TEST(ClassControl, TheLiveViewShowsTheFramesAndTheTraineesStatus) {
+  ControlledRoom room("view");
+  platform::FrameState f;
+  f.breath.t_s = 1.0;
+  f.breath.dv_ml = 123.0;
+  f.lung_in_world = Eigen::Quaterniond(Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()));
+  f.gravity_lung = sim::pose_rotation(Pose::Supine).inverse() * Eigen::Vector3d(0, 0, -1);
+  room.control->on_frame(f);
+  // The trainee sends its status about twice a second; the instructor lists it by name.
+  nlohmann::json view;
+  ASSERT_TRUE(ControlledRoom::within_10_s([&] {
+    view = nlohmann::json::parse(room.control->snapshot_json());
+    return !view["stations"].empty();
+  }));
+  EXPECT_EQ(view["stations"][0]["name"], "trainee");
+  EXPECT_EQ(view["samples"].back()[1], 123.0);
+  EXPECT_NEAR(std::abs(view["orientation"]["pitch_deg"].get<double>()), 90.0, 1e-6);
+  EXPECT_EQ(view["orientation"]["posture"], "supine");
+  EXPECT_EQ(view["station"], "instructor");
+  EXPECT_FALSE(view["presets"].empty());
+  EXPECT_NE(view["pathology_forms"].dump().find("pneumothorax"), std::string::npos);
+  EXPECT_EQ(room.control->timeline_csv().rfind("t_s,kind,user,text\n", 0), 0u);
+}

@@ -6,15 +6,16 @@
 #include <array>
 #include <limits>
 
+#include "platform/app/runtime_settings.h"
+#include "platform/bench/bench_console.h"
 #include "platform/bench/scripted_inputs.h"
 #include "platform/bench/system_info.h"
-#include "platform/app/runtime_settings.h"
 #include "platform/output/headless_output.h"
 #include "sim/deform/deform_eq1.h"
 #include "sim/deform/deform_eq7.h"
 #include "sim/force/force_sh.h"
-#include "sim/pathology/pathology.h"
 #include "sim/force/gravity.h"
+#include "sim/pathology/pathology.h"
 
 namespace lungar::platform::bench {
 
@@ -71,6 +72,8 @@ Result<std::unique_ptr<BenchScene>> BenchScene::create(std::shared_ptr<EglContex
   return b;
 }
 
+BenchScene::~BenchScene() = default;
+
 Result<std::unique_ptr<Runtime>> BenchScene::runtime_for(const FrameConfig& config) {
   const Settings s = bench_settings(config);
   auto output = HeadlessOutput::create(s.hmd, context_);
@@ -81,6 +84,14 @@ Result<std::unique_ptr<Runtime>> BenchScene::runtime_for(const FrameConfig& conf
   parts.poses = std::make_unique<ScriptedPoses>(centre_);
   parts.breathing = std::make_unique<ScriptedBreathing>();
   parts.clock = [this] { return now_ns_; };
+  if (config.console) {
+    if (!console_) {
+      auto started = BenchConsole::start();
+      if (!started) return started.with_context("");
+      console_ = started.take();
+    }
+    parts.listeners.push_back(console_->listener());
+  }
   if (config.lesions > 0) {
     auto lesions = lesion_rows(config.lesions);
     if (!lesions) return lesions.with_context("");
@@ -133,15 +144,19 @@ Result<PairedStats> BenchScene::measure_pair(const FrameConfig& a, const FrameCo
   auto rb = runtime_for(b);
   if (!rb) return rb.with_context("");
   std::string error;
-  auto frame_of = [&](Runtime& r) {
-    return [&](long k) {
+  auto frame_of = [&](Runtime& r, bool watched) {
+    return [&, watched](long k) {
       if (!error.empty()) return;
+      if (console_) console_->watch(watched);  // a page watches while, and only while, its frames run
       now_ns_ = k * kFrameStepNs;
       if (Status st = r.frame(); !st) error = st.error();
     };
   };
-  PairedStats p = time_reps_paired(timing, frame_of(**ra), frame_of(**rb));
+  PairedStats p = time_reps_paired(timing, frame_of(**ra, a.console), frame_of(**rb, b.console));
+  if (console_) console_->watch(false);
   if (!error.empty()) return fail(error);
+  if (console_ && (a.console || b.console) && console_->bytes_read() == 0)
+    return fail("bench console: the page never read the live view");
   return p;
 }
 

@@ -19,6 +19,8 @@
 
 namespace lungar::platform::bench {
 
+class BenchConsole;
+
 /// Where eq. (7) or eq. (1) is evaluated (the rows of the paper's Table II), or Rest: the undeformed points, no
 /// force and no deformation, against which the deformation's cost is measured.
 enum class Method { Gpu7, Cpu7, Cpu1, Rest };
@@ -34,6 +36,9 @@ struct FrameConfig {
   /// Lesions drawn inside the lungs (RuntimeParts::lesions): what one costs a frame. 5 mm balls at points sampled
   /// inside the lungs (lesion_rows()).
   int lesions = 0;
+  /// The instructor's console open, its class control hearing each frame, and a page watching its live view
+  /// while these frames run (bench_console.h).
+  bool console = false;
 };
 
 /// The settings a configuration runs with: the defaults, the configuration, no status line (it times the lungs),
@@ -57,6 +62,7 @@ class BenchScene {
   /// Uploads `asset` once on `context` (current on this thread).
   static Result<std::unique_ptr<BenchScene>> create(std::shared_ptr<EglContext> context, sim::BakedAsset asset,
                                                     std::string name, const render::DrawableOptions& options = {});
+  ~BenchScene();
 
   /// Times `config`'s frames (an error when it does not fit: CPU eq. 1 without transfer rows, a mesh without
   /// triangles).
@@ -81,6 +87,7 @@ class BenchScene {
   std::shared_ptr<LungScene> scene_;
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
   std::unique_ptr<sim::InteriorDisplacement> interior_;
+  std::unique_ptr<BenchConsole> console_;  ///< started by the first configuration with the console
   std::int64_t now_ns_ = 0;  ///< the scripted clock every Runtime of this scene reads
 };
 

@@ -64,7 +64,8 @@ json config_json(const FrameConfig& c) {
           {"strategy", render::to_string(c.strategy)},
           {"lod", c.lod},
           {"point_size_px", c.point_size_px},
-          {"lesions", c.lesions}};
+          {"lesions", c.lesions},
+          {"console", c.console}};
 }
 
 json bake_json(const BakeRecord& r) {
@@ -292,14 +293,14 @@ class Run {
     plain_mono.stereo = false;
     FrameConfig lesion = stereo;  // the same frame with one lesion in the lungs: what a lesion costs
     lesion.lesions = 1;
+    FrameConfig console = stereo;  // the same frame with the instructor's console open and a page watching
+    console.console = true;
     per_eye.strategy = StereoStrategy::PerEye;
     once.strategy = StereoStrategy::DeformOnce;
     const std::pair<const char*, std::pair<FrameConfig, FrameConfig>> pairs[] = {
-        {"stereo_over_mono", {mono, stereo}},
-        {"deformed_over_undeformed", {plain, stereo}},
-        {"deform_once_over_per_eye", {per_eye, once}},
-        {"undeformed_stereo_over_mono", {plain_mono, plain}},
-        {"one_lesion_over_none", {stereo, lesion}}};
+        {"stereo_over_mono", {mono, stereo}},          {"deformed_over_undeformed", {plain, stereo}},
+        {"deform_once_over_per_eye", {per_eye, once}}, {"undeformed_stereo_over_mono", {plain_mono, plain}},
+        {"one_lesion_over_none", {stereo, lesion}},    {"console_watched_over_closed", {stereo, console}}};
     for (const auto& [key, ab] : pairs) {
       auto ratio = measure_pair(s, key, ab.first, ab.second);
       if (!ratio) return 1;

@@ -2,6 +2,8 @@
 /// @brief Sessions, nonces and the failed-login throttle of console_sessions.h.
 #include "platform/console/console_sessions.h"
 
+#include "drivers/classroom/console_login_line.h"
+
 #include <openssl/rand.h>
 
 #include <algorithm>
@@ -13,13 +15,7 @@ Result<std::string> random_hex(std::size_t count) {
   std::vector<unsigned char> bytes(count);
   if (RAND_bytes(bytes.data(), static_cast<int>(bytes.size())) != 1)
     return fail("console: OpenSSL's RAND_bytes gave no random bytes");
-  static const char* digits = "0123456789abcdef";
-  std::string s;
-  for (unsigned char b : bytes) {
-    s += digits[b >> 4];
-    s += digits[b & 15];
-  }
-  return s;
+  return classroom::to_hex(bytes);
 }
 
 Result<std::string> ConsoleSessions::open(const ConsoleUser& user, ConsoleClock::time_point now) {

@@ -46,6 +46,16 @@ class WebSocketClient {
   virtual bool read(std::string& message, std::chrono::milliseconds timeout) = 0;
 };
 
+/// The port of the first "console: https://HOST:PORT/" line of a `lungar` log (what a run with --console ADDR:0
+/// says it serves on); 0 until it is there.
+inline std::uint16_t console_port_in(const std::string& log) {
+  const auto at = log.find("console: https://");
+  if (at == std::string::npos) return 0;
+  const auto slash = log.find('/', at + 17);
+  const auto colon = log.rfind(':', slash);
+  return static_cast<std::uint16_t>(std::stoi(log.substr(colon + 1, slash - colon - 1)));
+}
+
 class HttpsClient {
  public:
   explicit HttpsClient(HttpsClientOptions options);

@@ -28,15 +28,7 @@ using lungar::testing::StationProcess;
 
 namespace {
 
-/// The port of a "console: https://HOST:PORT/" log line; 0 until it is there.
-std::uint16_t console_port(const StationProcess& p) {
-  const std::string log = p.err();
-  const auto at = log.find("console: https://");
-  if (at == std::string::npos) return 0;
-  const auto slash = log.find('/', at + 17);
-  const auto colon = log.rfind(':', slash);
-  return static_cast<std::uint16_t>(std::stoi(log.substr(colon + 1, slash - colon - 1)));
-}
+std::uint16_t console_port(const StationProcess& p) { return lungar::testing::console_port_in(p.err()); }
 
 std::string first_line(const fs::path& file) {
   std::ifstream in(file);

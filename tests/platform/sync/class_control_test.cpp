@@ -14,36 +14,13 @@
 #include "platform/app/join_classroom.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/sync/class_control.h"
-#include "sim/bake/bake.h"
+#include "room_support.h"
 #include "sim/breathing/orientation.h"
-#include "sync_test_support.h"
 
 using namespace lungar;
 using classroom::ClassroomStation;
 
 namespace {
-
-classroom::SyncSettings control_sync_settings(classroom::SyncRole role, const std::string& room) {
-  classroom::SyncSettings s;
-  s.role = role;
-  s.classroom = room;
-  s.domain = static_cast<int>(lungar::testing::test_domain());
-  s.cyclonedds_xml = lungar::testing::kLoopbackXml;
-  s.station = role == classroom::SyncRole::Instructor ? "instructor" : "trainee";
-  return s;
-}
-
-/// Procedural lungs, baked once for the suite: what the instructor draws (and checks a change against).
-std::shared_ptr<const sim::BakedAsset> control_lungs() {
-  static const auto a = [] {
-    sim::BakeOptions options;
-    options.threads = 2;
-    options.evaluate = false;
-    options.transfer_rows = false;
-    return std::make_shared<const sim::BakedAsset>(sim::bake_procedural(3000, 7, options, nullptr).take().asset);
-  }();
-  return a;
-}
 
 const console::ConsoleUser kTeacher{"instructor", console::Role::Instructor};
 
@@ -57,7 +34,8 @@ struct ControlledRoom {
   explicit ControlledRoom(const std::string& tag, sim::PathologyTimeline lungs = {}, std::string followed = "") {
     const std::string room = lungar::testing::test_classroom(tag);
     auto quiet = [](const std::string&) {};
-    auto instructor = ClassroomStation::open(control_sync_settings(classroom::SyncRole::Instructor, room), quiet);
+    auto instructor =
+        ClassroomStation::open(lungar::testing::room_sync_settings(classroom::SyncRole::Instructor, room), quiet);
     EXPECT_TRUE(instructor) << instructor.error();
     teacher = std::make_shared<ClassroomStation>(instructor.take());
     auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
@@ -72,9 +50,10 @@ struct ControlledRoom {
     EXPECT_TRUE(made) << made.error();
     control = made.take();
     control->can_draw = [](const sim::PathologyTimeline& t) {
-      return platform::sync::can_draw(control_lungs(), control_lungs(), t);
+      return platform::sync::can_draw(lungar::testing::procedural_lungs(), lungar::testing::procedural_lungs(), t);
     };
-    auto trainee = ClassroomStation::open(control_sync_settings(classroom::SyncRole::Trainee, room), quiet);
+    auto trainee =
+        ClassroomStation::open(lungar::testing::room_sync_settings(classroom::SyncRole::Trainee, room), quiet);
     EXPECT_TRUE(trainee) << trainee.error();
     learner = std::make_shared<ClassroomStation>(trainee.take());
   }

@@ -10,38 +10,19 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
-#include "platform/sync/classroom_course.h"
 #include "platform/app/scenario_adapter.h"
+#include "platform/sync/classroom_course.h"
+#include "room_support.h"
 #include "sim/bake/bake.h"
 #include "sim/force/dependent_collapse.h"
 #include "sim/pathology/pathology.h"
-#include "sync_test_support.h"
 
 using namespace lungar;
 using classroom::ClassroomStation;
 
 namespace {
 
-std::shared_ptr<const sim::BakedAsset> healthy() {
-  static const auto a = [] {
-    sim::BakeOptions options;
-    options.threads = 2;
-    options.evaluate = false;
-    options.transfer_rows = false;
-    return std::make_shared<const sim::BakedAsset>(sim::bake_procedural(3000, 7, options, nullptr).take().asset);
-  }();
-  return a;
-}
-
-classroom::SyncSettings sync_settings(classroom::SyncRole role, const std::string& room) {
-  classroom::SyncSettings s;
-  s.role = role;
-  s.classroom = room;
-  s.domain = static_cast<int>(lungar::testing::test_domain());
-  s.cyclonedds_xml = lungar::testing::kLoopbackXml;
-  s.station = role == classroom::SyncRole::Instructor ? "instructor" : "trainee";
-  return s;
-}
+std::shared_ptr<const sim::BakedAsset> healthy() { return lungar::testing::procedural_lungs(); }
 
 std::size_t right_of(const sim::BakedAsset& a) { return a.lungs[0].name == "right" ? 0 : 1; }
 
@@ -55,14 +36,16 @@ struct Room {
   explicit Room(const sim::PathologyTimeline& lungs, const std::string& name) {
     const std::string room = lungar::testing::test_classroom(name);
     auto quiet = [](const std::string&) {};
-    auto instructor = ClassroomStation::open(sync_settings(classroom::SyncRole::Instructor, room), quiet);
+    auto instructor =
+        ClassroomStation::open(lungar::testing::room_sync_settings(classroom::SyncRole::Instructor, room), quiet);
     EXPECT_TRUE(instructor) << instructor.error();
     teacher = std::make_shared<ClassroomStation>(instructor.take());
     auto script = platform::load_breathing_script(config::BreathingSettings{}, 60.0);
     EXPECT_TRUE(script);
     const std::int64_t t0 = monotonic_ns() - 2'000'000'000;  // the instructor has been breathing for 2 s
     EXPECT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, lungs, t0));
-    auto trainee = ClassroomStation::open(sync_settings(classroom::SyncRole::Trainee, room), quiet);
+    auto trainee =
+        ClassroomStation::open(lungar::testing::room_sync_settings(classroom::SyncRole::Trainee, room), quiet);
     EXPECT_TRUE(trainee) << trainee.error();
     learner = std::make_shared<ClassroomStation>(trainee.take());
     course = std::make_unique<platform::ClassroomCourse>(
@@ -104,7 +87,8 @@ TEST(ClassroomCourse, ATraineeDrawsTheInstructorsPathologiesOnTheInstructorsTime
   const sim::PathologyTimeline lungs{{"ards:0.6"}, {{1.0, 0.5, "pneumothorax:right:30:tension", ""}}};
   Room room(lungs, "course");
   const std::size_t right = right_of(*healthy());
-  EXPECT_DOUBLE_EQ(room.course->at(monotonic_ns())[right].figures.rest_volume_ml, healthy()->lungs[right].rest_volume_ml)
+  EXPECT_DOUBLE_EQ(room.course->at(monotonic_ns())[right].figures.rest_volume_ml,
+                   healthy()->lungs[right].rest_volume_ml)
       << "its own lungs before it hears the instructor";
   EXPECT_EQ(stats_of(*room.course)["sync_lungs"], "own");
 

@@ -54,16 +54,6 @@ class ConsoleClass : public lungar::testing::StationsTest {
     return std::make_unique<StationProcess>(lungar::testing::kLungar, a, dir / name);
   }
 
-  /// The port of the "console: https://HOST:PORT/" line of the instructor's log; 0 until it is there.
-  static std::uint16_t console_port(const StationProcess& p) {
-    const std::string log = p.err();
-    const auto at = log.find("console: https://");
-    if (at == std::string::npos) return 0;
-    const auto slash = log.find('/', at + 17);
-    const auto colon = log.rfind(':', slash);
-    return static_cast<std::uint16_t>(std::stoi(log.substr(colon + 1, slash - colon - 1)));
-  }
-
   /// A trainee's stats JSON as it is now (written whole every 50 ms); null when not there yet.
   nlohmann::json stats_now(const std::string& name) const {
     std::ifstream in(dir / (name + ".json"));
@@ -110,7 +100,7 @@ TEST_F(ConsoleClass, WhatTheTrainerDoesReachesBothTraineesWithinHalfASecond) {
     ASSERT_TRUE(t->wait_for("sync: in step with instructor 'instructor'", 30)) << t->err();
 
   lungar::testing::HttpsClientOptions o;
-  o.port = console_port(*instructor);
+  o.port = lungar::testing::console_port_in(instructor->err());
   o.ca_file = (dir / "keys" / "console" / "ca.pem").string();
   HttpsClient stranger(o);
   const auto refused = stranger.post("/api/control", R"({"action":"pathology_add","spec":"pneumothorax:left:30"})",

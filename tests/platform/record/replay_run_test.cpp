@@ -1,5 +1,5 @@
 // `lungar --session-record` and `lungar replay` as a user runs them (headless, EGL on llvmpipe): a short session with
-// a pathology coming replays with the same dV and the same pathologies frame by frame; a station killed mid-session
+// a pathology coming replays with the same dV and the same pathologies frame by frame; an instructor killed mid-session
 // leaves a record that replays up to the kill; a bad record and an unwritable path are one line each.
 #include <gtest/gtest.h>
 
@@ -65,15 +65,20 @@ class SessionReplay : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir); }
 
-  /// A station recording `seconds` of the scenario into `record`.
-  std::unique_ptr<StationProcess> record_session(const std::string& record, double seconds, const std::string& name) {
-    return std::make_unique<StationProcess>(
-        lungar::testing::kLungar,
-        std::vector<std::string>{"--config", lungar::testing::kConfig, "--asset", lungar::testing::kAsset, "--output",
-                                 "headless", "--tracker", "mock", "--scenario", scenario, "--seconds",
-                                 std::to_string(seconds), "--session-record", record, "--stats-json",
-                                 (dir / (name + ".json")).string(), "--snapshot", (dir / (name + ".png")).string()},
-        dir / name);
+  /// A station recording `seconds` of the scenario into `record`, with `extra` options.
+  std::unique_ptr<StationProcess> record_session(const std::string& record, double seconds, const std::string& name,
+                                                 std::vector<std::string> extra = {}) {
+    std::vector<std::string> a{"--config",         lungar::testing::kConfig,
+                               "--asset",          lungar::testing::kAsset,
+                               "--output",         "headless",
+                               "--tracker",        "mock",
+                               "--scenario",       scenario,
+                               "--seconds",        std::to_string(seconds),
+                               "--session-record", record,
+                               "--stats-json",     (dir / (name + ".json")).string(),
+                               "--snapshot",       (dir / (name + ".png")).string()};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return std::make_unique<StationProcess>(lungar::testing::kLungar, a, dir / name);
   }
   /// `lungar replay` of `record` with `extra` options.
   std::unique_ptr<StationProcess> replay(const std::string& record, const std::string& name,
@@ -138,9 +143,12 @@ TEST_F(SessionReplay, ARecordedSessionReplaysWithTheSameDvAndPathologiesFrameByF
   std::cout << "[ replay ] " << frames.size() << " frames, largest dV difference " << worst_ml << " mL\n";
 }
 
-TEST_F(SessionReplay, AStationKilledMidSessionLeavesARecordThatReplaysUpToTheKill) {
+TEST_F(SessionReplay, AnInstructorKilledMidSessionLeavesARecordThatReplaysUpToTheKill) {
   const std::string record = (dir / "killed.lungarsession").string();
-  auto live = record_session(record, 30.0, "killed");
+  auto live = record_session(
+      record, 30.0, "killed",
+      {"--sync", "instructor", "--station", "instructor", "--classroom", lungar::testing::test_classroom("killed"),
+       "--sync-domain", std::to_string(lungar::testing::test_domain())});
   ASSERT_TRUE(live->wait_for("session record: ", 60)) << live->err();
   lungar::testing::sleep_s(2.0);
   live->kill_now();

@@ -10,7 +10,7 @@
 /// `DIR/ca/` holds the authority (its key stays there, mode 0600: keep it off the classroom's machines);
 /// `DIR/<station>/` is everything that station needs, self-contained: identity_ca.pem, identity_cert.pem,
 /// identity_key.pem (0600), permissions_ca.pem, governance.p7s, permissions.p7s.
-/// `DIR/console/` is the instructor's console (platform/console/, issue 39), for the instructor station:
+/// `DIR/console/` is the instructor's console (platform/console/), for the instructor station:
 /// server_cert.pem (an HTTPS server certificate signed by the authority, for localhost, 127.0.0.1 and each
 /// --console-host), server_key.pem (0600), ca.pem (the authority's certificate, for the browsers to trust), logins
 /// (an `instructor` and an `observer` login: PBKDF2 hashes, platform/console/console_logins.h) and their random

@@ -224,46 +224,86 @@ CLI::App* add_replay_command(CLI::App& app, ReplayOptions& r) {
   return replay;
 }
 
+namespace {
+
+/// Where --console serves the replay, with the console's folder; none without --console; an error when either is not
+/// usable (said before anything loads).
+struct ReplayConsoleAt {
+  ListenAddress at;
+  std::string keys;
+};
+Result<std::optional<ReplayConsoleAt>> replay_console_at(const ReplayOptions& r, Settings& s) {
+  if (r.console.empty()) return std::optional<ReplayConsoleAt>();
+  auto listen = parse_listen(r.console);
+  if (!listen) return listen.with_context("--console: ");
+  if (!r.console_keys.empty()) s.console.keys = r.console_keys;
+  auto keys = console_keys_dir(s);
+  if (!keys) return keys.with_context("--console: ");
+  return std::optional<ReplayConsoleAt>(ReplayConsoleAt{*listen, keys.take()});
+}
+
+/// The record read whole (up to a kill's tear), said in the log, and its debrief sheet written when asked for; the
+/// exit code's error when it cannot play.
+Result<std::shared_ptr<const SessionRecord>> read_for_replay(const ReplayOptions& r, int& exit_code) {
+  auto read = record::read_session_record(r.session);
+  if (!read) {
+    exit_code = 2;
+    return Error{read.error()};
+  }
+  auto record = std::make_shared<const SessionRecord>(read.take());
+  say_what_plays(*record);
+  exit_code = 1;
+  if (!r.timeline_csv.empty()) {
+    if (Status written = write_file_atomically(r.timeline_csv, record::timeline_csv(*record)); !written)
+      return written.with_context("--timeline-csv: ");
+    log_line("timeline: " + r.timeline_csv);
+  }
+  if (record->frames.empty()) return fail(r.session + ": no frame was recorded: nothing to play");
+  return record;
+}
+
+/// What follows the replayed frames besides the output: the --trace-csv rows, and the console's view.
+struct ReplayListeners {
+  std::shared_ptr<record::ReplayTrace> trace;
+  std::shared_ptr<record::ReplayConsole> view;
+};
+ReplayListeners add_replay_listeners(const ReplayOptions& r, const SessionRecord& record,
+                                     const std::shared_ptr<SessionPlayback>& playback, bool console,
+                                     RuntimeParts& parts) {
+  ReplayListeners l;
+  if (!r.trace_csv.empty()) {
+    const double span_s = playback->last_s() - playback->first_s();
+    const std::size_t rows =
+        r.pace == "frames" ? record.frames.size() + 16 : static_cast<std::size_t>(span_s * 250.0) + 1024;
+    l.trace = std::make_shared<record::ReplayTrace>(playback, parts.course, rows);
+    parts.listeners.push_back(l.trace);
+  }
+  if (console) {
+    l.view = std::make_shared<record::ReplayConsole>(playback);
+    parts.listeners.push_back(l.view);
+  }
+  return l;
+}
+
+}  // namespace
+
 int run_replay(const ReplayOptions& r, Settings s, const RuntimeOptions& o) {
   if (r.snapshot_every_s > 0 && r.snapshot_dir.empty()) {
     log_line("error: replay: --snapshot-every needs --snapshot-dir");
     return 2;
   }
-  std::optional<ListenAddress> console_at;
-  std::string console_keys;
-  if (!r.console.empty()) {
-    auto listen = parse_listen(r.console);
-    if (!listen) {
-      log_line("error: replay: --console: " + listen.error());
-      return 2;
-    }
-    console_at = *listen;
-    if (!r.console_keys.empty()) s.console.keys = r.console_keys;
-    auto keys = console_keys_dir(s);
-    if (!keys) {
-      log_line("error: replay: --console: " + keys.error());
-      return 2;
-    }
-    console_keys = keys.take();
-  }
-  auto read = record::read_session_record(r.session);
-  if (!read) {
-    log_line("error: replay: " + read.error());
+  auto console_at = replay_console_at(r, s);
+  if (!console_at) {
+    log_line("error: replay: " + console_at.error());
     return 2;
   }
-  auto record = std::make_shared<const SessionRecord>(read.take());
-  say_what_plays(*record);
-  if (!r.timeline_csv.empty()) {
-    if (Status written = write_file_atomically(r.timeline_csv, record::timeline_csv(*record)); !written) {
-      log_line("error: --timeline-csv: " + written.error());
-      return 1;
-    }
-    log_line("timeline: " + r.timeline_csv);
+  int exit_code = 0;
+  auto read = read_for_replay(r, exit_code);
+  if (!read) {
+    log_line("error: replay: " + read.error());
+    return exit_code;
   }
-  if (record->frames.empty()) {
-    log_line("error: replay: " + r.session + ": no frame was recorded: nothing to play");
-    return 1;
-  }
+  const std::shared_ptr<const SessionRecord> record = read.take();
   if (Status taken = take_the_records_scene(*record, o, s); !taken) {
     log_line("error: replay: " + taken.error());
     return 2;
@@ -278,19 +318,7 @@ int run_replay(const ReplayOptions& r, Settings s, const RuntimeOptions& o) {
   }
   parts.breathing = std::make_unique<record::RecordedBreathing>(playback);
   parts.poses = std::make_unique<record::RecordedPoses>(playback);
-  std::shared_ptr<record::ReplayTrace> trace;
-  if (!r.trace_csv.empty()) {
-    const double span_s = playback->last_s() - playback->first_s();
-    const std::size_t rows =
-        r.pace == "frames" ? record->frames.size() + 16 : static_cast<std::size_t>(span_s * 250.0) + 1024;
-    trace = std::make_shared<record::ReplayTrace>(playback, parts.course, rows);
-    parts.listeners.push_back(trace);
-  }
-  std::shared_ptr<record::ReplayConsole> view;
-  if (console_at) {
-    view = std::make_shared<record::ReplayConsole>(playback);
-    parts.listeners.push_back(view);
-  }
+  const ReplayListeners listeners = add_replay_listeners(r, *record, playback, console_at->has_value(), parts);
   std::int64_t playing_ns = playback->ns_at(playback->first_s());
   if (r.pace == "frames") parts.clock = [&playing_ns] { return playing_ns; };
   log_line("tracker: " + parts.poses->describe());
@@ -299,10 +327,11 @@ int run_replay(const ReplayOptions& r, Settings s, const RuntimeOptions& o) {
     log_line("error: replay: " + runtime.error());
     return 1;
   }
-  // Served while it plays; stopped after the outputs are written (their stats say its counts), before `view` goes.
+  // Served while it plays; stopped after the outputs are written (their stats say its counts), before the view goes.
   std::unique_ptr<console::ConsoleServer> console;
-  if (console_at) {
-    auto served = serve_console(*console_at, console_keys, *view, [](const std::string& line) { log_line(line); });
+  if (*console_at) {
+    auto served = serve_console((*console_at)->at, (*console_at)->keys, *listeners.view,
+                                [](const std::string& line) { log_line(line); });
     if (!served) {
       log_line("error: replay: " + served.error());
       return 1;
@@ -313,8 +342,8 @@ int run_replay(const ReplayOptions& r, Settings s, const RuntimeOptions& o) {
   const Status played = play(**runtime, r, *playback, playing_ns);
   if (!played) log_line("error: replay: " + played.error());
   if (g_stop_requested.load()) log_line("stop requested; writing the outputs");
-  const int exit_code = write_replay_outputs(**runtime, r, o, *record, trace.get(), console.get(),
-                                             seconds_between(started, monotonic_ns()), played.ok());
+  exit_code = write_replay_outputs(**runtime, r, o, *record, listeners.trace.get(), console.get(),
+                                   seconds_between(started, monotonic_ns()), played.ok());
   console.reset();
   return exit_code;
 }

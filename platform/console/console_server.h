@@ -5,7 +5,7 @@
 ///        of Beast stays in console_server.cpp.
 /// @ingroup platform
 ///
-/// The API (issue 39): GET / and the page's files; POST /api/login {"user","password"} -> {"user","role","csrf"}
+/// The API: GET / and the page's files; POST /api/login {"user","password"} -> {"user","role","csrf"}
 /// and the session cookie; POST /api/logout; GET /api/state (snapshot_json); GET /api/timeline.csv; GET /api/live
 /// (a WebSocket pushing snapshot_json every 100 ms); POST /api/control (an instructor's request to the handler).
 /// Refused requests are counted, logged as one line and passed to ConsoleHandler::refused.

@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The instructor's console in a real browser (issue 39): Debian's Chromium, headless, driven through the DevTools
+// The instructor's console in a real browser: Debian's Chromium, headless, driven through the DevTools
 // protocol by puppeteer-core. One headless instructor serving its console and two trainees, all real `lungar`
 // processes on loopback (a DDS domain and a classroom of this run's own). Through the page's own controls the test
 // logs in as the instructor, adds a pathology and pauses the breath, and reads both trainees' stats JSON (rewritten
@@ -26,7 +26,7 @@ const NAME = 'console_browser_test';
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const SPEC = 'pneumothorax:right:30';          // what the trainer adds
 const FORBIDDEN_SPEC = 'pneumothorax:left:30';  // what the observer tries to add
-const LIMIT_S = 0.5;                            // issue 39: click to both trainees' stats JSON
+const LIMIT_S = 0.5;                            // the most from a click to both trainees' stats JSON
 const TRAINEES = ['trainee-1', 'trainee-2'];
 
 // ---- options ---------------------------------------------------------------------------------------------------
@@ -189,7 +189,7 @@ function watchPage(page, label, problems) {
 async function logIn(page, url, user, password) {
   const response = await page.goto(url, {waitUntil: 'domcontentloaded', timeout: 15000});
   check(response && response.ok(), `GET ${url}: ${response ? response.status() : 'no response'}`);
-  // The page runs under its own origin's policy only: nothing inline, nothing from elsewhere (issue 39).
+  // The page runs under its own origin's policy only: nothing inline, nothing from elsewhere.
   const csp = response.headers()['content-security-policy'] || '';
   check(/default-src 'self'/.test(csp), `the page is served without a Content-Security-Policy of default-src 'self' ("${csp}")`);
   await page.waitForSelector('#login-user', {visible: true, timeout: 10000});

@@ -25,7 +25,8 @@ Status check_timeline(const PathologyTimeline& timeline) {
     if (!e.remove.empty()) {
       const auto it = std::find(then.begin(), then.end(), e.remove);
       if (it == then.end())
-        return fail(where + "remove: '" + e.remove + "' is not present then (the start and the events before it add "
+        return fail(where + "remove: '" + e.remove +
+                    "' is not present then (the start and the events before it add "
                     "what can be removed)");
       then.erase(it);
     }

@@ -158,7 +158,8 @@ TEST(PathologyCourse, AChangeMadeBeforeTheLastEndedGoesOnFromWhereTheLungsAreWit
   const std::size_t right = right_of(healthy());
   const auto volume = [&](double t) { return (*course)->at_seconds(t)[right].figures.rest_volume_ml; };
   double largest_step = 0;
-  for (double t = 9.0; t < 21.0; t += 0.01) largest_step = std::max(largest_step, std::abs(volume(t + 0.01) - volume(t)));
+  for (double t = 9.0; t < 21.0; t += 0.01)
+    largest_step = std::max(largest_step, std::abs(volume(t + 0.01) - volume(t)));
   const double swing = volume(9.0) - volume(20.0);
   ASSERT_GT(swing, 100.0) << "the lung collapses by half";
   EXPECT_LT(largest_step, 0.01 * swing) << "no jump when the second change starts or the first would have ended";

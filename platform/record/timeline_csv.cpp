@@ -24,15 +24,14 @@ double frames_at(const SessionRecord& r, double s, const Of& of) {
   return of(a) + u * (of(*after) - of(a));
 }
 
-/// One CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+}  // namespace
+
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string out = "\"";
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
 }
-
-}  // namespace
 
 const std::string& pathologies_at(const SessionRecord& r, double s) {
   static const std::string kNone;

@@ -15,6 +15,9 @@ const std::string& pathologies_at(const SessionRecord& record, double s);
 /// dV at session time `s`, linear between the frames around it (the first's before them, the last's after).
 double dv_at(const SessionRecord& record, double s);
 
+/// One CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csv_field(const std::string& text);
+
 /// A debrief sheet: one CSV row per event, console action, timeline change and change of the pathologies drawn, in
 /// time order: session_s, breath_s, kind, user, text, pathologies (present then), dv_ml (then).
 std::string timeline_csv(const SessionRecord& record);

@@ -2,6 +2,8 @@
 /// @brief Console requests into the class's events, shared as the next revision; the live view from the frames.
 #include "platform/sync/class_control.h"
 
+#include "platform/record/timeline_csv.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -81,13 +83,6 @@ std::string posture_of(const Eigen::Vector3d& g) {
     if (g.normalized().dot(gp) > std::cos(30.0 * M_PI / 180.0)) return std::string(sim::to_string(pose));
   }
   return "between";
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return out + "\"";
 }
 
 }  // namespace
@@ -391,7 +386,8 @@ std::string ClassControl::timeline_csv() {
   char t[32];
   for (const ClassEvent& e : events()) {
     std::snprintf(t, sizeof t, "%.3f", e.t_s);
-    out += std::string(t) + "," + csv_field(e.kind) + "," + csv_field(e.user) + "," + csv_field(e.text) + "\n";
+    out += std::string(t) + "," + record::csv_field(e.kind) + "," + record::csv_field(e.user) + "," +
+           record::csv_field(e.text) + "\n";
   }
   return out;
 }

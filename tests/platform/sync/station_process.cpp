@@ -67,6 +67,11 @@ void StationProcess::kill_now() {
   if (pid_ > 0) ::kill(pid_, SIGKILL);
 }
 
+int StationProcess::stop(double timeout_s) {
+  if (pid_ > 0) ::kill(pid_, SIGTERM);
+  return wait(timeout_s);
+}
+
 std::string StationProcess::err() const { return file_text(err_); }
 std::string StationProcess::out() const { return file_text(out_); }
 

@@ -1,6 +1,6 @@
 /// @file station_process.h
 /// @brief Test support: a classroom station as a separate process (fork + exec), its stderr and stdout in
-/// files, stopped by SIGKILL when the test says or when the object goes.
+/// files, stopped by SIGTERM or SIGKILL when the test says, by SIGKILL when the object goes.
 #pragma once
 
 #include <sys/types.h>
@@ -26,6 +26,9 @@ class StationProcess {
   bool wait_for(const std::string& text, double timeout_s) const;
   /// SIGKILL now: the station goes away without a word, as a crashed or unplugged PC does.
   void kill_now();
+  /// SIGTERM, as a user's Ctrl-C or `systemctl stop`: the station ends its frame and writes its outputs. The exit
+  /// code, as wait() gives it.
+  int stop(double timeout_s);
   std::string err() const;
   std::string out() const;
 

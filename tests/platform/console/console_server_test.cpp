@@ -19,6 +19,7 @@
 #include "drivers/classroom/classroom_keys.h"
 #include "platform/console/console_server.h"
 #include "tests/file_text.h"
+#include "tests/shared_folder.h"
 #include "tests/platform/console/fake_console_handler.h"
 #include "tests/platform/console/https_client.h"
 
@@ -36,24 +37,29 @@ std::string trimmed(std::string s) {
   return s;
 }
 
-/// A classroom's keys (teacher, hmd-1; the console also named console.ward-9.lan), made once for the suite.
+/// A classroom's keys (teacher, hmd-1; the console also named console.ward-9.lan), made once for every process of
+/// the suite (shared_folder.h): the tests only read them.
 class ConsoleServerTest : public ::testing::Test {
  protected:
   static fs::path& keys() {
-    static fs::path path = fs::temp_directory_path() / ("lungar_console_keys_" + std::to_string(::getpid()));
+    static fs::path path;
     return path;
   }
   static void SetUpTestSuite() {
-    fs::remove_all(keys());
-    classroom::ClassroomKeysOptions o;
-    o.classroom = "ward-9";
-    o.stations = {"teacher", "hmd-1"};
-    o.console_hosts = {"console.ward-9.lan", "10.1.2.3"};
-    o.out_dir = keys().string();
-    auto made = classroom::make_classroom_keys(o);
-    ASSERT_TRUE(made) << made.error();
+    std::string error;
+    keys() = lungar::testing::shared_folder("console-keys", {"/proc/self/exe"}, [&](const fs::path& out) {
+      classroom::ClassroomKeysOptions o;
+      o.classroom = "ward-9";
+      o.stations = {"teacher", "hmd-1"};
+      o.console_hosts = {"console.ward-9.lan", "10.1.2.3"};
+      o.out_dir = (out / "keys").string();
+      auto made = classroom::make_classroom_keys(o);
+      if (!made) error = made.error();
+      return bool(made);
+    });
+    ASSERT_FALSE(keys().empty()) << error;
+    keys() /= "keys";
   }
-  static void TearDownTestSuite() { fs::remove_all(keys()); }
 
   void SetUp() override {
     ConsoleOptions o;
@@ -393,7 +399,7 @@ TEST_F(ConsoleServerTest, ConnectionsBeyond32AreRefusedUntilOneCloses) {
 }
 
 TEST_F(ConsoleServerTest, BadKeysOrABusyPortGiveOneLineNamingTheFileOrAddress) {
-  const fs::path dir = keys().parent_path() / ("lungar_console_bad_" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("lungar_console_bad_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   ConsoleOptions o;

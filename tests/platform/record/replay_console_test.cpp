@@ -19,6 +19,7 @@
 #include "platform/record/timeline_csv.h"
 #include "tests/file_text.h"
 #include "tests/platform/console/https_client.h"
+#include "tests/shared_folder.h"
 #include "tests/platform/sync/station_process.h"
 #include "tests/platform/sync/stations_test.h"
 
@@ -37,19 +38,32 @@ std::string first_line(const fs::path& file) {
   return line;
 }
 
-/// One class recorded for the whole suite (an instructor with its console, a few seconds), and a replay of it per
-/// test.
+/// One class recorded for every process of the suite (an instructor with its console, a few seconds; shared_
+/// folder.h, made again when lungar or this binary is rebuilt), and a replay of it per test.
 class ReplayConsole : public ::testing::Test {
  protected:
   static constexpr double kClassS = 8.0;
 
   static void SetUpTestSuite() {
     dir = lungar::testing::test_dir("replay_console");
-    record = (dir / "class.lungarsession").string();
+    const fs::path made = lungar::testing::shared_folder(
+        "replay-console-class", {lungar::testing::kLungar, "/proc/self/exe"}, [](const fs::path& out) {
+          record_class(out);
+          return setup_error.empty();
+        });
+    if (made.empty() && setup_error.empty()) setup_error = "no shared folder for the recorded class";
+    cls = made;
+    record = (cls / "class.lungarsession").string();
+  }
+
+  /// An instructor with its console runs the class for kClassS, recorded into `out` with its keys: a pathology,
+  /// a marker, a breath hold and its end made from the console. setup_error says what failed.
+  static void record_class(const fs::path& out) {
+    const std::string session = (out / "class.lungarsession").string();
     lungar::classroom::ClassroomKeysOptions k;
     k.classroom = lungar::testing::test_classroom("replayconsole");
     k.stations = {"instructor"};
-    k.out_dir = (dir / "keys").string();
+    k.out_dir = (out / "keys").string();
     if (auto made = lungar::classroom::make_classroom_keys(k); !made) {
       setup_error = "classroom-keys: " + made.error();
       return;
@@ -65,8 +79,8 @@ class ReplayConsole : public ::testing::Test {
                                "--sync-domain",    std::to_string(lungar::testing::test_domain()),
                                "--seconds",        std::to_string(kClassS),
                                "--console",        "127.0.0.1:0",
-                               "--console-keys",   keys(),
-                               "--session-record", record,
+                               "--console-keys",   (out / "keys" / "console").string(),
+                               "--session-record", session,
                                "--stats-json",     (dir / "class.json").string(),
                                "--snapshot",       (dir / "class.png").string()},
                               dir / "class");
@@ -74,8 +88,8 @@ class ReplayConsole : public ::testing::Test {
       setup_error = "the instructor's console did not start: " + instructor.err();
       return;
     }
-    HttpsClient trainer(client_options(console_port(instructor)));
-    const auto in = trainer.login("instructor", password("instructor"));
+    HttpsClient trainer(client_options(console_port(instructor), out / "keys"));
+    const auto in = trainer.login("instructor", first_line(out / "keys" / "console" / "instructor.password"));
     if (in.status != 200) {
       setup_error = "login: " + std::to_string(in.status) + " " + in.body + in.error;
       return;
@@ -105,14 +119,14 @@ class ReplayConsole : public ::testing::Test {
     ASSERT_GE(recorded.events.size(), 4u) << "the console's actions are in the record";
   }
 
-  static std::string keys() { return (dir / "keys" / "console").string(); }
+  static std::string keys() { return (cls / "keys" / "console").string(); }
   static std::string password(const std::string& login) {
-    return first_line(dir / "keys" / "console" / (login + ".password"));
+    return first_line(cls / "keys" / "console" / (login + ".password"));
   }
-  static lungar::testing::HttpsClientOptions client_options(std::uint16_t port) {
+  static lungar::testing::HttpsClientOptions client_options(std::uint16_t port, const fs::path& keys = cls / "keys") {
     lungar::testing::HttpsClientOptions o;
     o.port = port;
-    o.ca_file = (dir / "keys" / "console" / "ca.pem").string();
+    o.ca_file = (keys / "console" / "ca.pem").string();
     return o;
   }
 
@@ -152,7 +166,7 @@ class ReplayConsole : public ::testing::Test {
     }
   }
 
-  static inline fs::path dir;
+  static inline fs::path dir, cls;  // this process's outputs; the shared recorded class
   static inline std::string record, setup_error;
   lungar::platform::record::SessionRecord recorded;
 };

@@ -4,6 +4,7 @@
 
 #include "drivers/breath/classroom/classroom_breathing.h"
 #include "platform/runtime/patient_force.h"
+#include "platform/runtime/scenario_patient.h"
 #include "platform/sync/instructor_publisher.h"
 #include "platform/sync/trainee_poses.h"
 
@@ -32,9 +33,15 @@ Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_ske
     if (!lungs.own.empty() && log) log("classroom: sharing the lungs' pathologies: " + sim::describe(lungs.own));
     if (!s.console.listen.empty()) {
       // The console changes the class as it runs: the instructor's own breath and lungs follow what it shares.
-      auto control = ClassControl::create({script.start, script.events, lungs.own, t0_ns, followed}, station, log);
+      // A simulated patient (the mock tracker) is the console's to turn; a tracked one is not.
+      const bool simulated = s.trackers().source == drivers::TrackerSource::Mock;
+      auto control = ClassControl::create(
+          {script.start, script.events, lungs.own, t0_ns, followed,
+           simulated ? std::optional<sim::OrientationTrack>(script.orientation) : std::nullopt},
+          station, log);
       if (!control) return control.with_context("");
       joined.control = control.take();
+      if (simulated) parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), joined.control, t0_ns);
       joined.control->can_draw = [healthy = lungs.healthy, drawn = lungs.drawn](const sim::PathologyTimeline& t) {
         return can_draw(healthy, drawn, t);
       };

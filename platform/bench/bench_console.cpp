@@ -120,7 +120,7 @@ Result<std::unique_ptr<BenchConsole>> BenchConsole::start() {
   const std::int64_t t0 = monotonic_ns();
   if (Status shared = p.station->instructor()->share_breathing(start, {}, {}, t0); !shared)
     return shared.with_context("bench console: ");
-  auto control = sync::ClassControl::create({start, {}, {}, t0, ""}, p.station, nullptr);
+  auto control = sync::ClassControl::create({start, {}, {}, t0, "", std::nullopt}, p.station, nullptr);
   if (!control) return control.with_context("bench console: ");
   p.control = control.take();
   auto server =

@@ -1,5 +1,5 @@
 /// @file scenario_patient.cpp
-/// @brief The scenario's orientation track replaces the patient's measured orientation.
+/// @brief A simulated patient's orientation track replaces the patient's measured orientation.
 #include "platform/runtime/scenario_patient.h"
 
 #include "config/base/clock.h"
@@ -8,7 +8,7 @@ namespace lungar::platform {
 
 drivers::PoseSample ScenarioPatient::turned(drivers::PoseSample s, std::int64_t t_ns) const {
   if (s.role != drivers::Role::Patient) return s;
-  const Eigen::Quaterniond q = script_->orientation.at(seconds_between(t0_ns_, t_ns));
+  const Eigen::Quaterniond q = track_->orientation_at(seconds_between(t0_ns_, t_ns));
   s.set_orientation(q);
   return s;
 }

@@ -92,6 +92,10 @@ ClassControl::ClassControl(ClassStart start, std::shared_ptr<classroom::Classroo
     : start_(std::move(start)), station_(std::move(station)), log_(std::move(log)) {
   drivers_.push_back(std::make_unique<const sim::BreathingDriver>(std::move(driver)));
   driver_.store(drivers_.back().get(), std::memory_order_release);
+  if (start_.posture) {
+    tracks_.push_back(std::make_unique<const sim::OrientationTrack>(*start_.posture));
+    track_.store(tracks_.back().get(), std::memory_order_release);
+  }
   breath_events_ = start_.events;
   lungs_ = start_.lungs;
   log_lines_.push_back({0.0, "class start", "", sim::describe(lungs_)});
@@ -130,6 +134,11 @@ bool ClassControl::lungs_since(std::uint64_t& version, sim::PathologyTimeline& o
   return true;
 }
 
+Eigen::Quaterniond ClassControl::orientation_at(double t_s) const {
+  const sim::OrientationTrack* track = track_.load(std::memory_order_acquire);
+  return track != nullptr ? track->at(t_s) : Eigen::Quaterniond::Identity();
+}
+
 bool ClassControl::breath_time(std::int64_t now_ns, double& t_s) const {
   t_s = seconds_between(start_.t0_ns, now_ns);
   return true;
@@ -141,6 +150,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   const std::string action = request["action"].get<std::string>();
   if (action.rfind("breath_", 0) == 0) return breath_request(user, action, request);
   if (action.rfind("pathology_", 0) == 0) return pathology_request(user, action, request);
+  if (action == "posture_set") return posture_request(user, request);
   if (action == "marker") {
     std::string text;
     if (Status s = required_text(request, "text", text); !s) return refuse(400, "marker: " + s.error());
@@ -151,7 +161,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   }
   return refuse(400,
                 "action: expected one of breath_pause, breath_resume, breath_set, pathology_add, "
-                "pathology_remove, pathology_severity, marker; not '" +
+                "pathology_remove, pathology_severity, posture_set, marker; not '" +
                     action + "'");
 }
 
@@ -221,6 +231,43 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
                                     : "breath set",
         user.name, text});
   return {200, {{"t_s", t}}};
+}
+
+console::ControlReply ClassControl::posture_request(const console::ConsoleUser& user, const nlohmann::json& request) {
+  const sim::OrientationTrack* now = track_.load(std::memory_order_acquire);
+  if (now == nullptr)
+    return refuse(409,
+                  "posture_set: a tracker measures the patient's posture; the console turns a simulated patient only "
+                  "(an instructor on the mock tracker)");
+  std::string name;
+  if (Status s = required_text(request, "posture", name); !s) return refuse(400, "posture_set: " + s.error());
+  const std::optional<Pose> pose = sim::pose_from_name(name);
+  if (!pose) return refuse(400, "posture_set: posture: expected " + kPoseNames.expected() + "; not '" + name + "'");
+  double over_s = 0;
+  if (Status s = transition_of(request, over_s); !s) return refuse(400, "posture_set: " + s.error());
+  // After a turn under way (the patient is not wrenched from the middle of one), and never across one a scenario
+  // has coming: that turn would then start from wherever this one had brought the patient.
+  sim::Turn turn{now_s() + kLeadS, over_s, sim::pose_rotation(*pose)};
+  for (const sim::Turn& t : now->turns())
+    if (t.t_s <= turn.t_s && turn.t_s < t.t_s + t.duration_s) turn.t_s = t.t_s + t.duration_s;
+  for (const sim::Turn& t : now->turns()) {
+    if (t.t_s >= turn.t_s && t.t_s < turn.t_s + turn.duration_s) {
+      char line[160];
+      std::snprintf(line, sizeof line, "posture_set: the scenario turns the patient at %.1f s; a turn over %.1f s "
+                    "from %.1f s would cross it", t.t_s, over_s, turn.t_s);
+      return refuse(409, line);
+    }
+  }
+  std::vector<sim::Turn> turns = now->turns();
+  turns.push_back(turn);
+  auto next = sim::OrientationTrack::create(now->start(), std::move(turns));
+  if (!next) return refuse(400, "posture_set: " + next.error());
+  tracks_.push_back(std::make_unique<const sim::OrientationTrack>(next.take()));
+  track_.store(tracks_.back().get(), std::memory_order_release);
+  char over[48];
+  std::snprintf(over, sizeof over, " over %.1f s", over_s);
+  note({turn.t_s, "posture", user.name, std::string(sim::to_string(*pose)) + over});
+  return {200, {{"t_s", turn.t_s}}};
 }
 
 console::ControlReply ClassControl::pathology_request(const console::ConsoleUser& user, const std::string& action,
@@ -350,6 +397,9 @@ std::string ClassControl::snapshot_json() {
                         {"pitch_deg", pitch},
                         {"roll_deg", roll}};
   }
+  nlohmann::json postures = nlohmann::json::array();
+  for (const Pose pose : sim::kAllPoses) postures.push_back(std::string(sim::to_string(pose)));
+  j["posture"] = {{"simulated", track_.load(std::memory_order_acquire) != nullptr}, {"choices", std::move(postures)}};
   j["pathologies"] = present_at(t);
   j["pathologies_changing"] = changing_at(t);
   j["stations"] = stations_json();

@@ -22,6 +22,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,11 @@
 #include "drivers/classroom/classroom_station.h"
 #include "platform/console/console_handler.h"
 #include "platform/runtime/frame_listener.h"
+#include "platform/runtime/scenario_patient.h"
 #include "platform/sync/classroom_course.h"
 #include "sim/breathing/driver.h"
 #include "sim/breathing/event.h"
+#include "sim/breathing/orientation.h"
 #include "sim/pathology/pathology_timeline.h"
 
 namespace lungar::platform::sync {
@@ -47,6 +50,9 @@ struct ClassStart {
   /// The breath's source when it is the patient's own, followed ("trace", "marker"...): the console cannot
   /// change that breath; empty: the model, which it can.
   std::string followed;
+  /// The patient's orientation when it is simulated (the mock tracker: the start pose and any scripted turns),
+  /// which the console may turn; empty: a tracker measures the patient, and no console turns a real one.
+  std::optional<sim::OrientationTrack> posture;
 };
 
 /// One line of the class's timeline: what happened, when (breathing time) and who did it.
@@ -60,6 +66,7 @@ struct ClassEvent {
 class ClassControl final : public console::ConsoleHandler,
                            public TimelineFeed,
                            public FrameListener,
+                           public PatientTrack,
                            public std::enable_shared_from_this<ClassControl> {
  public:
   /// How far ahead of the request a change is timed: the trainees have it before it is due (one loopback or LAN
@@ -95,6 +102,10 @@ class ClassControl final : public console::ConsoleHandler,
   bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const override;
   bool breath_time(std::int64_t now_ns, double& t_s) const override;
 
+  // PatientTrack: the simulated patient as the console last turned it (ScenarioPatient reads it each frame).
+  Eigen::Quaterniond orientation_at(double t_s) const override;
+  std::string turned_by() const override { return "the instructor's console"; }
+
   // ConsoleHandler.
   std::string snapshot_json() override;
   console::ControlReply control(const console::ConsoleUser& user, const nlohmann::json& request) override;
@@ -123,6 +134,8 @@ class ClassControl final : public console::ConsoleHandler,
   double now_s() const;
   console::ControlReply breath_request(const console::ConsoleUser& user, const std::string& action,
                                        const nlohmann::json& request);
+  /// posture_set: the simulated patient turns to a named posture over over_s, after any turn under way.
+  console::ControlReply posture_request(const console::ConsoleUser& user, const nlohmann::json& request);
   console::ControlReply pathology_request(const console::ConsoleUser& user, const std::string& action,
                                           const nlohmann::json& request);
   /// Installs `events` (breathing) and `lungs` here and shares them as the next revision; the error leaves the
@@ -141,6 +154,11 @@ class ClassControl final : public console::ConsoleHandler,
   std::vector<std::unique_ptr<const sim::BreathingDriver>> drivers_;  ///< console thread; every driver installed
   std::atomic<const sim::BreathingDriver*> driver_{nullptr};
   bool paused_ = false;  ///< console thread: a breath hold the console started is in force
+
+  /// Console thread; every orientation track installed (none: the patient is tracked). The frame reads the newest
+  /// through track_, as it does the breathing driver.
+  std::vector<std::unique_ptr<const sim::OrientationTrack>> tracks_;
+  std::atomic<const sim::OrientationTrack*> track_{nullptr};
 
   mutable std::mutex mutex_;  ///< guards events_ (breathing), lungs_ and log_lines_ against readers on other threads
   std::vector<sim::Event> breath_events_;

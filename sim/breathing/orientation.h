@@ -49,6 +49,7 @@ class OrientationTrack {
   /// The orientation at t (s). Allocates nothing.
   Eigen::Quaterniond at(double t_s) const;
   const std::vector<Turn>& turns() const { return turns_; }
+  const Eigen::Quaterniond& start() const { return start_; }
 
  private:
   Eigen::Quaterniond start_ = Eigen::Quaterniond::Identity();

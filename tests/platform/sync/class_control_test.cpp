@@ -24,14 +24,16 @@ namespace {
 
 const console::ConsoleUser kTeacher{"instructor", console::Role::Instructor};
 
-/// An instructor whose class control runs with `lungs` and `followed`, and a trainee of the same classroom.
+/// An instructor whose class control runs with `lungs`, `followed` and a simulated patient's `posture` (none: the
+/// patient is tracked), and a trainee of the same classroom.
 struct ControlledRoom {
   std::shared_ptr<ClassroomStation> teacher, learner;
   std::shared_ptr<platform::sync::ClassControl> control;
   std::vector<std::string> lines;
   std::mutex lines_mutex;
 
-  explicit ControlledRoom(const std::string& tag, sim::PathologyTimeline lungs = {}, std::string followed = "") {
+  explicit ControlledRoom(const std::string& tag, sim::PathologyTimeline lungs = {}, std::string followed = "",
+                          std::optional<sim::OrientationTrack> posture = std::nullopt) {
     const std::string room = lungar::testing::test_classroom(tag);
     auto quiet = [](const std::string&) {};
     auto instructor =
@@ -42,7 +44,8 @@ struct ControlledRoom {
     EXPECT_TRUE(script);
     const std::int64_t t0 = monotonic_ns() - 1'000'000'000;  // the class has been going for 1 s
     EXPECT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, lungs, t0));
-    auto made = platform::sync::ClassControl::create({script->start, script->events, lungs, t0, followed}, teacher,
+    auto made = platform::sync::ClassControl::create({script->start, script->events, lungs, t0, followed, posture},
+                                                     teacher,
                                                      [this](const std::string& line) {
                                                        std::lock_guard lock(lines_mutex);
                                                        lines.push_back(line);
@@ -174,6 +177,58 @@ TEST(ClassControl, AFollowedBreathIsNotTheConsolesToChange) {
   EXPECT_EQ(r.status, 409);
   EXPECT_NE(r.body["error"].get<std::string>().find("followed from trace"), std::string::npos) << r.body.dump();
   EXPECT_EQ(room.control->control(kTeacher, {{"action", "marker"}, {"text", "apex palpated"}}).status, 200);
+  // Nor is a tracked patient's posture: there is a real patient (or mannequin) there to turn.
+  const console::ControlReply turned = room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}});
+  EXPECT_EQ(turned.status, 409);
+  EXPECT_NE(turned.body["error"].get<std::string>().find("a tracker measures"), std::string::npos) << turned.body.dump();
+  EXPECT_FALSE(nlohmann::json::parse(room.control->snapshot_json())["posture"]["simulated"].get<bool>());
+}
+
+/// The angle between two orientations, degrees.
+double degrees_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  return a.angularDistance(b) * 180.0 / M_PI;
+}
+
+TEST(ClassControl, ASimulatedPatientTurnsToThePostureAskedAfterAnyTurnUnderWay) {
+  // The scenario turns the patient to prone at 40 s (the class has been going for 1 s).
+  const sim::Turn scripted{40.0, 4.0, sim::pose_rotation(Pose::Prone)};
+  auto track = sim::OrientationTrack::create(sim::pose_rotation(Pose::Upright), {scripted});
+  ASSERT_TRUE(track) << track.error();
+  ControlledRoom room("posture", {}, "", track.take());
+  const platform::sync::ClassControl& c = *room.control;
+  EXPECT_TRUE(nlohmann::json::parse(room.control->snapshot_json())["posture"]["simulated"].get<bool>());
+
+  const console::ControlReply supine =
+      room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}, {"over_s", 2}});
+  ASSERT_EQ(supine.status, 200) << supine.body.dump();
+  const double at = supine.body["t_s"];
+  EXPECT_LT(degrees_between(c.orientation_at(at - 0.01), sim::pose_rotation(Pose::Upright)), 1e-6) << "not before";
+  EXPECT_NEAR(degrees_between(c.orientation_at(at + 1.0), sim::pose_rotation(Pose::Upright)), 45.0, 1.0)
+      << "half way at half the time (smoothstep)";
+  EXPECT_LT(degrees_between(c.orientation_at(at + 2.0), sim::pose_rotation(Pose::Supine)), 1e-6);
+  // Asked again at once: the second turn waits for the first to end.
+  const console::ControlReply left =
+      room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "left_lateral"}, {"over_s", 3}});
+  ASSERT_EQ(left.status, 200) << left.body.dump();
+  EXPECT_NEAR(left.body["t_s"].get<double>(), at + 2.0, 1e-9);
+  EXPECT_LT(degrees_between(c.orientation_at(at + 5.0), sim::pose_rotation(Pose::LeftLateral)), 1e-6);
+  // The scenario's own turn is still coming, from wherever the console left the patient.
+  EXPECT_LT(degrees_between(c.orientation_at(45.0), sim::pose_rotation(Pose::Prone)), 1e-6);
+  const console::ControlReply crossing =
+      room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}, {"over_s", 100}});
+  EXPECT_EQ(crossing.status, 409);
+  EXPECT_NE(crossing.body["error"].get<std::string>().find("turns the patient at 40.0 s"), std::string::npos)
+      << crossing.body.dump();
+  const console::ControlReply unknown =
+      room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "sideways"}});
+  EXPECT_EQ(unknown.status, 400);
+  EXPECT_NE(unknown.body["error"].get<std::string>().find("posture: expected upright"), std::string::npos)
+      << unknown.body.dump();
+  EXPECT_LT(degrees_between(c.orientation_at(at + 5.0), sim::pose_rotation(Pose::LeftLateral)), 1e-6)
+      << "a refused request changed nothing";
+  const auto view = nlohmann::json::parse(room.control->snapshot_json());
+  EXPECT_EQ(view["events"].back()["kind"], "posture");
+  EXPECT_EQ(view["events"].back()["text"], "left_lateral over 3.0 s");
 }
 
 TEST(ClassControl, TheLiveViewShowsTheFramesAndTheTraineesStatus) {

@@ -161,6 +161,7 @@ function render(s) {
   renderBreath(s.breath || {});
   renderSamples(s.samples || []);
   renderOrientation(s.orientation || {});
+  renderPostureControl(s.posture || {});
   renderPathologies(s.pathologies || [], s.pathologies_changing || '');
   renderStations(s.stations || []);
   renderEvents(s.events || []);
@@ -402,7 +403,23 @@ function renderTimeline(list, now, replay) {
   $('timeline-end').textContent = num(span, 1) + ' s';
 }
 
+// A tracked patient is turned by hand, on the table: the console turns a simulated one only.
+function renderPostureControl(p) {
+  const off = readOnly() || !p.simulated;
+  for (const id of ['posture-choice', 'posture-over', 'posture-set']) $(id).disabled = off;
+  $('posture-help').textContent = p.simulated === false ?
+      'A tracker measures the patient: turn the patient (or the mannequin) itself.' : '';
+}
+
 function fillForms(s) {
+  if (s.posture && Array.isArray(s.posture.choices) && !$('posture-choice').options.length) {
+    $('posture-choice').replaceChildren(...s.posture.choices.map((p) => {
+      const o = document.createElement('option');
+      o.value = p;
+      o.textContent = p.replace(/_/g, ' ');
+      return o;
+    }));
+  }
   if (formsFilled) return;
   if (Array.isArray(s.presets) && s.presets.length) {
     $('breath-preset').replaceChildren(...s.presets.map((p) => {
@@ -481,6 +498,10 @@ function setUp() {
     if (!spec) return setStatus('Name a pathology to add (one of the forms below).', true);
     const r = await control({action: 'pathology_add', spec: spec, over_s: overSeconds()});
     if (r) $('pathology-spec').value = '';
+  });
+  $('posture-set').addEventListener('click', () => {
+    const over = parseFloat($('posture-over').value);
+    control({action: 'posture_set', posture: $('posture-choice').value, over_s: isFinite(over) ? over : 0});
   });
   $('marker-add').addEventListener('click', async () => {
     const text = $('marker-text').value.trim();

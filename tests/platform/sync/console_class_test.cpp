@@ -1,7 +1,7 @@
 // The instructor's console on a whole classroom: one headless instructor serving its console, two trainees, all
 // `lungar` processes on loopback. What a trainer does from the page (log in, add a pathology, pause the breath,
-// resume it) reaches both trainees' stats JSON within 0.5 s of the request; without a login nothing changes, and
-// the refusal is counted.
+// resume it, turn the simulated patient) reaches both trainees' stats JSON within 0.5 s of the request (a turn
+// within 0.5 s of its end); without a login nothing changes, and the refusal is counted.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -134,9 +134,22 @@ TEST_F(ConsoleClass, WhatTheTrainerDoesReachesBothTraineesWithinHalfASecond) {
   EXPECT_FALSE(has(stats_now("trainee-1")["pathologies"], "pneumothorax:left:30"))
       << "the refused request changed nothing";
 
+  // The simulated patient (the instructor's mock tracker) turned supine: both trainees draw gravity along the
+  // patient's back (+y in the lungs' frame) once the turn is over.
+  clicked = Clock::now();
+  ASSERT_EQ(trainer.control(R"({"action":"posture_set","posture":"supine","over_s":0.5})").status, 200);
+  const double supine_s = seconds_until_both(clicked, [](const nlohmann::json& s) {
+    const nlohmann::json& g = s["gravity_lung_last"];
+    return g.is_array() && g.size() == 3 && g[1].get<double>() > 0.99;
+  });
+  EXPECT_GE(supine_s, 0) << stats_now("trainee-1").dump();
+  EXPECT_LE(supine_s, 0.5 + 0.5) << "the turn's 0.5 s, then the same half second as any change";
+  std::printf("console to both trainees' stats JSON: a turn to supine over 0.5 s, %.3f s\n", supine_s);
+
   const auto view = nlohmann::json::parse(trainer.get("/api/state").body, nullptr, false);
   ASSERT_TRUE(view.is_object());
   EXPECT_EQ(view["stations"].size(), 2u) << view.dump();
+  EXPECT_EQ(view["orientation"]["posture"], "supine") << view.dump();
   EXPECT_GE(view["refused"].get<int>(), 1);
 
   instructor->kill_now();  // the trainees have what they need: they stop on their own time

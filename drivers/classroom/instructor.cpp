@@ -96,7 +96,7 @@ Status Instructor::share_breathing(const sim::BreathingParams& start, std::span<
 }
 
 Status Instructor::reshare(const sim::BreathingParams& start, std::span<const sim::Event> events,
-                           const sim::PathologyTimeline& lungs) {
+                           const sim::PathologyTimeline& lungs, std::optional<bool> ventilation_map) {
   if (!shared_.load()) return fail("sync: the class changed before its breathing was shared");
   std::lock_guard lock(share_mutex_);
   // Built in copies first: a change the wire refuses leaves the shared revision as it was.
@@ -107,6 +107,7 @@ Status Instructor::reshare(const sim::BreathingParams& start, std::span<const si
   to_wire(start, state);
   if (Status s = to_wire(events, event_storage, sample); !s) return s;
   if (Status s = to_wire(lungs, pathology_storage, sample); !s) return s;
+  ventilation_map_to_wire(ventilation_map, sample);
   state.revision = sample.revision = state_.revision + 1;
   const std::int64_t now = link_->clock().now_ns();
   // The events first: a trainee installs a revision once both halves of it have come.

@@ -47,9 +47,10 @@ class Instructor {
   /// The class changed while it runs (the instructor's console): the same start and time base with more events
   /// or pathologies, as the next revision. Every trainee rebuilds its breathing and its lungs from it; an event
   /// timed a little ahead of now reaches them before it is due, so no station jumps. Any thread but the frame's
-  /// (it allocates and writes to DDS); after share_breathing().
+  /// (it allocates and writes to DDS); after share_breathing(). `ventilation_map`: what the console asks every
+  /// display to show (nullopt: each station its own choice).
   Status reshare(const sim::BreathingParams& start, std::span<const sim::Event> events,
-                 const sim::PathologyTimeline& lungs);
+                 const sim::PathologyTimeline& lungs, std::optional<bool> ventilation_map);
   /// The revision last shared (1 after share_breathing()).
   std::uint32_t revision() const;
   /// From the frame: the lung pose in the world it drew and when the tracker read it (monotonic ns). A pose

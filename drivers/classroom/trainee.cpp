@@ -118,7 +118,12 @@ void Trainee::take_events() {
       link_->malformed(lungs.error());
       return;
     }
-    pending_events_ = PendingEvents{s.session, s.revision, events.take(), lungs.take()};
+    auto ventilation_map = ventilation_map_from_wire(s);
+    if (!ventilation_map) {
+      link_->malformed(ventilation_map.error());
+      return;
+    }
+    pending_events_ = PendingEvents{s.session, s.revision, events.take(), lungs.take(), *ventilation_map};
   });
 }
 
@@ -150,6 +155,21 @@ void Trainee::install_if_complete() {
                 st.params.tidal_volume_ml, pending_events_->events.size());
   link_->log(line);
   link_->log("sync: lungs of instructor '" + st.station + "': " + sim::describe(pending_events_->lungs));
+  const std::optional<bool> map = pending_events_->ventilation_map;
+  if (map && map != display_applied_) {
+    display_applied_ = map;
+    ventilation_map_.store(*map, std::memory_order_relaxed);
+    display_version_.fetch_add(1, std::memory_order_release);
+    link_->log(std::string("sync: the instructor's console asks for the ventilation map ") + (*map ? "on" : "off"));
+  }
+}
+
+bool Trainee::ventilation_map_since(std::uint64_t& version, bool& on) const {
+  const std::uint64_t now = display_version_.load(std::memory_order_acquire);
+  if (now == version) return false;
+  on = ventilation_map_.load(std::memory_order_relaxed);
+  version = now;
+  return true;
 }
 
 void Trainee::take_heartbeats(std::int64_t now_mono) {

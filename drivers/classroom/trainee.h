@@ -48,6 +48,10 @@ class Trainee {
   bool breath_time(std::int64_t now_ns, double& t_s) const;
   /// The instructor's pathologies, when they changed since `version` (0 at first): true, `out` and `version` set.
   bool lungs_since(std::uint64_t& version, sim::PathologyTimeline& out) const;
+  /// The ventilation map the instructor's console asked every display to show, when that request changed since
+  /// `version` (0 at first): true, `on` and `version` set. A station's own choice (its V key) stands until the
+  /// console asks something else. Lock-free, allocates nothing.
+  bool ventilation_map_since(std::uint64_t& version, bool& on) const;
   /// From the frame: the breathing time it drew at monotonic `now_ns`, whichever clock gave it. The sync thread
   /// compares it with the instructor's at the same instant (sync_breath_offset_ms_*). Allocates nothing.
   void frame_breath(std::int64_t now_ns, double t_s) { frame_box_.publish(FrameBreath{now_ns, t_s}); }
@@ -69,6 +73,7 @@ class Trainee {
     std::uint32_t revision = 0;
     std::vector<sim::Event> events;
     sim::PathologyTimeline lungs;
+    std::optional<bool> ventilation_map;
   };
   struct FrameBreath {
     std::int64_t now_mono_ns;
@@ -111,6 +116,10 @@ class Trainee {
   mutable std::mutex lungs_mutex_;  ///< guards lungs_ (the sync thread writes, the lungs' course reads)
   sim::PathologyTimeline lungs_;
   std::atomic<std::uint64_t> lungs_version_{0};
+  /// The console's display request: the version counts changes of it; ventilation_map_ is set before the version.
+  std::atomic<std::uint64_t> display_version_{0};
+  std::atomic<bool> ventilation_map_{false};
+  std::optional<bool> display_applied_;  ///< sync thread: the request last taken
 
   // Sync thread only.
   std::optional<PendingState> pending_state_;

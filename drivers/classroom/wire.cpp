@@ -243,6 +243,21 @@ Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_P
   return ok();
 }
 
+Result<std::optional<bool>> ventilation_map_from_wire(const lungar_sync_ScenarioEvents& s) {
+  switch (s.ventilation_map) {
+    case 0: return std::optional<bool>();
+    case 1: return std::optional<bool>(false);
+    case 2: return std::optional<bool>(true);
+    default:
+      return fail("lungar_scenario_events: ventilation_map: expected 0 (each station's own), 1 (off) or 2 (on), got " +
+                  std::to_string(s.ventilation_map));
+  }
+}
+
+void ventilation_map_to_wire(std::optional<bool> on, lungar_sync_ScenarioEvents& out) {
+  out.ventilation_map = !on ? 0 : *on ? 2 : 1;
+}
+
 Status check(const lungar_sync_Heartbeat& s) {
   if (Status f = finite("lungar_heartbeat", "breath_t_s", s.breath_t_s); !f) return f;
   if (s.frame_ns <= 0) return fail("lungar_heartbeat: frame_ns: expected a time after the epoch");

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -56,6 +57,11 @@ Result<sim::PathologyTimeline> pathologies_from_wire(const lungar_sync_ScenarioE
 /// an error when the timeline does not fit the sample's bounds.
 Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_PathologyEvent>& storage,
                lungar_sync_ScenarioEvents& out);
+
+/// The ventilation map a ScenarioEvents asks of every display: nullopt when each station keeps its own choice
+/// (0 on the wire), else off (1) or on (2); anything else is an error naming the field.
+Result<std::optional<bool>> ventilation_map_from_wire(const lungar_sync_ScenarioEvents& s);
+void ventilation_map_to_wire(std::optional<bool> on, lungar_sync_ScenarioEvents& out);
 
 /// A heartbeat's frame time and breathing time must be real numbers.
 Status check(const lungar_sync_Heartbeat& s);

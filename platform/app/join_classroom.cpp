@@ -10,6 +10,20 @@
 
 namespace lungar::platform::sync {
 
+namespace {
+/// A trainee's display shows what the instructor's console asks of the class (Trainee::ventilation_map_since).
+class TraineeDisplay final : public DisplayRequests {
+ public:
+  explicit TraineeDisplay(std::shared_ptr<const classroom::ClassroomStation> station) : station_(std::move(station)) {}
+  bool ventilation_map_since(std::uint64_t& version, bool& on) const override {
+    return station_->trainee()->ventilation_map_since(version, on);
+  }
+
+ private:
+  std::shared_ptr<const classroom::ClassroomStation> station_;
+};
+}  // namespace
+
 Status can_draw(const std::shared_ptr<const sim::BakedAsset>& healthy,
                 const std::shared_ptr<const sim::BakedAsset>& drawn, const sim::PathologyTimeline& timeline) {
   if (!healthy || !drawn) return fail("the loaded lungs are not kept: none of their pathologies can change");
@@ -42,6 +56,7 @@ Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_ske
       if (!control) return control.with_context("");
       joined.control = control.take();
       if (simulated) parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), joined.control, t0_ns);
+      parts.display = joined.control;
       joined.control->can_draw = [healthy = lungs.healthy, drawn = lungs.drawn](const sim::PathologyTimeline& t) {
         return can_draw(healthy, drawn, t);
       };
@@ -56,6 +71,7 @@ Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_ske
         registration_isometry(s.registration.translation_mm, s.registration.rotation_wxyz));
     if (!lungs.healthy || !lungs.drawn) return fail("classroom: a trainee needs the loaded lungs to draw the instructor's");
     parts.course = std::make_shared<ClassroomCourse>(parts.course, station, lungs, log);
+    parts.display = std::make_shared<TraineeDisplay>(station);
   }
   if (!s.console.listen.empty() && !joined.control)
     return fail("console: the console runs on the classroom's instructor; start this station with --sync instructor");

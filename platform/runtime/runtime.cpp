@@ -323,18 +323,24 @@ void Runtime::draw_legend(const FrameViews& views) {
   }
 }
 
-/// V toggles the ventilation map.
+/// V toggles the ventilation map; the class (the instructor's console) may ask for it on or off.
 void Runtime::take_keys() {
-  for (char key : parts_.output->take_keys()) {
-    if (key != 'v') continue;
-    if (source_ != render::PositionSource::Shader) {
-      log_line("lungar", "ventilation map: drawn by the vertex shader; not with --deform " +
-                             std::string(to_string(config_.deform)));
-      continue;
-    }
-    ventilation_ = !ventilation_;
-    log_line("lungar", ventilation_ ? "ventilation map: on (V hides it)" : "ventilation map: off");
+  for (char key : parts_.output->take_keys())
+    if (key == 'v') show_ventilation(!ventilation_, "");
+  bool asked = false;
+  if (parts_.display && parts_.display->ventilation_map_since(display_version_, asked))
+    show_ventilation(asked, " (the instructor's console)");
+}
+
+void Runtime::show_ventilation(bool on, const char* why) {
+  if (source_ != render::PositionSource::Shader) {
+    log_line("lungar", std::string("ventilation map: drawn by the vertex shader; not with --deform ") +
+                           std::string(to_string(config_.deform)) + why);
+    return;
   }
+  if (on == ventilation_) return;
+  ventilation_ = on;
+  log_line("lungar", std::string(ventilation_ ? "ventilation map: on (V hides it)" : "ventilation map: off") + why);
 }
 
 Status Runtime::present_and_record(const FrameState& state) {

@@ -21,6 +21,7 @@
 #include "config/base/result.h"
 #include "drivers/breath/source/breathing_clock.h"
 #include "platform/runtime/breath_swing.h"
+#include "platform/runtime/display_requests.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/frame_output.h"
 #include "platform/runtime/frame_stats.h"
@@ -48,6 +49,8 @@ struct RuntimeParts {
   std::vector<std::shared_ptr<FrameListener>> listeners;  ///< told of every frame (recorders, the classroom)
   /// The lungs' shapes changing during the run (none: as loaded).
   std::shared_ptr<LungCourse> course;
+  /// What the class asks this display to show (the instructor's console); none: only the V key.
+  std::shared_ptr<const DisplayRequests> display;
   /// Lesions inside the lungs, each with its own coefficient rows (sim/motion/lesion_rows.h); none: none drawn.
   std::vector<sim::LesionRows> lesions;
   /// The frame's clock (monotonic ns); the bench scripts it so that every configuration sees the same inputs.
@@ -102,6 +105,8 @@ class Runtime {
   void follow_lesson(std::int64_t now_ns);
   void draw_legend(const FrameViews& views);
   void take_keys();
+  /// The ventilation map on or off (`why` ends the log line), where the vertex shader draws the points.
+  void show_ventilation(bool on, const char* why);
 
   const RuntimeConfig config_;
   RuntimeParts parts_;
@@ -125,7 +130,8 @@ class Runtime {
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene
   std::optional<render::HudLine> lesson_hud_;  ///< under it, the breathing and the pathologies in force
   std::string lesson_;
-  bool ventilation_ = false;            ///< the ventilation map is shown (config, then the V key)
+  bool ventilation_ = false;            ///< the ventilation map is shown (config, then the V key or the class)
+  std::uint64_t display_version_ = 0;   ///< the class's display request last taken (parts_.display)
   std::optional<render::VentilationLegend> legend_;  ///< made when the map is first shown
   BreathSwing swing_;                   ///< the last breath's dV swing, for the map
 

@@ -151,6 +151,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   if (action.rfind("breath_", 0) == 0) return breath_request(user, action, request);
   if (action.rfind("pathology_", 0) == 0) return pathology_request(user, action, request);
   if (action == "posture_set") return posture_request(user, request);
+  if (action == "display_set") return display_request(user, request);
   if (action == "marker") {
     std::string text;
     if (Status s = required_text(request, "text", text); !s) return refuse(400, "marker: " + s.error());
@@ -161,7 +162,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   }
   return refuse(400,
                 "action: expected one of breath_pause, breath_resume, breath_set, pathology_add, "
-                "pathology_remove, pathology_severity, posture_set, marker; not '" +
+                "pathology_remove, pathology_severity, posture_set, display_set, marker; not '" +
                     action + "'");
 }
 
@@ -216,7 +217,7 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
     lungs = lungs_;
   }
   events.push_back(event);
-  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs); !shared)
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, ventilation_map_); !shared)
     return refuse(400, action + ": " + shared.error());
   {
     std::lock_guard lock(mutex_);
@@ -270,6 +271,35 @@ console::ControlReply ClassControl::posture_request(const console::ConsoleUser& 
   return {200, {{"t_s", turn.t_s}}};
 }
 
+console::ControlReply ClassControl::display_request(const console::ConsoleUser& user, const nlohmann::json& request) {
+  if (!request.contains("ventilation_map") || !request["ventilation_map"].is_boolean())
+    return refuse(400, "display_set: ventilation_map: expected true or false");
+  const bool on = request["ventilation_map"].get<bool>();
+  std::vector<sim::Event> events;
+  sim::PathologyTimeline lungs;
+  {
+    std::lock_guard lock(mutex_);
+    events = breath_events_;
+    lungs = lungs_;
+  }
+  // Shared like any change, so a trainee joining later shows what the others show.
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, on); !shared)
+    return refuse(400, "display_set: " + shared.error());
+  ventilation_map_ = on;
+  shown_map_.store(on, std::memory_order_relaxed);
+  display_version_.fetch_add(1, std::memory_order_release);
+  note({now_s(), "display", user.name, on ? "ventilation map on" : "ventilation map off"});
+  return {200, {{"t_s", now_s()}}};
+}
+
+bool ClassControl::ventilation_map_since(std::uint64_t& version, bool& on) const {
+  const std::uint64_t now = display_version_.load(std::memory_order_acquire);
+  if (now == version) return false;
+  on = shown_map_.load(std::memory_order_relaxed);
+  version = now;
+  return true;
+}
+
 console::ControlReply ClassControl::pathology_request(const console::ConsoleUser& user, const std::string& action,
                                                       const nlohmann::json& request) {
   sim::PathologyEvent event;
@@ -306,7 +336,7 @@ console::ControlReply ClassControl::pathology_request(const console::ConsoleUser
   if (can_draw) {  // the instructor draws what it shares: what it cannot, no trainee is sent
     if (Status s = can_draw(lungs); !s) return refuse(400, action + ": " + s.error());
   }
-  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs); !shared)
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, ventilation_map_); !shared)
     return refuse(400, action + ": " + shared.error());
   {
     std::lock_guard lock(mutex_);
@@ -400,6 +430,7 @@ std::string ClassControl::snapshot_json() {
   nlohmann::json postures = nlohmann::json::array();
   for (const Pose pose : sim::kAllPoses) postures.push_back(std::string(sim::to_string(pose)));
   j["posture"] = {{"simulated", track_.load(std::memory_order_acquire) != nullptr}, {"choices", std::move(postures)}};
+  j["display"] = {{"ventilation_map", ventilation_map_ ? nlohmann::json(*ventilation_map_) : nlohmann::json()}};
   j["pathologies"] = present_at(t);
   j["pathologies_changing"] = changing_at(t);
   j["stations"] = stations_json();

@@ -31,6 +31,7 @@
 #include "drivers/breath/source/breathing_clock.h"
 #include "drivers/classroom/classroom_station.h"
 #include "platform/console/console_handler.h"
+#include "platform/runtime/display_requests.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/scenario_patient.h"
 #include "platform/sync/classroom_course.h"
@@ -67,6 +68,7 @@ class ClassControl final : public console::ConsoleHandler,
                            public TimelineFeed,
                            public FrameListener,
                            public PatientTrack,
+                           public DisplayRequests,
                            public std::enable_shared_from_this<ClassControl> {
  public:
   /// How far ahead of the request a change is timed: the trainees have it before it is due (one loopback or LAN
@@ -106,6 +108,9 @@ class ClassControl final : public console::ConsoleHandler,
   Eigen::Quaterniond orientation_at(double t_s) const override;
   std::string turned_by() const override { return "the instructor's console"; }
 
+  // DisplayRequests: the instructor's own display shows what the console asks of every station.
+  bool ventilation_map_since(std::uint64_t& version, bool& on) const override;
+
   // ConsoleHandler.
   std::string snapshot_json() override;
   console::ControlReply control(const console::ConsoleUser& user, const nlohmann::json& request) override;
@@ -136,6 +141,8 @@ class ClassControl final : public console::ConsoleHandler,
                                        const nlohmann::json& request);
   /// posture_set: the simulated patient turns to a named posture over over_s, after any turn under way.
   console::ControlReply posture_request(const console::ConsoleUser& user, const nlohmann::json& request);
+  /// display_set: the ventilation map on or off on every station's display.
+  console::ControlReply display_request(const console::ConsoleUser& user, const nlohmann::json& request);
   console::ControlReply pathology_request(const console::ConsoleUser& user, const std::string& action,
                                           const nlohmann::json& request);
   /// Installs `events` (breathing) and `lungs` here and shares them as the next revision; the error leaves the
@@ -159,6 +166,12 @@ class ClassControl final : public console::ConsoleHandler,
   /// through track_, as it does the breathing driver.
   std::vector<std::unique_ptr<const sim::OrientationTrack>> tracks_;
   std::atomic<const sim::OrientationTrack*> track_{nullptr};
+
+  /// Console thread: the ventilation map the console asked of every display (none yet: each station's own). The
+  /// frame reads it through the atomics, the version set last.
+  std::optional<bool> ventilation_map_;
+  std::atomic<bool> shown_map_{false};
+  std::atomic<std::uint64_t> display_version_{0};
 
   mutable std::mutex mutex_;  ///< guards events_ (breathing), lungs_ and log_lines_ against readers on other threads
   std::vector<sim::Event> breath_events_;

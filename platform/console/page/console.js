@@ -162,6 +162,7 @@ function render(s) {
   renderSamples(s.samples || []);
   renderOrientation(s.orientation || {});
   renderPostureControl(s.posture || {});
+  renderDisplay(s.display || {});
   renderPathologies(s.pathologies || [], s.pathologies_changing || '');
   renderStations(s.stations || []);
   renderEvents(s.events || []);
@@ -411,6 +412,11 @@ function renderPostureControl(p) {
       'A tracker measures the patient: turn the patient (or the mannequin) itself.' : '';
 }
 
+function renderDisplay(d) {
+  const map = d.ventilation_map;
+  $('ventilation-state').textContent = map === true ? 'shown' : map === false ? 'hidden' : "each station's own";
+}
+
 function fillForms(s) {
   if (s.posture && Array.isArray(s.posture.choices) && !$('posture-choice').options.length) {
     $('posture-choice').replaceChildren(...s.posture.choices.map((p) => {
@@ -503,6 +509,8 @@ function setUp() {
     const over = parseFloat($('posture-over').value);
     control({action: 'posture_set', posture: $('posture-choice').value, over_s: isFinite(over) ? over : 0});
   });
+  $('ventilation-on').addEventListener('click', () => control({action: 'display_set', ventilation_map: true}));
+  $('ventilation-off').addEventListener('click', () => control({action: 'display_set', ventilation_map: false}));
   $('marker-add').addEventListener('click', async () => {
     const text = $('marker-text').value.trim();
     if (!text) return;

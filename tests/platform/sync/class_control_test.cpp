@@ -184,6 +184,51 @@ TEST(ClassControl, AFollowedBreathIsNotTheConsolesToChange) {
   EXPECT_FALSE(nlohmann::json::parse(room.control->snapshot_json())["posture"]["simulated"].get<bool>());
 }
 
+TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDisplay) {
+  ControlledRoom room("display");
+  std::uint64_t trainee_version = 0, own_version = 0;
+  bool on = false;
+  EXPECT_FALSE(room.control->ventilation_map_since(own_version, on)) << "nothing asked yet: each display its own";
+  EXPECT_TRUE(nlohmann::json::parse(room.control->snapshot_json())["display"]["ventilation_map"].is_null());
+  // The trainee has the class before the request: it shows its own choice until the console asks.
+  ASSERT_TRUE(ControlledRoom::within_10_s([&] {
+    sim::BreathingSample s;
+    return room.trainee_breath(s);
+  }));
+  EXPECT_FALSE(room.learner->trainee()->ventilation_map_since(trainee_version, on));
+
+  const console::ControlReply shown =
+      room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", true}});
+  ASSERT_EQ(shown.status, 200) << shown.body.dump();
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
+  EXPECT_TRUE(on);
+  ASSERT_TRUE(room.control->ventilation_map_since(own_version, on));
+  EXPECT_TRUE(on);
+  EXPECT_FALSE(room.control->ventilation_map_since(own_version, on)) << "told once";
+  EXPECT_EQ(nlohmann::json::parse(room.control->snapshot_json())["display"]["ventilation_map"], true);
+
+  // A pathology shared after it keeps the map on (the same request travels with every revision): the trainee is
+  // not told again, so a trainee's own V key stands.
+  ASSERT_EQ(room.control->control(kTeacher, {{"action", "pathology_add"}, {"spec", "pneumothorax:right:30"}}).status,
+            200);
+  std::uint64_t lungs_version = 0;
+  sim::PathologyTimeline seen;
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->lungs_since(lungs_version, seen) && !seen.events.empty(); }));
+  EXPECT_FALSE(room.learner->trainee()->ventilation_map_since(trainee_version, on));
+
+  ASSERT_EQ(room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", false}}).status, 200);
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
+  EXPECT_FALSE(on);
+  const console::ControlReply bad =
+      room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", "yes"}});
+  EXPECT_EQ(bad.status, 400);
+  EXPECT_NE(bad.body["error"].get<std::string>().find("ventilation_map: expected true or false"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(room.control->snapshot_json())["events"].back()["text"], "ventilation map off");
+}
+
 /// The angle between two orientations, degrees.
 double degrees_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   return a.angularDistance(b) * 180.0 / M_PI;

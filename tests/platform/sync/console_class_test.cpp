@@ -1,7 +1,7 @@
 // The instructor's console on a whole classroom: one headless instructor serving its console, two trainees, all
 // `lungar` processes on loopback. What a trainer does from the page (log in, add a pathology, pause the breath,
-// resume it, turn the simulated patient) reaches both trainees' stats JSON within 0.5 s of the request (a turn
-// within 0.5 s of its end); without a login nothing changes, and the refusal is counted.
+// resume it, turn the simulated patient, show the ventilation map) reaches both trainees' stats JSON within 0.5 s
+// of the request (a turn within 0.5 s of its end); without a login nothing changes, and the refusal is counted.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -145,6 +145,14 @@ TEST_F(ConsoleClass, WhatTheTrainerDoesReachesBothTraineesWithinHalfASecond) {
   EXPECT_GE(supine_s, 0) << stats_now("trainee-1").dump();
   EXPECT_LE(supine_s, 0.5 + 0.5) << "the turn's 0.5 s, then the same half second as any change";
   std::printf("console to both trainees' stats JSON: a turn to supine over 0.5 s, %.3f s\n", supine_s);
+
+  // The ventilation map on every trainee's display.
+  clicked = Clock::now();
+  ASSERT_EQ(trainer.control(R"({"action":"display_set","ventilation_map":true})").status, 200);
+  const double map_s = seconds_until_both(clicked, [](const nlohmann::json& s) { return s["ventilation_map"] == true; });
+  EXPECT_GE(map_s, 0) << stats_now("trainee-1").dump();
+  EXPECT_LE(map_s, 0.5);
+  std::printf("console to both trainees' stats JSON: the ventilation map, %.3f s\n", map_s);
 
   const auto view = nlohmann::json::parse(trainer.get("/api/state").body, nullptr, false);
   ASSERT_TRUE(view.is_object());

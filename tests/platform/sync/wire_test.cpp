@@ -204,6 +204,24 @@ TEST(SyncWire, MalformedPathologiesAreRefusedNamingWhatIsWrong) {
   EXPECT_NE(s.error().find("is longer than a classroom carries (63 characters)"), std::string::npos) << s.error();
 }
 
+TEST(SyncWire, TheConsolesVentilationMapRoundTripsAndAnUnknownValueIsRefused) {
+  lungar_sync_ScenarioEvents w{};
+  auto own = ventilation_map_from_wire(w);
+  ASSERT_TRUE(own) << own.error();
+  EXPECT_FALSE(own->has_value()) << "a sample that says nothing leaves each station its own choice";
+  for (const bool on : {true, false}) {
+    ventilation_map_to_wire(on, w);
+    auto back = ventilation_map_from_wire(w);
+    ASSERT_TRUE(back) << back.error();
+    EXPECT_EQ(*back, std::optional<bool>(on));
+  }
+  w.ventilation_map = 7;
+  auto bad = ventilation_map_from_wire(w);
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error(),
+            "lungar_scenario_events: ventilation_map: expected 0 (each station's own), 1 (off) or 2 (on), got 7");
+}
+
 TEST(SyncWire, MalformedScenarioEventsAreRefused) {
   const std::vector<sim::Event> events = {sim::Event::sigh(8.0), sim::Event::sigh(9.0)};
   std::vector<lungar_sync_ScenarioEvent> storage;

@@ -152,6 +152,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   if (action.rfind("pathology_", 0) == 0) return pathology_request(user, action, request);
   if (action == "posture_set") return posture_request(user, request);
   if (action == "display_set") return display_request(user, request);
+  if (action.rfind("scenario_", 0) == 0) return scenario_request(user, action, request);
   if (action == "marker") {
     std::string text;
     if (Status s = required_text(request, "text", text); !s) return refuse(400, "marker: " + s.error());
@@ -162,7 +163,8 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
   }
   return refuse(400,
                 "action: expected one of breath_pause, breath_resume, breath_set, pathology_add, "
-                "pathology_remove, pathology_severity, posture_set, display_set, marker; not '" +
+                "pathology_remove, pathology_severity, posture_set, display_set, scenario_load, scenario_start, "
+                "scenario_pause, scenario_jump, scenario_stop, marker; not '" +
                     action + "'");
 }
 
@@ -206,25 +208,10 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
   } else {
     return refuse(400, "action: expected breath_pause, breath_resume or breath_set; not '" + action + "'");
   }
-  // The new driver is the one in force with the event applied: what a trainee builds from the whole list.
-  auto next = std::make_unique<sim::BreathingDriver>(driver());
-  if (Status applied = next->apply(event); !applied) return refuse(400, action + ": " + applied.error());
-  std::vector<sim::Event> events;
-  sim::PathologyTimeline lungs;
-  {
-    std::lock_guard lock(mutex_);
-    events = breath_events_;
-    lungs = lungs_;
-  }
-  events.push_back(event);
-  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, ventilation_map_); !shared)
-    return refuse(400, action + ": " + shared.error());
-  {
-    std::lock_guard lock(mutex_);
-    breath_events_ = std::move(events);
-  }
-  drivers_.push_back(std::move(next));
-  driver_.store(drivers_.back().get(), std::memory_order_release);
+  ClassSteps manual = manual_;
+  manual.breath.push_back(event);
+  if (Status s = commit(manual, scenario_.issued); !s) return refuse(400, action + ": " + s.error());
+  manual_ = std::move(manual);
   if (action != "breath_set") paused_ = action == "breath_pause";
   note({t,
         action == "breath_pause"    ? "breath pause"
@@ -259,12 +246,10 @@ console::ControlReply ClassControl::posture_request(const console::ConsoleUser& 
       return refuse(409, line);
     }
   }
-  std::vector<sim::Turn> turns = now->turns();
-  turns.push_back(turn);
-  auto next = sim::OrientationTrack::create(now->start(), std::move(turns));
-  if (!next) return refuse(400, "posture_set: " + next.error());
-  tracks_.push_back(std::make_unique<const sim::OrientationTrack>(next.take()));
-  track_.store(tracks_.back().get(), std::memory_order_release);
+  ClassSteps manual = manual_;
+  manual.turns.push_back(turn);
+  if (Status s = commit(manual, scenario_.issued); !s) return refuse(400, "posture_set: " + s.error());
+  manual_ = std::move(manual);
   char over[48];
   std::snprintf(over, sizeof over, " over %.1f s", over_s);
   note({turn.t_s, "posture", user.name, std::string(sim::to_string(*pose)) + over});
@@ -275,17 +260,13 @@ console::ControlReply ClassControl::display_request(const console::ConsoleUser& 
   if (!request.contains("ventilation_map") || !request["ventilation_map"].is_boolean())
     return refuse(400, "display_set: ventilation_map: expected true or false");
   const bool on = request["ventilation_map"].get<bool>();
-  std::vector<sim::Event> events;
-  sim::PathologyTimeline lungs;
-  {
-    std::lock_guard lock(mutex_);
-    events = breath_events_;
-    lungs = lungs_;
-  }
   // Shared like any change, so a trainee joining later shows what the others show.
-  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, on); !shared)
-    return refuse(400, "display_set: " + shared.error());
+  const std::optional<bool> before = ventilation_map_;
   ventilation_map_ = on;
+  if (Status s = commit(manual_, scenario_.issued); !s) {
+    ventilation_map_ = before;
+    return refuse(400, "display_set: " + s.error());
+  }
   shown_map_.store(on, std::memory_order_relaxed);
   display_version_.fetch_add(1, std::memory_order_release);
   note({now_s(), "display", user.name, on ? "ventilation map on" : "ventilation map off"});
@@ -324,26 +305,10 @@ console::ControlReply ClassControl::pathology_request(const console::ConsoleUser
                              "' cannot come or go during a class (it would switch at once); start the class with it");
   }
   event.at_s = now_s() + kLeadS;
-  sim::PathologyTimeline lungs;
-  std::vector<sim::Event> events;
-  {
-    std::lock_guard lock(mutex_);
-    lungs = lungs_;
-    events = breath_events_;
-  }
-  lungs.events.push_back(event);
-  if (Status s = sim::check_timeline(lungs); !s) return refuse(400, action + ": " + s.error());
-  if (can_draw) {  // the instructor draws what it shares: what it cannot, no trainee is sent
-    if (Status s = can_draw(lungs); !s) return refuse(400, action + ": " + s.error());
-  }
-  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, ventilation_map_); !shared)
-    return refuse(400, action + ": " + shared.error());
-  {
-    std::lock_guard lock(mutex_);
-    lungs_ = lungs;
-  }
-  lungs_version_.fetch_add(1, std::memory_order_release);
-  if (on_timeline) on_timeline(lungs);
+  ClassSteps manual = manual_;
+  manual.lungs.push_back(event);
+  if (Status s = commit(manual, scenario_.issued); !s) return refuse(400, action + ": " + s.error());
+  manual_ = std::move(manual);
   char over[48];
   std::snprintf(over, sizeof over, " over %.1f s", event.over_s);
   const std::string what = event.remove.empty() ? event.add
@@ -355,6 +320,214 @@ console::ControlReply ClassControl::pathology_request(const console::ConsoleUser
                                        : "pathology severity",
         user.name, what + over});
   return {200, {{"t_s", event.at_s}}};
+}
+
+namespace {
+
+/// `a` then `b`, in time order (stable: at one time, `a`'s first).
+template <class T, class Time>
+std::vector<T> merged(const std::vector<T>& a, const std::vector<T>& b, const std::vector<T>& c, Time time) {
+  std::vector<T> out = a;
+  out.insert(out.end(), b.begin(), b.end());
+  out.insert(out.end(), c.begin(), c.end());
+  std::stable_sort(out.begin(), out.end(), [&](const T& x, const T& y) { return time(x) < time(y); });
+  return out;
+}
+
+}  // namespace
+
+Status ClassControl::commit(const ClassSteps& manual, const ClassSteps& scenario) {
+  const std::vector<sim::Event> events =
+      merged(start_.events, manual.breath, scenario.breath, [](const sim::Event& e) { return e.t_s; });
+  sim::PathologyTimeline lungs{start_.lungs.start, merged(start_.lungs.events, manual.lungs, scenario.lungs,
+                                                          [](const sim::PathologyEvent& e) { return e.at_s; })};
+  // The breath a trainee builds from the whole list: the instructor's is built the same way.
+  auto built = classroom::SharedBreathing::build(start_.start, events);
+  if (!built) return Error{built.error()};
+  std::optional<sim::OrientationTrack> track;
+  if (start_.posture) {
+    auto made = sim::OrientationTrack::create(
+        start_.posture->start(),
+        merged(start_.posture->turns(), manual.turns, scenario.turns, [](const sim::Turn& t) { return t.t_s; }));
+    if (!made) return Error{made.error()};
+    track.emplace(made.take());
+  }
+  sim::PathologyTimeline now;
+  {
+    std::lock_guard lock(mutex_);
+    now = lungs_;
+  }
+  const bool lungs_changed = !(lungs == now);
+  if (lungs_changed) {
+    if (Status s = sim::check_timeline(lungs); !s) return s;
+    if (can_draw) {  // the instructor draws what it shares: what it cannot, no trainee is sent
+      if (Status s = can_draw(lungs); !s) return s;
+    }
+  }
+  if (Status shared = station_->instructor()->reshare(start_.start, events, lungs, ventilation_map_); !shared)
+    return shared;
+  {
+    std::lock_guard lock(mutex_);
+    breath_events_ = events;
+    lungs_ = lungs;
+  }
+  drivers_.push_back(std::make_unique<const sim::BreathingDriver>(built.take()));
+  driver_.store(drivers_.back().get(), std::memory_order_release);
+  if (track) {
+    tracks_.push_back(std::make_unique<const sim::OrientationTrack>(std::move(*track)));
+    track_.store(tracks_.back().get(), std::memory_order_release);
+  }
+  if (lungs_changed) {
+    lungs_version_.fetch_add(1, std::memory_order_release);
+    if (on_timeline) on_timeline(lungs);
+  }
+  return ok();
+}
+
+ClassSteps ClassControl::begun_by(double t_s) const {
+  ClassSteps kept;
+  for (const sim::Event& e : scenario_.issued.breath)
+    if (e.t_s <= t_s) kept.breath.push_back(e);
+  for (const sim::PathologyEvent& e : scenario_.issued.lungs)
+    if (e.at_s <= t_s) kept.lungs.push_back(e);
+  for (const sim::Turn& turn : scenario_.issued.turns)
+    if (turn.t_s <= t_s) kept.turns.push_back(turn);
+  return kept;
+}
+
+ClassSteps ClassControl::scenario_steps(double at_s, double t_s, bool running, double& offset_s) const {
+  const ClassScenario& sc = *scenario_.loaded;
+  const ScenarioState target = sc.state_before(at_s);
+  ClassSteps steps;
+  // The breath: one change to every parameter the scenario has by then (a followed breath is the patient's own).
+  if (start_.followed.empty()) {
+    sim::PatternChange c;
+    c.preset = target.params.preset;
+    c.rate_bpm = target.params.rate_bpm;
+    c.ie_ratio = target.params.ie_ratio;
+    c.tidal_volume_ml = target.params.tidal_volume_ml;
+    c.mode = target.params.mode;
+    c.ventilator_tau_s = target.params.ventilator_tau_s;
+    c.peep_cmh2o = target.params.peep_cmh2o;
+    steps.breath.push_back(sim::Event::set(t_s, c));
+  }
+  // The pathologies: what the class has then and the scenario has not goes, what the scenario has comes.
+  const std::vector<std::string> present = present_at(t_s);
+  for (const std::string& p : present)
+    if (std::find(target.pathologies.begin(), target.pathologies.end(), p) == target.pathologies.end())
+      steps.lungs.push_back({t_s, kSettleS, "", p});
+  for (const std::string& p : target.pathologies)
+    if (std::find(present.begin(), present.end(), p) == present.end()) steps.lungs.push_back({t_s, kSettleS, p, ""});
+  // The posture, when simulated: after any turn under way.
+  double settle_at = t_s;
+  if (const sim::OrientationTrack* track = track_.load(std::memory_order_acquire)) {
+    for (const sim::Turn& turn : track->turns())
+      if (turn.t_s <= settle_at && settle_at < turn.t_s + turn.duration_s) settle_at = turn.t_s + turn.duration_s;
+    if (track->at(settle_at).angularDistance(target.orientation) > 1e-3)
+      steps.turns.push_back({settle_at, kSettleS, target.orientation});
+  }
+  offset_s = settle_at + kSettleS - at_s;
+  if (!running) return steps;
+  ClassSteps after = sc.steps_from(at_s, offset_s);
+  if (!start_.followed.empty()) after.breath.clear();
+  if (!start_.posture) after.turns.clear();
+  steps.breath.insert(steps.breath.end(), after.breath.begin(), after.breath.end());
+  steps.lungs.insert(steps.lungs.end(), after.lungs.begin(), after.lungs.end());
+  steps.turns.insert(steps.turns.end(), after.turns.begin(), after.turns.end());
+  return steps;
+}
+
+console::ControlReply ClassControl::scenario_request(const console::ConsoleUser& user, const std::string& action,
+                                                     const nlohmann::json& request) {
+  const double t = now_s() + kLeadS;
+  ScenarioRun& run = scenario_;
+  if (action == "scenario_load") {
+    std::string name;
+    if (Status s = required_text(request, "name", name); !s) return refuse(400, action + ": " + s.error());
+    const auto found = std::find_if(scenarios.begin(), scenarios.end(),
+                                    [&](const ClassScenario& c) { return c.name() == name; });
+    if (found == scenarios.end()) {
+      std::string names;
+      for (const ClassScenario& c : scenarios) names += (names.empty() ? "" : ", ") + c.name();
+      return refuse(400, action + ": name: expected one of this station's scenarios (" +
+                             (names.empty() ? std::string("none") : names) + "); not '" + name + "'");
+    }
+    if (run.phase == "running" || run.phase == "paused")
+      return refuse(409, action + ": '" + run.loaded->name() + "' is " + run.phase + "; stop it first");
+    run = ScenarioRun{*found, "ready", 0, 0, {}};
+    note({t, "scenario load", user.name, found->name()});
+    return {200, {{"t_s", t}}};
+  }
+  if (!run.loaded) return refuse(409, action + ": no scenario is loaded; load one first");
+  const std::string& name = run.loaded->name();
+  if (action == "scenario_start" || action == "scenario_jump") {
+    double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
+    if (action == "scenario_jump") {
+      if (!request.contains("cue") || !request["cue"].is_number_integer())
+        return refuse(400, action + ": cue: expected the number of one of the scenario's events, from 0");
+      const auto cue = request["cue"].get<long long>();
+      if (cue < 0 || cue >= static_cast<long long>(run.loaded->cues().size()))
+        return refuse(400, action + ": cue: expected 0 to " + std::to_string(run.loaded->cues().size() - 1) +
+                               "; not " + std::to_string(cue));
+      at_s = run.loaded->cues()[static_cast<std::size_t>(cue)].t_s;
+    } else if (run.phase == "running") {
+      return refuse(409, action + ": '" + name + "' is running already");
+    } else if (run.phase == "stopped") {
+      at_s = 0;
+    }
+    const bool running = action == "scenario_start" || run.phase == "running";
+    double offset_s = 0;
+    ClassSteps issued = begun_by(t);
+    const ClassSteps added = scenario_steps(at_s, t, running, offset_s);
+    issued.breath.insert(issued.breath.end(), added.breath.begin(), added.breath.end());
+    issued.lungs.insert(issued.lungs.end(), added.lungs.begin(), added.lungs.end());
+    issued.turns.insert(issued.turns.end(), added.turns.begin(), added.turns.end());
+    if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
+    run.issued = std::move(issued);
+    run.offset_s = offset_s;
+    run.position_s = at_s;
+    run.phase = running ? "running" : run.phase;
+    char text[200];
+    std::snprintf(text, sizeof text, "%s from %.1f s", name.c_str(), at_s);
+    note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name, text});
+    return {200, {{"t_s", t}, {"scenario_s", at_s}}};
+  }
+  if (action == "scenario_pause" || action == "scenario_stop") {
+    const bool stop = action == "scenario_stop";
+    if (!stop && run.phase != "running") return refuse(409, action + ": '" + name + "' is not running");
+    if (stop && run.phase != "running" && run.phase != "paused")
+      return refuse(409, action + ": '" + name + "' is not running or paused");
+    ClassSteps issued = begun_by(t);
+    if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
+    const double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
+    run.issued = std::move(issued);
+    run.position_s = stop ? 0 : at_s;
+    run.phase = stop ? "stopped" : "paused";
+    char text[200];
+    std::snprintf(text, sizeof text, "%s at %.1f s", name.c_str(), at_s);
+    note({t, stop ? "scenario stop" : "scenario pause", user.name, text});
+    return {200, {{"t_s", t}, {"scenario_s", at_s}}};
+  }
+  return refuse(400, "action: expected scenario_load, scenario_start, scenario_pause, scenario_jump or "
+                     "scenario_stop; not '" + action + "'");
+}
+
+nlohmann::json ClassControl::scenario_json(double t_s) const {
+  nlohmann::json available = nlohmann::json::array();
+  for (const ClassScenario& c : scenarios)
+    available.push_back({{"name", c.name()}, {"description", c.description()}, {"duration_s", c.duration_s()}});
+  nlohmann::json j = {{"available", std::move(available)}};
+  const ScenarioRun& run = scenario_;
+  if (!run.loaded) return j;
+  const double at_s = run.phase == "running" ? t_s - run.offset_s : run.position_s;
+  nlohmann::json cues = nlohmann::json::array();
+  for (const ScenarioCue& c : run.loaded->cues()) cues.push_back({{"t_s", c.t_s}, {"kind", c.kind}, {"text", c.text}});
+  j["loaded"] = {{"name", run.loaded->name()},
+                 {"phase", run.phase == "running" && at_s > run.loaded->duration_s() ? "ended" : run.phase},
+                 {"t_s", at_s},
+                 {"duration_s", run.loaded->duration_s()},
+                 {"cues", std::move(cues)}};
+  return j;
 }
 
 void ClassControl::note(ClassEvent event) {
@@ -431,6 +604,7 @@ std::string ClassControl::snapshot_json() {
   for (const Pose pose : sim::kAllPoses) postures.push_back(std::string(sim::to_string(pose)));
   j["posture"] = {{"simulated", track_.load(std::memory_order_acquire) != nullptr}, {"choices", std::move(postures)}};
   j["display"] = {{"ventilation_map", ventilation_map_ ? nlohmann::json(*ventilation_map_) : nlohmann::json()}};
+  j["scenario"] = scenario_json(t);
   j["pathologies"] = present_at(t);
   j["pathologies_changing"] = changing_at(t);
   j["stations"] = stations_json();

@@ -34,6 +34,7 @@
 #include "platform/runtime/display_requests.h"
 #include "platform/runtime/frame_listener.h"
 #include "platform/runtime/scenario_patient.h"
+#include "platform/sync/class_scenario.h"
 #include "platform/sync/classroom_course.h"
 #include "sim/breathing/driver.h"
 #include "sim/breathing/event.h"
@@ -76,6 +77,9 @@ class ClassControl final : public console::ConsoleHandler,
   static constexpr double kLeadS = 0.1;
   /// A transition time the console gives when the request gives none, s.
   static constexpr double kDefaultOverS = 5.0;
+  /// How long a scenario's start or a jump takes to bring the class to where the scenario stands (its breath,
+  /// pathologies and posture), before the scenario's own steps go on.
+  static constexpr double kSettleS = 2.0;
   /// The console's plot: each frame's sample of the last this many seconds.
   static constexpr double kSamplesS = 0.5;
 
@@ -96,6 +100,8 @@ class ClassControl final : public console::ConsoleHandler,
   std::function<void(const ClassEvent&)> on_event;
   /// The pathology timeline after each change (for the session record).
   std::function<void(const sim::PathologyTimeline&)> on_timeline;
+  /// The station's scenarios the console may load (by name); set before the console starts.
+  std::vector<ClassScenario> scenarios;
 
   // FrameListener: the frame's sample for the live view. Allocates nothing.
   void on_frame(const FrameState& s) override;
@@ -145,9 +151,21 @@ class ClassControl final : public console::ConsoleHandler,
   console::ControlReply display_request(const console::ConsoleUser& user, const nlohmann::json& request);
   console::ControlReply pathology_request(const console::ConsoleUser& user, const std::string& action,
                                           const nlohmann::json& request);
-  /// Installs `events` (breathing) and `lungs` here and shares them as the next revision; the error leaves the
-  /// class as it was.
-  Status commit(std::vector<sim::Event> events, sim::PathologyTimeline lungs);
+  /// The class as the start, the console's own steps and the scenario's, each list in time order: checked whole
+  /// (the breath builds, the pathologies' course is one this station draws, the turns do not cross), shared as
+  /// the next revision, then installed here. The error leaves the class as it was.
+  Status commit(const ClassSteps& manual, const ClassSteps& scenario);
+  /// scenario_load, _start, _pause, _jump, _stop.
+  console::ControlReply scenario_request(const console::ConsoleUser& user, const std::string& action,
+                                         const nlohmann::json& request);
+  /// Brings the class to where the scenario stands at scenario time `at_s`, from class time `t_s` (a breath
+  /// change, the pathologies' differences, a turn), then its steps from `at_s` on when `running`: the steps to
+  /// add, and the scenario's offset (class time = scenario time + offset).
+  ClassSteps scenario_steps(double at_s, double t_s, bool running, double& offset_s) const;
+  /// The scenario's steps that have begun by class time t_s (those after it are dropped when it pauses, jumps or
+  /// stops).
+  ClassSteps begun_by(double t_s) const;
+  nlohmann::json scenario_json(double t_s) const;
   void note(ClassEvent event);
   /// The pathologies present at breathing time t_s (one under way counts).
   std::vector<std::string> present_at(double t_s) const;
@@ -161,6 +179,17 @@ class ClassControl final : public console::ConsoleHandler,
   std::vector<std::unique_ptr<const sim::BreathingDriver>> drivers_;  ///< console thread; every driver installed
   std::atomic<const sim::BreathingDriver*> driver_{nullptr};
   bool paused_ = false;  ///< console thread: a breath hold the console started is in force
+
+  /// Console thread: the console's own steps (requests), and the scenario's, which it drops from when it pauses,
+  /// jumps or stops. The class is the start, these, and nothing else.
+  ClassSteps manual_;
+  struct ScenarioRun {
+    std::optional<ClassScenario> loaded;
+    std::string phase;        ///< "ready", "running", "paused", "stopped"; empty: none loaded
+    double position_s = 0;    ///< scenario time where it stands, when not running
+    double offset_s = 0;      ///< running: class time = scenario time + offset_s
+    ClassSteps issued;        ///< its steps in the class, on class time
+  } scenario_;
 
   /// Console thread; every orientation track installed (none: the patient is tracked). The frame reads the newest
   /// through track_, as it does the breathing driver.

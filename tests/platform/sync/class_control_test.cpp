@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/base/clock.h"
+#include "config/scenario_load.h"
 #include "platform/app/join_classroom.h"
 #include "platform/app/scenario_adapter.h"
 #include "platform/sync/class_control.h"
@@ -233,6 +234,130 @@ TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDi
 double degrees_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
   return a.angularDistance(b) * 180.0 / M_PI;
 }
+
+/// A drill as a station keeps it in its scenarios folder: supine, a pneumothorax at 4 s, fast breathing at 6 s, the
+/// pneumothorax decompressed at 20 s.
+platform::sync::ClassScenario drill() {
+  auto sc = config::load_scenario_from_string(R"(
+name = "drill"
+description = "supine; a right pneumothorax at 4 s, decompressed at 20 s"
+duration_s = 30.0
+[start]
+preset = "normal"
+rate_bpm = 14.0
+tidal_volume_ml = 500.0
+pose = "supine"
+[[event]]
+at_s = 4.0
+kind = "pathology"
+add = "pneumothorax:right:30"
+over_s = 2.0
+[[event]]
+at_s = 6.0
+kind = "change"
+rate_bpm = 24.0
+[[event]]
+at_s = 20.0
+kind = "pathology"
+remove = "pneumothorax:right:30"
+over_s = 3.0
+)",
+                                              "drill.toml");
+  EXPECT_TRUE(sc) << sc.error();
+  auto script = platform::make_breathing_script(*sc);
+  EXPECT_TRUE(script) << script.error();
+  auto made = platform::sync::ClassScenario::create(*sc, *script);
+  EXPECT_TRUE(made) << made.error();
+  return made.take();
+}
+
+/// The class's pathology events as the instructor shares them now.
+sim::PathologyTimeline class_lungs(const platform::sync::ClassControl& c) {
+  std::uint64_t version = 0;
+  sim::PathologyTimeline lungs;
+  c.lungs_since(version, lungs);
+  return lungs;
+}
+
+TEST(ClassControl, AScenarioStartsPausesJumpsAndStopsOnTheRunningClass) {
+  auto upright = sim::OrientationTrack::create(sim::pose_rotation(Pose::Upright), {});
+  ASSERT_TRUE(upright);
+  ControlledRoom room("scenario", {}, "", upright.take());
+  platform::sync::ClassControl& c = *room.control;
+  c.scenarios = {drill()};
+  const auto ask = [&](nlohmann::json request) { return c.control(kTeacher, request); };
+
+  const console::ControlReply unknown = ask({{"action", "scenario_load"}, {"name", "tour"}});
+  EXPECT_EQ(unknown.status, 400);
+  EXPECT_NE(unknown.body["error"].get<std::string>().find("scenarios (drill)"), std::string::npos) << unknown.body;
+  EXPECT_EQ(ask({{"action", "scenario_start"}}).status, 409) << "nothing loaded";
+  ASSERT_EQ(ask({{"action", "scenario_load"}, {"name", "drill"}}).status, 200);
+  nlohmann::json view = nlohmann::json::parse(c.snapshot_json())["scenario"];
+  EXPECT_EQ(view["loaded"]["phase"], "ready");
+  ASSERT_EQ(view["loaded"]["cues"].size(), 3u);
+  EXPECT_EQ(view["loaded"]["cues"][0]["text"], "add pneumothorax:right:30 over 2.0 s");
+
+  // Started: the class goes to the scenario's start (supine, 14/min) over 2 s, then its events follow on time.
+  const console::ControlReply started = ask({{"action", "scenario_start"}});
+  ASSERT_EQ(started.status, 200) << started.body.dump();
+  const double t0 = started.body["t_s"].get<double>() + platform::sync::ClassControl::kSettleS;
+  EXPECT_LT(degrees_between(c.orientation_at(t0), sim::pose_rotation(Pose::Supine)), 1e-6);
+  sim::PathologyTimeline lungs = class_lungs(c);
+  ASSERT_EQ(lungs.events.size(), 2u) << sim::describe(lungs);
+  EXPECT_NEAR(lungs.events[0].at_s, t0 + 4.0, 1e-9);
+  EXPECT_EQ(lungs.events[0].add, "pneumothorax:right:30");
+  EXPECT_NEAR(lungs.events[1].at_s, t0 + 20.0, 1e-9);
+  EXPECT_NEAR(c.driver().pattern_at(t0 + 1.0).params.rate_bpm, 14.0, 1e-9);
+  EXPECT_NEAR(c.driver().pattern_at(t0 + 25.0).params.rate_bpm, 24.0, 1e-9);
+  std::uint64_t version = 0;
+  sim::PathologyTimeline seen;
+  ASSERT_TRUE(ControlledRoom::within_10_s(
+      [&] { return room.learner->trainee()->lungs_since(version, seen) && seen.events.size() == 2; }));
+  EXPECT_EQ(seen, lungs) << "the trainee has the scenario's steps";
+
+  // Paused before its first event: what had not begun goes, the breath stays as it was started.
+  ASSERT_EQ(ask({{"action", "scenario_pause"}}).status, 200);
+  EXPECT_TRUE(class_lungs(c).events.empty());
+  EXPECT_NEAR(c.driver().pattern_at(t0 + 25.0).params.rate_bpm, 14.0, 1e-9);
+  view = nlohmann::json::parse(c.snapshot_json())["scenario"]["loaded"];
+  EXPECT_EQ(view["phase"], "paused");
+  EXPECT_LT(view["t_s"].get<double>(), 0.5) << "it stood at its start";
+
+  // Jumped to the decompression while paused: the class gets what the scenario has by then (the pneumothorax,
+  // 24/min) and waits there.
+  const console::ControlReply jumped = ask({{"action", "scenario_jump"}, {"cue", 2}});
+  ASSERT_EQ(jumped.status, 200) << jumped.body.dump();
+  const double t1 = jumped.body["t_s"].get<double>();
+  lungs = class_lungs(c);
+  ASSERT_EQ(lungs.events.size(), 1u) << sim::describe(lungs);
+  EXPECT_EQ(lungs.events[0].add, "pneumothorax:right:30");
+  EXPECT_NEAR(lungs.events[0].at_s, t1, 1e-9);
+  EXPECT_NEAR(c.driver().pattern_at(t1 + 20.0).params.rate_bpm, 24.0, 1e-9);
+  EXPECT_EQ(nlohmann::json::parse(c.snapshot_json())["scenario"]["loaded"]["phase"], "paused");
+
+  // Resumed from there: the decompression follows once the class has settled, which waits for the start's turn
+  // to supine (still under way: everything here happens within a fraction of a second).
+  const console::ControlReply resumed = ask({{"action", "scenario_start"}});
+  ASSERT_EQ(resumed.status, 200) << resumed.body.dump();
+  EXPECT_NEAR(resumed.body["scenario_s"].get<double>(), 20.0, 1e-9);
+  lungs = class_lungs(c);
+  ASSERT_EQ(lungs.events.size(), 2u) << sim::describe(lungs);
+  EXPECT_EQ(lungs.events[1].remove, "pneumothorax:right:30");
+  EXPECT_NEAR(lungs.events[1].at_s, t0 + platform::sync::ClassControl::kSettleS, 1e-9);
+  EXPECT_EQ(ask({{"action", "scenario_load"}, {"name", "drill"}}).status, 409) << "stop it first";
+
+  // Stopped: the decompression not yet begun goes; the class keeps what it has.
+  ASSERT_EQ(ask({{"action", "scenario_stop"}}).status, 200);
+  lungs = class_lungs(c);
+  ASSERT_EQ(lungs.events.size(), 1u) << sim::describe(lungs);
+  EXPECT_EQ(lungs.events[0].add, "pneumothorax:right:30");
+  EXPECT_EQ(nlohmann::json::parse(c.snapshot_json())["scenario"]["loaded"]["phase"], "stopped");
+  EXPECT_EQ(ask({{"action", "scenario_jump"}, {"cue", 3}}).status, 400) << "three cues: 0 to 2";
+  const auto events = nlohmann::json::parse(c.snapshot_json())["events"];
+  EXPECT_EQ(events.back()["kind"], "scenario stop");
+  EXPECT_EQ(events.back()["user"], "instructor");
+}
+
 
 TEST(ClassControl, ASimulatedPatientTurnsToThePostureAskedAfterAnyTurnUnderWay) {
   // The scenario turns the patient to prone at 40 s (the class has been going for 1 s).

@@ -2,11 +2,15 @@
 /// @brief [console] -> the server on the class control.
 #include "platform/app/console_run.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
+#include "config/scenario_load.h"
+#include "platform/app/scenario_adapter.h"
 #include "platform/console/console_server.h"
 #include "platform/record/session_recorder.h"
 #include "platform/sync/class_control.h"
@@ -43,6 +47,54 @@ Result<std::string> console_keys_dir(const Settings& s) {
       "its certificate and logins; none given, and none beside sync.security");
 }
 
+namespace {
+
+/// The shipped scenarios: $LUNGAR_DATA_DIR/scenarios, <exe dir>/../share/lungar/scenarios (the Debian package), the
+/// source tree's config/scenarios; empty when none is there.
+std::filesystem::path shipped_scenarios() {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> places;
+  if (const char* d = std::getenv("LUNGAR_DATA_DIR"); d && *d) places.push_back(fs::path(d) / "scenarios");
+  std::error_code ec;
+  if (const fs::path exe = fs::read_symlink("/proc/self/exe", ec); !ec)
+    places.push_back(exe.parent_path() / ".." / "share" / "lungar" / "scenarios");
+  places.push_back(fs::path(LUNGAR_SOURCE_DIR) / "config" / "scenarios");
+  for (const fs::path& p : places)
+    if (fs::is_directory(p, ec)) return p.lexically_normal();
+  return {};
+}
+
+}  // namespace
+
+Result<std::vector<sync::ClassScenario>> console_scenarios(const Settings& s,
+                                                          const std::function<void(const std::string&)>& log) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!s.console.scenarios.empty() && !fs::is_directory(s.console.scenarios, ec))
+    return fail("console.scenarios: expected a folder of scenario TOML files; '" + s.console.scenarios +
+                "' is not one");
+  const fs::path dir = s.console.scenarios.empty() ? shipped_scenarios() : fs::path(s.console.scenarios);
+  std::vector<fs::path> files;
+  if (!dir.empty())
+    for (const auto& e : fs::directory_iterator(dir, ec))
+      if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<sync::ClassScenario> out;
+  for (const fs::path& f : files) {
+    auto made = [&]() -> Result<sync::ClassScenario> {
+      auto scenario = config::load_scenario(f.string(), s.breathing);
+      if (!scenario) return Error{scenario.error()};
+      auto script = make_breathing_script(*scenario);
+      if (!script) return Error{script.error()};
+      return sync::ClassScenario::create(*scenario, *script);
+    }();
+    if (made) out.push_back(made.take());
+    else if (log) log("console: scenario left out: " + made.error());
+  }
+  if (log) log("console: " + std::to_string(out.size()) + " scenarios from " + (dir.empty() ? "nowhere" : dir.string()));
+  return out;
+}
+
 Result<std::unique_ptr<console::ConsoleServer>> serve_console(const ListenAddress& listen, const std::string& keys_dir,
                                                               console::ConsoleHandler& handler,
                                                               std::function<void(const std::string&)> log) {
@@ -71,8 +123,11 @@ Result<std::unique_ptr<ConsoleRun>> ConsoleRun::start(const Settings& s, std::sh
   if (!listen) return listen.with_context("console.listen (--console): ");
   auto keys = console_keys_dir(s);
   if (!keys) return Error{keys.error()};
+  auto scenarios = console_scenarios(s, log);
+  if (!scenarios) return Error{scenarios.error()};
   std::unique_ptr<ConsoleRun> run(new ConsoleRun());
   run->control_ = std::move(control);
+  run->control_->scenarios = scenarios.take();
   if (recorder) {  // before the server starts: its thread makes the events
     run->recorder_ = std::move(recorder);
     run->control_->on_event = [r = run->recorder_](const sync::ClassEvent& e) {

@@ -26,6 +26,7 @@ namespace lungar::platform {
 
 namespace sync {
 class ClassControl;
+class ClassScenario;
 }
 namespace record {
 class SessionRecorder;
@@ -43,6 +44,11 @@ Result<ListenAddress> parse_listen(const std::string& text);
 /// The console's folder: [console] keys, else `console` beside [sync] security's station folder; an error when
 /// neither is there.
 Result<std::string> console_keys_dir(const Settings& s);
+
+/// The scenarios the console offers, from [console] scenarios (an error when that is not a folder) or the shipped
+/// ones. A file that does not load (or does not build) is one line in `log` and left out: the others are offered.
+Result<std::vector<sync::ClassScenario>> console_scenarios(const Settings& s,
+                                                          const std::function<void(const std::string&)>& log);
 
 /// The console server on `handler` at `listen` with the keys of `keys_dir` (DIR/console of `lungar
 /// classroom-keys`); `log` gets "console: URL (logins: DIR/logins)" once it listens, and the server's lines. Shared by

@@ -74,6 +74,9 @@ struct ConsoleSettings {
   /// The console's folder of `lungar classroom-keys` (its certificate and logins); empty: the folder `console`
   /// beside this station's [sync] security folder.
   std::string keys;
+  /// The folder of scenario TOML files the console may load and run on the class; empty: the shipped scenarios
+  /// ($LUNGAR_DATA_DIR/scenarios, <exe dir>/../share/lungar/scenarios, the source tree's config/scenarios).
+  std::string scenarios;
 };
 
 /// [trackers] behind a pointer, a value all the same: copied whole, never null (a move copies too; settings are

@@ -81,6 +81,7 @@ void read_console(TomlSection s, ConsoleSettings& c) {
   s.text("listen", c.listen);
   if (auto listen = parse_listen(c.listen); !c.listen.empty() && !listen) s.fail("listen", listen.error());
   s.text("keys", c.keys);
+  s.text("scenarios", c.scenarios);
   s.finish();
 }
 
@@ -122,6 +123,7 @@ void resolve_relative_paths(const toml::table& tree, Settings& s) {
   resolve("sync.cyclonedds_xml", s.sync.cyclonedds_xml);
   resolve("sync.security", s.sync.security);
   resolve("console.keys", s.console.keys);
+  resolve("console.scenarios", s.console.scenarios);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 // every 50 ms) until each shows it: within 0.5 s of the click. Then it resumes the breath, reads the page's DOM (the
 // stations, the pathology), checks the layout at 1280x800 and 800x1280, and logs in as an observer in a second
 // browser context: its controls are disabled and a control request from its JS is refused (403), changing nothing.
+// Last, from the page, the ventilation map on every display (within 0.5 s) and one of the station's scenarios
+// loaded and started (its supine start on both trainees within its 2 s of settling and 0.5 s).
 //
 //   node tests/browser/console_browser_test.mjs [--lungar PATH] [--chromium PATH] [--screenshot PNG]
 //                                                [--screenshot-portrait PNG] [--keep] [--timeout S]
@@ -28,6 +30,8 @@ const SPEC = 'pneumothorax:right:30';          // what the trainer adds
 const FORBIDDEN_SPEC = 'pneumothorax:left:30';  // what the observer tries to add
 const LIMIT_S = 0.5;                            // the most from a click to both trainees' stats JSON
 const TRAINEES = ['trainee-1', 'trainee-2'];
+const SCENARIO = 'tension pneumothorax';        // one of the shipped scenarios (config/scenarios/), supine from its start
+const SETTLE_S = 2.0;                           // a scenario's start brings the class to it over this (ClassControl)
 
 // ---- options ---------------------------------------------------------------------------------------------------
 
@@ -384,6 +388,25 @@ async function run(o, tmp, problems, results) {
   const refused = Number(await page.$eval('#refused', (e) => e.textContent));
   check(refused >= 2, `the page counts ${refused} refused requests, not the 2 made`);
 
+  // ---- the ventilation map on every display, then one of the station's scenarios run on the class
+  clicked = performance.now();
+  await page.click('#ventilation-on');
+  results.map = await secondsUntilEach(statsFiles, clicked, (s) => s.ventilation_map === true,
+    'the ventilation map shown from the page', 5, page);
+  await page.select('#scenario-choice', SCENARIO);
+  await page.click('#scenario-load');
+  await pageWaits(page, () => /ready/.test(document.getElementById('scenario-state').textContent),
+    async () => `the page does not show the scenario ready within 5 s (${await pageSays(page)})`, 5);
+  clicked = performance.now();
+  await page.click('#scenario-start');
+  // The scenario starts supine: the class turns over its 2 s of settling, and both trainees draw it.
+  results.scenario = await secondsUntilEach(statsFiles, clicked,
+    (s) => Array.isArray(s.gravity_lung_last) && s.gravity_lung_last[1] > 0.99,
+    `the scenario '${SCENARIO}' started from the page (its patient supine)`, 8, page);
+  await pageWaits(page, () => /running/.test(document.getElementById('scenario-state').textContent) &&
+      document.querySelectorAll('#scenario-cues li button').length > 0,
+    async () => `the page does not show the scenario running with its cues within 5 s (${await pageSays(page)})`, 5);
+
   // Everything the pages logged, except the two refusals provoked above (Chromium logs a 403 as a console error).
   const provoked = /^POST \/api\/control 403$|status of 403 \(Forbidden\)$/;
   const unexpected = problems.filter((p) => !provoked.test(p.text));
@@ -427,15 +450,18 @@ async function main() {
     const ms = (map, t) => (map && map.has(t) ? (map.get(t) * 1000).toFixed(0) + ' ms' : '–');
     if (results.added) {
       console.log(`${NAME}: click to stats JSON: ` + TRAINEES.map((t) =>
-        `${t} pathology ${ms(results.added, t)}, pause ${ms(results.paused, t)}, resume ${ms(results.resumed, t)}`).join('; ') +
+        `${t} pathology ${ms(results.added, t)}, pause ${ms(results.paused, t)}, resume ${ms(results.resumed, t)}, ` +
+        `ventilation map ${ms(results.map, t)}, scenario start (a 2 s turn) ${ms(results.scenario, t)}`).join('; ') +
         ` (limit ${LIMIT_S * 1000} ms)`);
     }
     if (!failure) {
       if (problems.length) console.log(`${NAME}: provoked on purpose and logged by the pages: ` + problems.map((p) => p.text).join(' | '));
       console.log(`${NAME}: ${results.chromium}; class in step ${results.classS.toFixed(1)} s after the start; screenshots ${results.screenshots.join(', ')}`);
       const slow = [];
-      for (const [what, map] of [['pathology', results.added], ['pause', results.paused]]) {
-        for (const t of TRAINEES) if (map.get(t) > LIMIT_S) slow.push(`${what} reached ${t} after ${ms(map, t)}`);
+      for (const [what, map, limit] of [['pathology', results.added, LIMIT_S], ['pause', results.paused, LIMIT_S],
+                                         ['the ventilation map', results.map, LIMIT_S],
+                                         ['the scenario\'s start', results.scenario, SETTLE_S + LIMIT_S]]) {
+        for (const t of TRAINEES) if (map.get(t) > limit) slow.push(`${what} reached ${t} after ${ms(map, t)}`);
       }
       if (slow.length) failure = `over ${LIMIT_S * 1000} ms from the click: ${slow.join(', ')}`;
     }

@@ -163,6 +163,7 @@ function render(s) {
   renderOrientation(s.orientation || {});
   renderPostureControl(s.posture || {});
   renderDisplay(s.display || {});
+  renderScenario(s.scenario || {});
   renderPathologies(s.pathologies || [], s.pathologies_changing || '');
   renderStations(s.stations || []);
   renderEvents(s.events || []);
@@ -412,6 +413,54 @@ function renderPostureControl(p) {
       'A tracker measures the patient: turn the patient (or the mannequin) itself.' : '';
 }
 
+// The station's scenarios, the one loaded, where it stands, and a Jump button per cue.
+function renderScenario(sc) {
+  const available = Array.isArray(sc.available) ? sc.available : [];
+  const choice = $('scenario-choice');
+  const names = available.map((a) => a.name).join('\n');
+  if (choice.dataset.names !== names) {
+    choice.dataset.names = names;
+    choice.replaceChildren(...available.map((a) => {
+      const o = document.createElement('option');
+      o.value = a.name;
+      o.textContent = a.name + ' (' + num(a.duration_s, 0) + ' s)';
+      o.title = a.description || '';
+      return o;
+    }));
+  }
+  const loaded = sc.loaded;
+  const chosen = available.find((a) => a.name === choice.value);
+  $('scenario-description').textContent = chosen ? chosen.description || '' : 'No scenario on this station.';
+  $('scenario-state').textContent = loaded ?
+      '— ' + loaded.name + ', ' + loaded.phase + ' at ' + num(loaded.t_s, 1) + ' of ' + num(loaded.duration_s, 0) + ' s' :
+      '';
+  const running = loaded && loaded.phase === 'running';
+  const off = readOnly();
+  $('scenario-load').disabled = off || !available.length || running || (loaded && loaded.phase === 'paused');
+  $('scenario-start').disabled = off || !loaded || running || loaded.phase === 'ended';
+  $('scenario-pause').disabled = off || !running;
+  $('scenario-stop').disabled = off || !loaded || !(running || loaded.phase === 'paused' || loaded.phase === 'ended');
+  const cues = loaded && Array.isArray(loaded.cues) ? loaded.cues : [];
+  const list = $('scenario-cues');
+  const key = loaded ? loaded.name + ':' + cues.length : '';
+  if (list.dataset.key !== key) {
+    list.dataset.key = key;
+    list.replaceChildren(...cues.map((c, i) => {
+      const li = document.createElement('li');
+      const text = document.createElement('span');
+      text.textContent = num(c.t_s, 1) + ' s · ' + c.kind + (c.text ? ': ' + c.text : '');
+      li.append(text, button('Jump', 'scenario-jump-' + i, () => control({action: 'scenario_jump', cue: i})));
+      return li;
+    }));
+  }
+  cues.forEach((c, i) => {
+    const li = list.children[i];
+    if (!li) return;
+    li.classList.toggle('done', !!loaded && c.t_s < loaded.t_s);
+    li.querySelector('button').disabled = off;
+  });
+}
+
 function renderDisplay(d) {
   const map = d.ventilation_map;
   $('ventilation-state').textContent = map === true ? 'shown' : map === false ? 'hidden' : "each station's own";
@@ -509,6 +558,11 @@ function setUp() {
     const over = parseFloat($('posture-over').value);
     control({action: 'posture_set', posture: $('posture-choice').value, over_s: isFinite(over) ? over : 0});
   });
+  $('scenario-choice').addEventListener('change', () => renderScenario(lastSnapshot ? lastSnapshot.scenario || {} : {}));
+  $('scenario-load').addEventListener('click', () => control({action: 'scenario_load', name: $('scenario-choice').value}));
+  $('scenario-start').addEventListener('click', () => control({action: 'scenario_start'}));
+  $('scenario-pause').addEventListener('click', () => control({action: 'scenario_pause'}));
+  $('scenario-stop').addEventListener('click', () => control({action: 'scenario_stop'}));
   $('ventilation-on').addEventListener('click', () => control({action: 'display_set', ventilation_map: true}));
   $('ventilation-off').addEventListener('click', () => control({action: 'display_set', ventilation_map: false}));
   $('marker-add').addEventListener('click', async () => {

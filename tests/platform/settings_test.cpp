@@ -1,6 +1,8 @@
 // Tests of config/: the shipped profile, the overlay on defaults, and one specific error per kind of bad input.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <array>
@@ -10,6 +12,7 @@
 #include "config/scenario_load.h"
 #include "drivers/tracker/tracker_config.h"
 #include "platform/app/console_run.h"
+#include "platform/sync/class_scenario.h"
 #include "platform/app/settings_load.h"
 
 using lungar::platform::load_settings;
@@ -165,6 +168,41 @@ TEST(Settings, TheConsolesAddressIsReadAndABadOneNamesTheFileTheFieldAndTheForm)
   EXPECT_EQ(port->address, "::1");
   EXPECT_EQ(port->port, 8443);
   EXPECT_EQ(lungar::platform::parse_listen("8443")->address, "0.0.0.0") << "every interface: the classroom's network";
+}
+
+// The console's scenarios: the shipped ones by default; from [console] scenarios a folder of the site's own, where
+// a file that does not load is one line and left out, and a folder that is not there is one error.
+TEST(Settings, TheConsolesScenariosAreTheShippedOnesOrAFolderOfTheSitesOwn) {
+  std::vector<std::string> lines;
+  const auto log = [&](const std::string& line) { lines.push_back(line); };
+  auto shipped = lungar::platform::console_scenarios(Settings{}, log);
+  ASSERT_TRUE(shipped) << shipped.error();
+  std::vector<std::string> names;
+  for (const auto& c : *shipped) names.push_back(c.name());
+  EXPECT_NE(std::find(names.begin(), names.end(), "tension pneumothorax"), names.end()) << ::testing::PrintToString(names);
+
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("lungar_scenarios_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "drill.toml") << "name = \"drill\"\nduration_s = 20.0\n[[event]]\nat_s = 5.0\nkind = \"sigh\"\n";
+  std::ofstream(dir / "broken.toml") << "name = \"broken\"\n[[event]]\nat_s = 5.0\nkind = \"dance\"\n";
+  std::ofstream(dir / "notes.txt") << "not a scenario\n";
+  auto r = load_settings_from_string("[console]\nscenarios = \"" + dir.string() + "\"\n", "x.toml");
+  ASSERT_TRUE(r) << r.error();
+  lines.clear();
+  auto own = lungar::platform::console_scenarios(*r, log);
+  ASSERT_TRUE(own) << own.error();
+  ASSERT_EQ(own->size(), 1u);
+  EXPECT_EQ(own->front().name(), "drill");
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.front().rfind("console: scenario left out: " + (dir / "broken.toml").string() + ":", 0), 0u)
+      << lines.front();
+  r->console.scenarios = (dir / "missing").string();
+  auto missing = lungar::platform::console_scenarios(*r, log);
+  ASSERT_FALSE(missing);
+  EXPECT_EQ(missing.error(), "console.scenarios: expected a folder of scenario TOML files; '" +
+                                 (dir / "missing").string() + "' is not one");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Settings, OpenXrOutputAndItsHead) {

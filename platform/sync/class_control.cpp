@@ -489,7 +489,13 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
     run.phase = running ? "running" : run.phase;
     char text[200];
     std::snprintf(text, sizeof text, "%s from %.1f s", name.c_str(), at_s);
-    note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name, text});
+    // What the scenario cannot change here, said where the trainer reads it.
+    std::string left_out;
+    if (!start_.posture) left_out += "its turns (a tracker measures the patient)";
+    if (!start_.followed.empty())
+      left_out += (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
+    note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name,
+          text + (left_out.empty() ? "" : "; left out: " + left_out)});
     return {200, {{"t_s", t}, {"scenario_s", at_s}}};
   }
   if (action == "scenario_pause" || action == "scenario_stop") {

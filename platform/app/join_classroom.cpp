@@ -61,7 +61,8 @@ Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_ske
         return can_draw(healthy, drawn, t);
       };
       parts.listeners.push_back(joined.control);
-      if (followed.empty()) parts.breathing = joined.control->breathing_clock();
+      parts.breathing = followed.empty() ? joined.control->breathing_clock()
+                                         : joined.control->over_followed(std::move(parts.breathing));
       if (!lungs.healthy || !lungs.drawn) return fail("console: the instructor needs its loaded lungs to change them");
       parts.course = std::make_shared<ClassroomCourse>(parts.course, joined.control, lungs, log);
     }

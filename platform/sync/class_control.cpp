@@ -11,6 +11,7 @@
 #include "config/base/clock.h"
 #include "config/base/patient_names.h"
 #include "drivers/classroom/shared_breathing.h"
+#include "sim/breathing/breath_follower.h"
 #include "sim/breathing/orientation.h"
 #include "sim/breathing/pv_curve.h"
 #include "sim/pathology/pathology.h"
@@ -35,6 +36,47 @@ class LiveBreathing final : public breath::BreathingClock {
 
  private:
   std::shared_ptr<const ClassControl> control_;
+};
+
+/// A followed breath the console may take over with the model's and give back (ClassControl::over_followed).
+class OverFollowedBreathing final : public breath::BreathingClock {
+ public:
+  OverFollowedBreathing(std::unique_ptr<breath::BreathingClock> followed, std::shared_ptr<const ClassControl> control)
+      : followed_(std::move(followed)), control_(std::move(control)) {}
+  sim::BreathingSample at(std::int64_t now_ns) const override {
+    const bool model = control_->breath_taken_over();
+    sim::BreathingSample s =
+        model ? control_->driver().at(seconds_between(control_->t0_ns(), now_ns)) : followed_->at(now_ns);
+    // At a switch, the jump dV would make is carried as an offset that goes to zero at the handover rate.
+    if (last_ns_ != 0 && model != model_) {
+      offset_ml_ = last_dv_ml_ - s.dv_ml;
+    } else if (last_ns_ != 0) {
+      const double step = sim::kHandoverMlPerS * std::max(0.0, seconds_between(last_ns_, now_ns));
+      offset_ml_ = offset_ml_ > 0 ? std::max(0.0, offset_ml_ - step) : std::min(0.0, offset_ml_ + step);
+    }
+    model_ = model;
+    s.dv_ml += offset_ml_;
+    s.v_ml += offset_ml_;
+    last_dv_ml_ = s.dv_ml;
+    last_ns_ = now_ns;
+    return s;
+  }
+  const sim::Pattern* pattern_at(std::int64_t now_ns) const override {
+    return control_->breath_taken_over() ? &control_->driver().pattern_at(seconds_between(control_->t0_ns(), now_ns))
+                                         : followed_->pattern_at(now_ns);
+  }
+  void add_stats(nlohmann::json& stats) const override {
+    followed_->add_stats(stats);
+    stats["breath_taken_over"] = control_->breath_taken_over();
+  }
+
+ private:
+  std::unique_ptr<breath::BreathingClock> followed_;
+  std::shared_ptr<const ClassControl> control_;
+  // The frame's thread only.
+  mutable bool model_ = false;
+  mutable double offset_ml_ = 0, last_dv_ml_ = 0;
+  mutable std::int64_t last_ns_ = 0;
 };
 
 console::ControlReply refuse(int status, const std::string& line) { return {status, {{"error", line}}}; }
@@ -116,6 +158,11 @@ std::unique_ptr<breath::BreathingClock> ClassControl::breathing_clock() const {
   return std::make_unique<LiveBreathing>(shared_from_this());
 }
 
+std::unique_ptr<breath::BreathingClock> ClassControl::over_followed(
+    std::unique_ptr<breath::BreathingClock> followed) const {
+  return std::make_unique<OverFollowedBreathing>(std::move(followed), shared_from_this());
+}
+
 double ClassControl::now_s() const { return seconds_between(start_.t0_ns, monotonic_ns()); }
 
 void ClassControl::on_frame(const FrameState& s) {
@@ -162,7 +209,7 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
     return {200, {{"t_s", t}}};
   }
   return refuse(400,
-                "action: expected one of breath_pause, breath_resume, breath_set, pathology_add, "
+                "action: expected one of breath_pause, breath_resume, breath_set, breath_follow, pathology_add, "
                 "pathology_remove, pathology_severity, posture_set, display_set, scenario_load, scenario_start, "
                 "scenario_pause, scenario_jump, scenario_stop, marker; not '" +
                     action + "'");
@@ -170,9 +217,15 @@ console::ControlReply ClassControl::control(const console::ConsoleUser& user, co
 
 console::ControlReply ClassControl::breath_request(const console::ConsoleUser& user, const std::string& action,
                                                    const nlohmann::json& request) {
-  if (!start_.followed.empty())
-    return refuse(409, action + ": the breath is the patient's own, followed from " + start_.followed +
-                           "; the console changes a modelled breath only");
+  if (action == "breath_follow") {
+    if (start_.followed.empty())
+      return refuse(409, "breath_follow: the class breathes the model; it follows no patient's own breath");
+    if (!breath_taken_over()) return refuse(409, "breath_follow: the class follows " + start_.followed + " already");
+    taken_over_.store(false, std::memory_order_release);
+    station_->instructor()->set_followed(true);
+    note({now_s(), "breath follow", user.name, "back to " + start_.followed});
+    return {200, {{"t_s", now_s()}}};
+  }
   const double t = now_s() + kLeadS;
   sim::Event event;
   std::string text;
@@ -206,12 +259,19 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
     text = line;
     if (ie) text += " I:E " + std::to_string(*ie).substr(0, 4);
   } else {
-    return refuse(400, "action: expected breath_pause, breath_resume or breath_set; not '" + action + "'");
+    return refuse(400, "action: expected breath_pause, breath_resume, breath_set or breath_follow; not '" + action + "'");
   }
   ClassSteps manual = manual_;
   manual.breath.push_back(event);
   if (Status s = commit(manual, scenario_.issued); !s) return refuse(400, action + ": " + s.error());
   manual_ = std::move(manual);
+  // A followed breath: the console's model takes it over, on this station and (its heartbeats no longer carrying
+  // the followed dV) on every trainee, until breath_follow gives it back.
+  if (!modelled()) {
+    taken_over_.store(true, std::memory_order_release);
+    station_->instructor()->set_followed(false);
+    text += "; the console's breath in place of " + start_.followed;
+  }
   if (action != "breath_set") paused_ = action == "breath_pause";
   note({t,
         action == "breath_pause"    ? "breath pause"
@@ -400,7 +460,7 @@ ClassSteps ClassControl::scenario_steps(double at_s, double t_s, bool running, d
   const ScenarioState target = sc.state_before(at_s);
   ClassSteps steps;
   // The breath: one change to every parameter the scenario has by then (a followed breath is the patient's own).
-  if (start_.followed.empty()) {
+  if (modelled()) {
     sim::PatternChange c;
     c.preset = target.params.preset;
     c.rate_bpm = target.params.rate_bpm;
@@ -429,7 +489,7 @@ ClassSteps ClassControl::scenario_steps(double at_s, double t_s, bool running, d
   offset_s = settle_at + kSettleS - at_s;
   if (!running) return steps;
   ClassSteps after = sc.steps_from(at_s, offset_s);
-  if (!start_.followed.empty()) after.breath.clear();
+  if (!modelled()) after.breath.clear();
   if (!start_.posture) after.turns.clear();
   steps.breath.insert(steps.breath.end(), after.breath.begin(), after.breath.end());
   steps.lungs.insert(steps.lungs.end(), after.lungs.begin(), after.lungs.end());
@@ -492,7 +552,7 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
     // What the scenario cannot change here, said where the trainer reads it.
     std::string left_out;
     if (!start_.posture) left_out += "its turns (a tracker measures the patient)";
-    if (!start_.followed.empty())
+    if (!modelled())
       left_out += (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
     note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name,
           text + (left_out.empty() ? "" : "; left out: " + left_out)});
@@ -587,7 +647,11 @@ std::string ClassControl::snapshot_json() {
   j["breath"] = {{"state", pattern.held     ? "paused"
                            : pattern.apnoea ? "apnoea"
                                             : "breathing"},
-                 {"source", start_.followed.empty() ? "model" : start_.followed},
+                 {"source", start_.followed.empty() ? "model"
+                            : breath_taken_over()   ? "model, in place of " + start_.followed
+                                                    : start_.followed},
+                 {"followed", start_.followed},
+                 {"taken_over", breath_taken_over()},
                  {"preset", std::string(sim::to_string(pattern.params.preset))},
                  {"rate_bpm", pattern.params.rate_bpm},
                  {"tidal_volume_ml", pattern.params.tidal_volume_ml},

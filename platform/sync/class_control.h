@@ -88,9 +88,14 @@ class ClassControl final : public console::ConsoleHandler,
                                                       std::shared_ptr<classroom::ClassroomStation> station,
                                                       std::function<void(const std::string&)> log);
 
-  /// The instructor's own breathing clock, which follows every change the console makes (the model's; a followed
-  /// breath stays the source's own).
+  /// The instructor's own breathing clock, which follows every change the console makes (the model's).
   std::unique_ptr<breath::BreathingClock> breathing_clock() const;
+  /// The instructor's breathing when it follows the patient's own (`followed`: a trace, a chest marker): the
+  /// followed breath, until the console takes it over with the model's (any breath request), and again once the
+  /// console gives it back (breath_follow); each switch goes over at sim::kHandoverMlPerS.
+  std::unique_ptr<breath::BreathingClock> over_followed(std::unique_ptr<breath::BreathingClock> followed) const;
+  /// Whether the console has taken a followed breath over (frame and console threads).
+  bool breath_taken_over() const { return taken_over_.load(std::memory_order_acquire); }
 
   /// Whether this station can draw a timeline (ClassroomCourse builds it from the loaded lungs; a consolidation
   /// changes the lungs' response, which only the loaded asset has); set before the console starts. Unset: any
@@ -162,6 +167,8 @@ class ClassControl final : public console::ConsoleHandler,
   /// change, the pathologies' differences, a turn), then its steps from `at_s` on when `running`: the steps to
   /// add, and the scenario's offset (class time = scenario time + offset).
   ClassSteps scenario_steps(double at_s, double t_s, bool running, double& offset_s) const;
+  /// Whether the class breathes the model now: none followed, or the console took the followed breath over.
+  bool modelled() const { return start_.followed.empty() || breath_taken_over(); }
   /// The scenario's steps that have begun by class time t_s (those after it are dropped when it pauses, jumps or
   /// stops).
   ClassSteps begun_by(double t_s) const;
@@ -179,6 +186,7 @@ class ClassControl final : public console::ConsoleHandler,
   std::vector<std::unique_ptr<const sim::BreathingDriver>> drivers_;  ///< console thread; every driver installed
   std::atomic<const sim::BreathingDriver*> driver_{nullptr};
   bool paused_ = false;  ///< console thread: a breath hold the console started is in force
+  std::atomic<bool> taken_over_{false};  ///< the console's model breath in place of the followed one
 
   /// Console thread: the console's own steps (requests), and the scenario's, which it drops from when it pauses,
   /// jumps or stops. The class is the start, these, and nothing else.

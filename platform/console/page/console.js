@@ -182,6 +182,13 @@ function renderBreath(b) {
   }
   const preset = $('breath-preset');
   if (document.activeElement !== preset && !preset.dataset.edited && b.preset) preset.value = b.preset;
+  // A breath followed from the patient (a trace, a chest marker): the console's changes take it over with the
+  // model's until it is given back.
+  $('breath-follow').hidden = !b.followed;
+  $('breath-follow').disabled = readOnly() || !b.taken_over;
+  $('breath-help').textContent = !b.followed ? '' : b.taken_over ?
+      'The console\'s breath is in place of ' + b.followed + ' on every station.' :
+      'The breath follows ' + b.followed + '; a change here takes it over with the model\'s.';
 }
 
 function renderSamples(list) {
@@ -544,6 +551,7 @@ function setUp() {
   $('breath-pause').addEventListener('click', () => control({action: 'breath_pause'}));
   $('breath-resume').addEventListener('click', () => control({action: 'breath_resume'}));
   $('breath-apply').addEventListener('click', breathSet);
+  $('breath-follow').addEventListener('click', () => control({action: 'breath_follow'}));
   for (const id of ['breath-preset', 'breath-rate', 'breath-tidal', 'breath-ie'])
     $(id).addEventListener('input', () => {
       $(id).dataset.edited = '1';

@@ -172,17 +172,58 @@ TEST(ClassControl, RequestsThatCannotBeMetAreRefusedWithOneLineAndChangeNothing)
   EXPECT_FALSE(room.control->lungs_since(version, lungs)) << "the lungs never changed";
 }
 
-TEST(ClassControl, AFollowedBreathIsNotTheConsolesToChange) {
+/// A followed breath for the test: a steady 300 mL, as a trace held at one level would give.
+class SteadyFollowed final : public breath::BreathingClock {
+ public:
+  sim::BreathingSample at(std::int64_t now_ns) const override {
+    sim::BreathingSample s;
+    s.t_s = seconds_between(0, now_ns);
+    s.dv_ml = s.v_ml = 300.0;
+    return s;
+  }
+};
+
+TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJump) {
   ControlledRoom room("followed", {}, "trace");
-  const console::ControlReply r = room.control->control(kTeacher, {{"action", "breath_pause"}});
-  EXPECT_EQ(r.status, 409);
-  EXPECT_NE(r.body["error"].get<std::string>().find("followed from trace"), std::string::npos) << r.body.dump();
-  EXPECT_EQ(room.control->control(kTeacher, {{"action", "marker"}, {"text", "apex palpated"}}).status, 200);
-  // Nor is a tracked patient's posture: there is a real patient (or mannequin) there to turn.
-  const console::ControlReply turned = room.control->control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}});
+  platform::sync::ClassControl& c = *room.control;
+  EXPECT_EQ(c.control(kTeacher, {{"action", "breath_follow"}}).status, 409) << "it follows the trace already";
+  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>());
+  // The instructor's breath in 10 ms steps for `seconds` on from the last: the largest step, and the last dV.
+  std::int64_t now = monotonic_ns();
+  const auto run = [&](double seconds, double& last_ml) {
+    double largest = 0, before = last_ml;
+    for (int i = 0; i < seconds * 100; ++i) {
+      now += 10'000'000;
+      last_ml = breathing->at(now).dv_ml;
+      largest = std::max(largest, std::abs(last_ml - before));
+      before = last_ml;
+    }
+    return largest;
+  };
+  double last = breathing->at(now).dv_ml;
+  run(0.5, last);
+  EXPECT_DOUBLE_EQ(last, 300.0) << "the followed breath";
+
+  const console::ControlReply paused = c.control(kTeacher, {{"action", "breath_pause"}});
+  ASSERT_EQ(paused.status, 200) << paused.body.dump();
+  EXPECT_TRUE(c.breath_taken_over());
+  auto view = nlohmann::json::parse(c.snapshot_json())["breath"];
+  EXPECT_EQ(view["source"], "model, in place of trace");
+  EXPECT_EQ(view["taken_over"], true);
+  EXPECT_LE(run(3.0, last), 5.0 + 1e-9) << "over to the model's held breath at the handover rate (500 mL/s)";
+  const double held = c.driver().at(seconds_between(c.t0_ns(), now)).dv_ml;
+  EXPECT_NEAR(last, held, 1e-6) << "then the model's own";
+
+  ASSERT_EQ(c.control(kTeacher, {{"action", "breath_follow"}}).status, 200);
+  EXPECT_FALSE(c.breath_taken_over());
+  EXPECT_LE(run(3.0, last), 5.0 + 1e-9) << "back to the trace at the handover rate";
+  EXPECT_DOUBLE_EQ(last, 300.0);
+  EXPECT_EQ(nlohmann::json::parse(c.snapshot_json())["events"].back()["kind"], "breath follow");
+  // A tracked patient's posture is not the console's: there is a real patient (or mannequin) there to turn.
+  const console::ControlReply turned = c.control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}});
   EXPECT_EQ(turned.status, 409);
   EXPECT_NE(turned.body["error"].get<std::string>().find("a tracker measures"), std::string::npos) << turned.body.dump();
-  EXPECT_FALSE(nlohmann::json::parse(room.control->snapshot_json())["posture"]["simulated"].get<bool>());
+  EXPECT_FALSE(nlohmann::json::parse(c.snapshot_json())["posture"]["simulated"].get<bool>());
 }
 
 TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDisplay) {

@@ -226,6 +226,37 @@ TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJum
   EXPECT_FALSE(nlohmann::json::parse(c.snapshot_json())["posture"]["simulated"].get<bool>());
 }
 
+// The trainee's side of a take-over: the instructor's frames (run here, 100 a second) send the followed dV in their
+// heartbeats; once the console takes the breath over they no longer do, and the trainee goes over to the shared
+// model, which holds the breath as the console asked.
+TEST(ClassControl, ATraineeGoesOverToTheConsolesBreathWhenItTakesTheFollowedOneOver) {
+  ControlledRoom room("takeover", {}, "trace");
+  platform::sync::ClassControl& c = *room.control;
+  classroom::Instructor& instructor = *room.teacher->instructor();
+  instructor.share_followed_breath();
+  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>());
+  sim::BreathingSample seen;
+  // Frames for `seconds`: the instructor draws and shares; `ok` of the trainee's breath ends them early.
+  const auto frames = [&](double seconds, auto ok) {
+    for (int i = 0; i < seconds * 100; ++i) {
+      const std::int64_t now = monotonic_ns();
+      instructor.frame_breath(now, breathing->at(now));
+      if (room.trainee_breath(seen) && ok(seen)) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  };
+  ASSERT_TRUE(frames(10.0, [](const sim::BreathingSample& s) { return std::abs(s.dv_ml - 300.0) < 1.0; }))
+      << "the trainee draws the followed 300 mL; it draws " << seen.dv_ml;
+  ASSERT_EQ(c.control(kTeacher, {{"action", "breath_pause"}}).status, 200);
+  ASSERT_TRUE(frames(10.0, [](const sim::BreathingSample& s) { return s.phase == sim::BreathPhase::Hold; }));
+  const std::int64_t held_at = monotonic_ns();
+  ASSERT_TRUE(frames(5.0, [&](const sim::BreathingSample& s) {
+    return std::abs(s.dv_ml - c.driver().at(seconds_between(c.t0_ns(), monotonic_ns())).dv_ml) < 1.0;
+  })) << "the trainee's breath is the console's held one; it draws " << seen.dv_ml;
+  EXPECT_LT(seconds_between(held_at, monotonic_ns()), 3.0);
+}
+
 TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDisplay) {
   ControlledRoom room("display");
   std::uint64_t trainee_version = 0, own_version = 0;

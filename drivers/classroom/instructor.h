@@ -60,10 +60,6 @@ class Instructor {
   /// The breath is the patient's own, followed (a trace, a chest marker, a mannequin): no trainee can compute it
   /// from the shared parameters, so each frame's dV goes out in a heartbeat of its own. Call before the frames.
   void share_followed_breath() { followed_.store(true); }
-  /// The instructor's console took the followed breath over with the model's (false), or gave it back (true):
-  /// heartbeats stop or start carrying the followed dV, and each trainee goes over to the shared model (once its
-  /// last point is stale) or back, at the follower's handover rate (FollowedBreathShare). Any thread.
-  void set_followed(bool followed) { followed_.store(followed); }
   /// From the frame: its breathing time at frame_mono_ns, which the heartbeat carries, and its dV when the breath
   /// is followed. Allocates nothing.
   void frame_breath(std::int64_t frame_mono_ns, const sim::BreathingSample& breath);

@@ -222,7 +222,6 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
       return refuse(409, "breath_follow: the class breathes the model; it follows no patient's own breath");
     if (!breath_taken_over()) return refuse(409, "breath_follow: the class follows " + start_.followed + " already");
     taken_over_.store(false, std::memory_order_release);
-    station_->instructor()->set_followed(true);
     note({now_s(), "breath follow", user.name, "back to " + start_.followed});
     return {200, {{"t_s", now_s()}}};
   }
@@ -265,11 +264,10 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
   manual.breath.push_back(event);
   if (Status s = commit(manual, scenario_.issued); !s) return refuse(400, action + ": " + s.error());
   manual_ = std::move(manual);
-  // A followed breath: the console's model takes it over, on this station and (its heartbeats no longer carrying
-  // the followed dV) on every trainee, until breath_follow gives it back.
+  // A followed breath: the console's model takes it over on this station until breath_follow gives it back. The
+  // trainees draw what the instructor draws (its heartbeats carry each frame's dV), handover included.
   if (!modelled()) {
     taken_over_.store(true, std::memory_order_release);
-    station_->instructor()->set_followed(false);
     text += "; the console's breath in place of " + start_.followed;
   }
   if (action != "breath_set") paused_ = action == "breath_pause";

@@ -172,22 +172,27 @@ TEST(ClassControl, RequestsThatCannotBeMetAreRefusedWithOneLineAndChangeNothing)
   EXPECT_FALSE(room.control->lungs_since(version, lungs)) << "the lungs never changed";
 }
 
-/// A followed breath for the test: a steady 300 mL, as a trace held at one level would give.
+/// A followed breath for the test: a steady 300 mL, as a trace held at one level would give, on the breathing time
+/// of a class started at t0_ns.
 class SteadyFollowed final : public breath::BreathingClock {
  public:
+  explicit SteadyFollowed(std::int64_t t0_ns) : t0_ns_(t0_ns) {}
   sim::BreathingSample at(std::int64_t now_ns) const override {
     sim::BreathingSample s;
-    s.t_s = seconds_between(0, now_ns);
+    s.t_s = seconds_between(t0_ns_, now_ns);
     s.dv_ml = s.v_ml = 300.0;
     return s;
   }
+
+ private:
+  std::int64_t t0_ns_;
 };
 
 TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJump) {
   ControlledRoom room("followed", {}, "trace");
   platform::sync::ClassControl& c = *room.control;
   EXPECT_EQ(c.control(kTeacher, {{"action", "breath_follow"}}).status, 409) << "it follows the trace already";
-  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>());
+  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
   // The instructor's breath in 10 ms steps for `seconds` on from the last: the largest step, and the last dV.
   std::int64_t now = monotonic_ns();
   const auto run = [&](double seconds, double& last_ml) {
@@ -226,22 +231,23 @@ TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJum
   EXPECT_FALSE(nlohmann::json::parse(c.snapshot_json())["posture"]["simulated"].get<bool>());
 }
 
-// The trainee's side of a take-over: the instructor's frames (run here, 100 a second) send the followed dV in their
-// heartbeats; once the console takes the breath over they no longer do, and the trainee goes over to the shared
-// model, which holds the breath as the console asked.
+// The trainee's side of a take-over: the instructor's frames (run here, 100 a second) send the dV they draw in their
+// heartbeats, the followed breath's and then the console's held one, which the trainee draws too.
 TEST(ClassControl, ATraineeGoesOverToTheConsolesBreathWhenItTakesTheFollowedOneOver) {
   ControlledRoom room("takeover", {}, "trace");
   platform::sync::ClassControl& c = *room.control;
   classroom::Instructor& instructor = *room.teacher->instructor();
   instructor.share_followed_breath();
-  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>());
+  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
   sim::BreathingSample seen;
-  // Frames for `seconds`: the instructor draws and shares; `ok` of the trainee's breath ends them early.
+  // Frames for `seconds`: the instructor draws and shares; `ok` of the trainee's breath in 30 frames running (0.3 s)
+  // ends them early.
   const auto frames = [&](double seconds, auto ok) {
-    for (int i = 0; i < seconds * 100; ++i) {
+    for (int i = 0, running = 0; i < seconds * 100; ++i) {
       const std::int64_t now = monotonic_ns();
       instructor.frame_breath(now, breathing->at(now));
-      if (room.trainee_breath(seen) && ok(seen)) return true;
+      running = room.trainee_breath(seen) && ok(seen) ? running + 1 : 0;
+      if (running == 30) return true;
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     return false;

@@ -178,6 +178,11 @@ double BreathFollower::baseline() const {
   return std::clamp(med, w - kLevelBelow * amplitude(), w);
 }
 
+double BreathFollower::depth_ml() const {
+  if (amplitudes_.count == 0) return 0.0;
+  return p_.in_ml ? amplitude() : p_.tidal_volume_ml;
+}
+
 double BreathFollower::max_ml() const { return p_.max_ml > 0 ? p_.max_ml : 3.0 * p_.tidal_volume_ml; }
 
 double BreathFollower::bounded(double raw_ml) const {

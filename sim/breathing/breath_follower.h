@@ -122,6 +122,10 @@ class BreathFollower {
   long bounded_samples() const { return bounded_; }
   /// The highest dV the bound allows, mL.
   double max_ml() const;
+  /// The followed breath's depth in dV, mL: the median of the last breaths' depths times the scale (a volume
+  /// source's own depth; a surrogate's is V_T by construction); 0 before the first breath. Sample by sample, so no
+  /// frame rate changes it.
+  double depth_ml() const;
 
  private:
   struct Turn {

@@ -69,6 +69,7 @@ void FollowedBreathing::add_stats(nlohmann::json& stats) const {
   stats["breath_irregular"] = followers_.breath.irregular_breaths();
   stats["breath_bounded_samples"] = followers_.breath.bounded_samples();
   stats["breath_max_ml"] = followers_.breath.max_ml();
+  stats["breath_depth_ml"] = followers_.breath.depth_ml();
 }
 
 }  // namespace lungar::breath

@@ -113,7 +113,7 @@ TEST(PhysiologyOverDds, AnAmmMannequinOnFastDdsMovesEachLungByItsOwnVolume) {
   EXPECT_GT(r.stats["breath_dds_samples"].get<long>(), 1000);
   EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl,
               0.1 * kTidalMl)
-      << r.log;
+      << r.stats.dump() << r.log;
   // Each lung by its own volume: a quarter and three quarters of the breath, where the posture's shares would
   // give each about half.
   double left = 0, right = 0;
@@ -129,9 +129,15 @@ TEST(PhysiologyOverDds, AnOpenIceVentilatorOnFastDdsMovesTheLungsThroughCyclone)
   ASSERT_TRUE(r.stats.is_object()) << r.log;
   EXPECT_EQ(r.stats["breath_source"], "openice:volume");
   expect_followed(r);
+  // The follower takes the ventilator's 1200 mL as they are (a volume: no scale), sample by sample.
+  EXPECT_NEAR(r.stats["breath_depth_ml"].get<double>(), kTidalMl, 0.05 * kTidalMl) << r.stats.dump();
+  // The frames show most of it. Each frame samples dV where it falls in the breath; under the sanitizers, with
+  // other tests' stations on the same two cores, the frames' range was 982 mL twice (CI, and a run here) while
+  // every sample was taken: frames too far apart to land on the peaks, as far as the logs tell. The breath's own
+  // depth above is the exact check.
   EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl,
-              0.1 * kTidalMl)
-      << r.log;
+              0.25 * kTidalMl)
+      << r.stats.dump() << r.log;
   expect_dropped(r, {"not_finite", "negative_volume", "unit", "rate"});
 }
 

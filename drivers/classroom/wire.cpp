@@ -245,9 +245,12 @@ Status to_wire(const sim::PathologyTimeline& timeline, std::vector<lungar_sync_P
 
 Result<std::optional<bool>> ventilation_map_from_wire(const lungar_sync_ScenarioEvents& s) {
   switch (s.ventilation_map) {
-    case 0: return std::optional<bool>();
-    case 1: return std::optional<bool>(false);
-    case 2: return std::optional<bool>(true);
+    case 0:
+      return std::optional<bool>();
+    case 1:
+      return std::optional<bool>(false);
+    case 2:
+      return std::optional<bool>(true);
     default:
       return fail("lungar_scenario_events: ventilation_map: expected 0 (each station's own), 1 (off) or 2 (on), got " +
                   std::to_string(s.ventilation_map));

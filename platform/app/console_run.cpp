@@ -67,7 +67,7 @@ std::filesystem::path shipped_scenarios() {
 }  // namespace
 
 Result<std::vector<sync::ClassScenario>> console_scenarios(const Settings& s,
-                                                          const std::function<void(const std::string&)>& log) {
+                                                           const std::function<void(const std::string&)>& log) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!s.console.scenarios.empty() && !fs::is_directory(s.console.scenarios, ec))
@@ -88,10 +88,13 @@ Result<std::vector<sync::ClassScenario>> console_scenarios(const Settings& s,
       if (!script) return Error{script.error()};
       return sync::ClassScenario::create(*scenario, *script);
     }();
-    if (made) out.push_back(made.take());
-    else if (log) log("console: scenario left out: " + made.error());
+    if (made)
+      out.push_back(made.take());
+    else if (log)
+      log("console: scenario left out: " + made.error());
   }
-  if (log) log("console: " + std::to_string(out.size()) + " scenarios from " + (dir.empty() ? "nowhere" : dir.string()));
+  if (log)
+    log("console: " + std::to_string(out.size()) + " scenarios from " + (dir.empty() ? "nowhere" : dir.string()));
   return out;
 }
 

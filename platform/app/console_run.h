@@ -48,7 +48,7 @@ Result<std::string> console_keys_dir(const Settings& s);
 /// The scenarios the console offers, from [console] scenarios (an error when that is not a folder) or the shipped
 /// ones. A file that does not load (or does not build) is one line in `log` and left out: the others are offered.
 Result<std::vector<sync::ClassScenario>> console_scenarios(const Settings& s,
-                                                          const std::function<void(const std::string&)>& log);
+                                                           const std::function<void(const std::string&)>& log);
 
 /// The console server on `handler` at `listen` with the keys of `keys_dir` (DIR/console of `lungar
 /// classroom-keys`); `log` gets "console: URL (logins: DIR/logins)" once it listens, and the server's lines. Shared by

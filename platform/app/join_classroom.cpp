@@ -49,10 +49,10 @@ Result<JoinedClassroom> join_classroom(const Settings& s, std::int64_t clock_ske
       // The console changes the class as it runs: the instructor's own breath and lungs follow what it shares.
       // A simulated patient (the mock tracker) is the console's to turn; a tracked one is not.
       const bool simulated = s.trackers().source == drivers::TrackerSource::Mock;
-      auto control = ClassControl::create(
-          {script.start, script.events, lungs.own, t0_ns, followed,
-           simulated ? std::optional<sim::OrientationTrack>(script.orientation) : std::nullopt},
-          station, log);
+      auto control =
+          ClassControl::create({script.start, script.events, lungs.own, t0_ns, followed,
+                                simulated ? std::optional<sim::OrientationTrack>(script.orientation) : std::nullopt},
+                               station, log);
       if (!control) return control.with_context("");
       joined.control = control.take();
       if (simulated) parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses), joined.control, t0_ns);

@@ -137,8 +137,8 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   parts.poses = std::make_unique<TrackerPoses>(made.take());
   if (s.trackers().source == drivers::TrackerSource::Mock &&
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
-    parts.poses = std::make_unique<ScenarioPatient>(std::move(parts.poses),
-                                                    std::make_shared<ScriptTrack>(shared_script), t0);
+    parts.poses =
+        std::make_unique<ScenarioPatient>(std::move(parts.poses), std::make_shared<ScriptTrack>(shared_script), t0);
   }
   if (chosen->followed() && s.sync.role == classroom::SyncRole::Trainee) {
     return fail(where +

@@ -130,8 +130,8 @@ class Runtime {
   std::optional<render::HudLine> hud_;  ///< the status line, drawn over the scene
   std::optional<render::HudLine> lesson_hud_;  ///< under it, the breathing and the pathologies in force
   std::string lesson_;
-  bool ventilation_ = false;            ///< the ventilation map is shown (config, then the V key or the class)
-  std::uint64_t display_version_ = 0;   ///< the class's display request last taken (parts_.display)
+  bool ventilation_ = false;           ///< the ventilation map is shown (config, then the V key or the class)
+  std::uint64_t display_version_ = 0;  ///< the class's display request last taken (parts_.display)
   std::optional<render::VentilationLegend> legend_;  ///< made when the map is first shown
   BreathSwing swing_;                   ///< the last breath's dV swing, for the map
 

@@ -258,7 +258,8 @@ console::ControlReply ClassControl::breath_request(const console::ConsoleUser& u
     text = line;
     if (ie) text += " I:E " + std::to_string(*ie).substr(0, 4);
   } else {
-    return refuse(400, "action: expected breath_pause, breath_resume, breath_set or breath_follow; not '" + action + "'");
+    return refuse(400,
+                  "action: expected breath_pause, breath_resume, breath_set or breath_follow; not '" + action + "'");
   }
   ClassSteps manual = manual_;
   manual.breath.push_back(event);
@@ -299,8 +300,10 @@ console::ControlReply ClassControl::posture_request(const console::ConsoleUser& 
   for (const sim::Turn& t : now->turns()) {
     if (t.t_s >= turn.t_s && t.t_s < turn.t_s + turn.duration_s) {
       char line[160];
-      std::snprintf(line, sizeof line, "posture_set: the scenario turns the patient at %.1f s; a turn over %.1f s "
-                    "from %.1f s would cross it", t.t_s, over_s, turn.t_s);
+      std::snprintf(line, sizeof line,
+                    "posture_set: the scenario turns the patient at %.1f s; a turn over %.1f s "
+                    "from %.1f s would cross it",
+                    t.t_s, over_s, turn.t_s);
       return refuse(409, line);
     }
   }
@@ -502,8 +505,8 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
   if (action == "scenario_load") {
     std::string name;
     if (Status s = required_text(request, "name", name); !s) return refuse(400, action + ": " + s.error());
-    const auto found = std::find_if(scenarios.begin(), scenarios.end(),
-                                    [&](const ClassScenario& c) { return c.name() == name; });
+    const auto found =
+        std::find_if(scenarios.begin(), scenarios.end(), [&](const ClassScenario& c) { return c.name() == name; });
     if (found == scenarios.end()) {
       std::string names;
       for (const ClassScenario& c : scenarios) names += (names.empty() ? "" : ", ") + c.name();
@@ -525,8 +528,8 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
         return refuse(400, action + ": cue: expected the number of one of the scenario's events, from 0");
       const auto cue = request["cue"].get<long long>();
       if (cue < 0 || cue >= static_cast<long long>(run.loaded->cues().size()))
-        return refuse(400, action + ": cue: expected 0 to " + std::to_string(run.loaded->cues().size() - 1) +
-                               "; not " + std::to_string(cue));
+        return refuse(400, action + ": cue: expected 0 to " + std::to_string(run.loaded->cues().size() - 1) + "; not " +
+                               std::to_string(cue));
       at_s = run.loaded->cues()[static_cast<std::size_t>(cue)].t_s;
     } else if (run.phase == "running") {
       return refuse(409, action + ": '" + name + "' is running already");
@@ -551,7 +554,8 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
     std::string left_out;
     if (!start_.posture) left_out += "its turns (a tracker measures the patient)";
     if (!modelled())
-      left_out += (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
+      left_out +=
+          (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
     note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name,
           text + (left_out.empty() ? "" : "; left out: " + left_out)});
     return {200, {{"t_s", t}, {"scenario_s", at_s}}};
@@ -572,8 +576,10 @@ console::ControlReply ClassControl::scenario_request(const console::ConsoleUser&
     note({t, stop ? "scenario stop" : "scenario pause", user.name, text});
     return {200, {{"t_s", t}, {"scenario_s", at_s}}};
   }
-  return refuse(400, "action: expected scenario_load, scenario_start, scenario_pause, scenario_jump or "
-                     "scenario_stop; not '" + action + "'");
+  return refuse(400,
+                "action: expected scenario_load, scenario_start, scenario_pause, scenario_jump or "
+                "scenario_stop; not '" +
+                    action + "'");
 }
 
 nlohmann::json ClassControl::scenario_json(double t_s) const {

@@ -193,10 +193,10 @@ class ClassControl final : public console::ConsoleHandler,
   ClassSteps manual_;
   struct ScenarioRun {
     std::optional<ClassScenario> loaded;
-    std::string phase;        ///< "ready", "running", "paused", "stopped"; empty: none loaded
-    double position_s = 0;    ///< scenario time where it stands, when not running
-    double offset_s = 0;      ///< running: class time = scenario time + offset_s
-    ClassSteps issued;        ///< its steps in the class, on class time
+    std::string phase;      ///< "ready", "running", "paused", "stopped"; empty: none loaded
+    double position_s = 0;  ///< scenario time where it stands, when not running
+    double offset_s = 0;    ///< running: class time = scenario time + offset_s
+    ClassSteps issued;      ///< its steps in the class, on class time
   } scenario_;
 
   /// Console thread; every orientation track installed (none: the patient is tracked). The frame reads the newest

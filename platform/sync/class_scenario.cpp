@@ -20,7 +20,7 @@ std::string cue_text(const config::ScenarioEvent& e) {
       text = "to " + (e.pose.empty() ? std::string("a rotation") : e.pose);
       break;
     case config::ScenarioEventKind::Pathology:
-      text = e.pathology_add.empty()    ? "remove " + e.pathology_remove
+      text = e.pathology_add.empty()      ? "remove " + e.pathology_remove
              : e.pathology_remove.empty() ? "add " + e.pathology_add
                                           : e.pathology_remove + " -> " + e.pathology_add;
       break;

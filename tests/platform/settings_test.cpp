@@ -3,17 +3,17 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <array>
 #include <cctype>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "config/scenario_load.h"
 #include "drivers/tracker/tracker_config.h"
 #include "platform/app/console_run.h"
-#include "platform/sync/class_scenario.h"
 #include "platform/app/settings_load.h"
+#include "platform/sync/class_scenario.h"
 
 using lungar::platform::load_settings;
 using lungar::platform::load_settings_from_string;
@@ -179,9 +179,11 @@ TEST(Settings, TheConsolesScenariosAreTheShippedOnesOrAFolderOfTheSitesOwn) {
   ASSERT_TRUE(shipped) << shipped.error();
   std::vector<std::string> names;
   for (const auto& c : *shipped) names.push_back(c.name());
-  EXPECT_NE(std::find(names.begin(), names.end(), "tension pneumothorax"), names.end()) << ::testing::PrintToString(names);
+  EXPECT_NE(std::find(names.begin(), names.end(), "tension pneumothorax"), names.end())
+      << ::testing::PrintToString(names);
 
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("lungar_scenarios_" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("lungar_scenarios_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "drill.toml") << "name = \"drill\"\nduration_s = 20.0\n[[event]]\nat_s = 5.0\nkind = \"sigh\"\n";

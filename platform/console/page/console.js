@@ -186,9 +186,9 @@ function renderBreath(b) {
   // model's until it is given back.
   $('breath-follow').hidden = !b.followed;
   $('breath-follow').disabled = readOnly() || !b.taken_over;
-  $('breath-help').textContent = !b.followed ? '' : b.taken_over ?
-      'The console\'s breath is in place of ' + b.followed + ' on every station.' :
-      'The breath follows ' + b.followed + '; a change here takes it over with the model\'s.';
+  $('breath-help').textContent = !b.followed ? '' :
+      b.taken_over ? 'The console\'s breath is in place of ' + b.followed + ' on every station.' :
+                     'The breath follows ' + b.followed + '; a change here takes it over with the model\'s.';
 }
 
 function renderSamples(list) {
@@ -416,8 +416,8 @@ function renderTimeline(list, now, replay) {
 function renderPostureControl(p) {
   const off = readOnly() || !p.simulated;
   for (const id of ['posture-choice', 'posture-over', 'posture-set']) $(id).disabled = off;
-  $('posture-help').textContent = p.simulated === false ?
-      'A tracker measures the patient: turn the patient (or the mannequin) itself.' : '';
+  $('posture-help').textContent =
+      p.simulated === false ? 'A tracker measures the patient: turn the patient (or the mannequin) itself.' : '';
 }
 
 // The station's scenarios, the one loaded, where it stands, and a Jump button per cue.
@@ -438,9 +438,9 @@ function renderScenario(sc) {
   const loaded = sc.loaded;
   const chosen = available.find((a) => a.name === choice.value);
   $('scenario-description').textContent = chosen ? chosen.description || '' : 'No scenario on this station.';
-  $('scenario-state').textContent = loaded ?
-      '— ' + loaded.name + ', ' + loaded.phase + ' at ' + num(loaded.t_s, 1) + ' of ' + num(loaded.duration_s, 0) + ' s' :
-      '';
+  $('scenario-state').textContent = loaded ? '— ' + loaded.name + ', ' + loaded.phase + ' at ' + num(loaded.t_s, 1) +
+          ' of ' + num(loaded.duration_s, 0) + ' s' :
+                                             '';
   const running = loaded && loaded.phase === 'running';
   const off = readOnly();
   $('scenario-load').disabled = off || !available.length || running || (loaded && loaded.phase === 'paused');
@@ -470,7 +470,7 @@ function renderScenario(sc) {
 
 function renderDisplay(d) {
   const map = d.ventilation_map;
-  $('ventilation-state').textContent = map === true ? 'shown' : map === false ? 'hidden' : "each station's own";
+  $('ventilation-state').textContent = map === true ? 'shown' : map === false ? 'hidden' : 'each station\'s own';
 }
 
 function fillForms(s) {
@@ -566,8 +566,10 @@ function setUp() {
     const over = parseFloat($('posture-over').value);
     control({action: 'posture_set', posture: $('posture-choice').value, over_s: isFinite(over) ? over : 0});
   });
-  $('scenario-choice').addEventListener('change', () => renderScenario(lastSnapshot ? lastSnapshot.scenario || {} : {}));
-  $('scenario-load').addEventListener('click', () => control({action: 'scenario_load', name: $('scenario-choice').value}));
+  $('scenario-choice')
+      .addEventListener('change', () => renderScenario(lastSnapshot ? lastSnapshot.scenario || {} : {}));
+  $('scenario-load')
+      .addEventListener('click', () => control({action: 'scenario_load', name: $('scenario-choice').value}));
   $('scenario-start').addEventListener('click', () => control({action: 'scenario_start'}));
   $('scenario-pause').addEventListener('click', () => control({action: 'scenario_pause'}));
   $('scenario-stop').addEventListener('click', () => control({action: 'scenario_stop'}));

@@ -19,9 +19,9 @@
 #include "drivers/classroom/classroom_keys.h"
 #include "platform/console/console_server.h"
 #include "tests/file_text.h"
-#include "tests/shared_folder.h"
 #include "tests/platform/console/fake_console_handler.h"
 #include "tests/platform/console/https_client.h"
+#include "tests/shared_folder.h"
 
 namespace lungar::console {
 namespace {

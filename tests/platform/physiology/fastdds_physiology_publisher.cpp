@@ -6,7 +6,8 @@
 /// Usage: lungar-test-fastdds-physiology amm|openice DOMAIN SECONDS [bad]
 ///   amm: Respiratory_LeftLung_Volume, _RightLung_Volume and _LungTotal_Volume (mL) every 20 ms; the left lung
 ///        takes kLeftShare of each breath. openice: MDC_VOL_AWAY_TIDAL (mL), arrays of 10 samples at 50 Hz.
-///   bad: samples that must be dropped, after a 2 s lead-in, in turn: amm, every 25th step an extra sample with a NaN, a negative
+///   bad: samples that must be dropped, after a 2 s lead-in, in turn: amm, every 25th step an extra sample with a NaN,
+///   a negative
 ///        volume, a wrong unit, or a time a minute back; openice, every 5th array a NaN or a negative volume in
 ///        place of one of its values, or an extra array in a pressure unit or at 0 Hz.
 /// The breath: 1200 mL at 20 a minute, deep enough that each lung's own share stands out from the model's
@@ -148,8 +149,10 @@ int main(int argc, char** argv) {
   for (long step = 0; step * step_s <= seconds; ++step) {
     std::this_thread::sleep_until(start + std::chrono::microseconds(std::llround(step * step_s * 1e6)));
     const bool bad_now = bad && step * step_s >= kLeadInS;
-    if (amm) write_amm(w, step * step_s, step, bad_now, n);
-    else write_openice(w, 1000.0 + step * step_s, step, bad_now, n);  // the device's clock: not the run's
+    if (amm)
+      write_amm(w, step * step_s, step, bad_now, n);
+    else
+      write_openice(w, 1000.0 + step * step_s, step, bad_now, n);  // the device's clock: not the run's
   }
   std::printf("fastdds publisher: %s on domain %d: %ld samples, %ld bad\n", kind.c_str(), domain, n.good, n.bad);
   std::fflush(stdout);

@@ -75,8 +75,7 @@ PhysiologyRun run_with_publisher(const std::string& breath_source, const std::st
   for (nlohmann::json now; std::chrono::steady_clock::now() < until;
        std::this_thread::sleep_for(std::chrono::milliseconds(100))) {
     now = stats_now(stats_path);
-    if (now.is_object() && now.value("breath_state", "") == "model" && now.value("breath_following_s", 0.0) > 0)
-      break;
+    if (now.is_object() && now.value("breath_state", "") == "model" && now.value("breath_following_s", 0.0) > 0) break;
   }
   EXPECT_EQ(lungar.stop(30.0), 0) << lungar.err();
   PhysiologyRun r;
@@ -111,8 +110,7 @@ TEST(PhysiologyOverDds, AnAmmMannequinOnFastDdsMovesEachLungByItsOwnVolume) {
   EXPECT_EQ(r.stats["breath_source"], "amm");
   expect_followed(r);
   EXPECT_GT(r.stats["breath_dds_samples"].get<long>(), 1000);
-  EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl,
-              0.1 * kTidalMl)
+  EXPECT_NEAR(r.stats["volume_ml_max"].get<double>() - r.stats["volume_ml_min"].get<double>(), kTidalMl, 0.1 * kTidalMl)
       << r.stats.dump() << r.log;
   // Each lung by its own volume: a quarter and three quarters of the breath, where the posture's shares would
   // give each about half.

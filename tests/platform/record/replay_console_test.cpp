@@ -19,9 +19,9 @@
 #include "platform/record/timeline_csv.h"
 #include "tests/file_text.h"
 #include "tests/platform/console/https_client.h"
-#include "tests/shared_folder.h"
 #include "tests/platform/sync/station_process.h"
 #include "tests/platform/sync/stations_test.h"
+#include "tests/shared_folder.h"
 
 namespace fs = std::filesystem;
 using lungar::testing::HttpsClient;

@@ -46,8 +46,7 @@ struct ControlledRoom {
     const std::int64_t t0 = monotonic_ns() - 1'000'000'000;  // the class has been going for 1 s
     EXPECT_TRUE(teacher->instructor()->share_breathing(script->start, script->events, lungs, t0));
     auto made = platform::sync::ClassControl::create({script->start, script->events, lungs, t0, followed, posture},
-                                                     teacher,
-                                                     [this](const std::string& line) {
+                                                     teacher, [this](const std::string& line) {
                                                        std::lock_guard lock(lines_mutex);
                                                        lines.push_back(line);
                                                      });
@@ -192,7 +191,8 @@ TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJum
   ControlledRoom room("followed", {}, "trace");
   platform::sync::ClassControl& c = *room.control;
   EXPECT_EQ(c.control(kTeacher, {{"action", "breath_follow"}}).status, 409) << "it follows the trace already";
-  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
+  const std::unique_ptr<breath::BreathingClock> breathing =
+      c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
   // The instructor's breath in 10 ms steps for `seconds` on from the last: the largest step, and the last dV.
   std::int64_t now = monotonic_ns();
   const auto run = [&](double seconds, double& last_ml) {
@@ -227,7 +227,8 @@ TEST(ClassControl, AFollowedBreathIsTakenOverByTheConsoleAndGivenBackWithoutAJum
   // A tracked patient's posture is not the console's: there is a real patient (or mannequin) there to turn.
   const console::ControlReply turned = c.control(kTeacher, {{"action", "posture_set"}, {"posture", "supine"}});
   EXPECT_EQ(turned.status, 409);
-  EXPECT_NE(turned.body["error"].get<std::string>().find("a tracker measures"), std::string::npos) << turned.body.dump();
+  EXPECT_NE(turned.body["error"].get<std::string>().find("a tracker measures"), std::string::npos)
+      << turned.body.dump();
   EXPECT_FALSE(nlohmann::json::parse(c.snapshot_json())["posture"]["simulated"].get<bool>());
 }
 
@@ -238,7 +239,8 @@ TEST(ClassControl, ATraineeGoesOverToTheConsolesBreathWhenItTakesTheFollowedOneO
   platform::sync::ClassControl& c = *room.control;
   classroom::Instructor& instructor = *room.teacher->instructor();
   instructor.share_followed_breath();
-  const std::unique_ptr<breath::BreathingClock> breathing = c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
+  const std::unique_ptr<breath::BreathingClock> breathing =
+      c.over_followed(std::make_unique<SteadyFollowed>(c.t0_ns()));
   sim::BreathingSample seen;
   // Frames for `seconds`: the instructor draws and shares; `ok` of the trainee's breath in 30 frames running (0.3 s)
   // ends them early.
@@ -257,9 +259,11 @@ TEST(ClassControl, ATraineeGoesOverToTheConsolesBreathWhenItTakesTheFollowedOneO
   ASSERT_EQ(c.control(kTeacher, {{"action", "breath_pause"}}).status, 200);
   ASSERT_TRUE(frames(10.0, [](const sim::BreathingSample& s) { return s.phase == sim::BreathPhase::Hold; }));
   const std::int64_t held_at = monotonic_ns();
-  ASSERT_TRUE(frames(5.0, [&](const sim::BreathingSample& s) {
-    return std::abs(s.dv_ml - c.driver().at(seconds_between(c.t0_ns(), monotonic_ns())).dv_ml) < 1.0;
-  })) << "the trainee's breath is the console's held one; it draws " << seen.dv_ml;
+  ASSERT_TRUE(frames(5.0,
+                     [&](const sim::BreathingSample& s) {
+                       return std::abs(s.dv_ml - c.driver().at(seconds_between(c.t0_ns(), monotonic_ns())).dv_ml) < 1.0;
+                     }))
+      << "the trainee's breath is the console's held one; it draws " << seen.dv_ml;
   EXPECT_LT(seconds_between(held_at, monotonic_ns()), 3.0);
 }
 
@@ -279,8 +283,8 @@ TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDi
   const console::ControlReply shown =
       room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", true}});
   ASSERT_EQ(shown.status, 200) << shown.body.dump();
-  ASSERT_TRUE(ControlledRoom::within_10_s(
-      [&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
+  ASSERT_TRUE(
+      ControlledRoom::within_10_s([&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
   EXPECT_TRUE(on);
   ASSERT_TRUE(room.control->ventilation_map_since(own_version, on));
   EXPECT_TRUE(on);
@@ -298,8 +302,8 @@ TEST(ClassControl, TheVentilationMapAskedReachesTheTraineeAndTheInstructorsOwnDi
   EXPECT_FALSE(room.learner->trainee()->ventilation_map_since(trainee_version, on));
 
   ASSERT_EQ(room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", false}}).status, 200);
-  ASSERT_TRUE(ControlledRoom::within_10_s(
-      [&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
+  ASSERT_TRUE(
+      ControlledRoom::within_10_s([&] { return room.learner->trainee()->ventilation_map_since(trainee_version, on); }));
   EXPECT_FALSE(on);
   const console::ControlReply bad =
       room.control->control(kTeacher, {{"action", "display_set"}, {"ventilation_map", "yes"}});
@@ -435,7 +439,6 @@ TEST(ClassControl, AScenarioStartsPausesJumpsAndStopsOnTheRunningClass) {
   EXPECT_EQ(events.back()["kind"], "scenario stop");
   EXPECT_EQ(events.back()["user"], "instructor");
 }
-
 
 TEST(ClassControl, ASimulatedPatientTurnsToThePostureAskedAfterAnyTurnUnderWay) {
   // The scenario turns the patient to prone at 40 s (the class has been going for 1 s).

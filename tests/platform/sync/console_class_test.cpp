@@ -149,7 +149,8 @@ TEST_F(ConsoleClass, WhatTheTrainerDoesReachesBothTraineesWithinHalfASecond) {
   // The ventilation map on every trainee's display.
   clicked = Clock::now();
   ASSERT_EQ(trainer.control(R"({"action":"display_set","ventilation_map":true})").status, 200);
-  const double map_s = seconds_until_both(clicked, [](const nlohmann::json& s) { return s["ventilation_map"] == true; });
+  const double map_s =
+      seconds_until_both(clicked, [](const nlohmann::json& s) { return s["ventilation_map"] == true; });
   EXPECT_GE(map_s, 0) << stats_now("trainee-1").dump();
   // No lead time, but the first frame that shows the map also makes its legend: 0.07 s here, 0.37 to 0.64 s under
   // the sanitizers on a loaded machine.

@@ -158,18 +158,13 @@ void Trainee::install_if_complete() {
   const std::optional<bool> map = pending_events_->ventilation_map;
   if (map && map != display_applied_) {
     display_applied_ = map;
-    ventilation_map_.store(*map, std::memory_order_relaxed);
-    display_version_.fetch_add(1, std::memory_order_release);
+    ventilation_map_.set(*map);
     link_->log(std::string("sync: the instructor's console asks for the ventilation map ") + (*map ? "on" : "off"));
   }
 }
 
 bool Trainee::ventilation_map_since(std::uint64_t& version, bool& on) const {
-  const std::uint64_t now = display_version_.load(std::memory_order_acquire);
-  if (now == version) return false;
-  on = ventilation_map_.load(std::memory_order_relaxed);
-  version = now;
-  return true;
+  return ventilation_map_.since(version, on);
 }
 
 void Trainee::take_heartbeats(std::int64_t now_mono) {

@@ -14,6 +14,7 @@
 
 #include "config/base/log_histogram.h"
 #include "config/base/result.h"
+#include "config/base/versioned_flag.h"
 #include "drivers/classroom/classroom_link.h"
 #include "drivers/classroom/clock_offset.h"
 #include "drivers/classroom/followed_breath_share.h"
@@ -116,9 +117,7 @@ class Trainee {
   mutable std::mutex lungs_mutex_;  ///< guards lungs_ (the sync thread writes, the lungs' course reads)
   sim::PathologyTimeline lungs_;
   std::atomic<std::uint64_t> lungs_version_{0};
-  /// The console's display request: the version counts changes of it; ventilation_map_ is set before the version.
-  std::atomic<std::uint64_t> display_version_{0};
-  std::atomic<bool> ventilation_map_{false};
+  VersionedFlag ventilation_map_;  ///< the console's display request, once per change
   std::optional<bool> display_applied_;  ///< sync thread: the request last taken
 
   // Sync thread only.

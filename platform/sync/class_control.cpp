@@ -328,18 +328,13 @@ console::ControlReply ClassControl::display_request(const console::ConsoleUser& 
     ventilation_map_ = before;
     return refuse(400, "display_set: " + s.error());
   }
-  shown_map_.store(on, std::memory_order_relaxed);
-  display_version_.fetch_add(1, std::memory_order_release);
+  shown_map_.set(on);
   note({now_s(), "display", user.name, on ? "ventilation map on" : "ventilation map off"});
   return {200, {{"t_s", now_s()}}};
 }
 
 bool ClassControl::ventilation_map_since(std::uint64_t& version, bool& on) const {
-  const std::uint64_t now = display_version_.load(std::memory_order_acquire);
-  if (now == version) return false;
-  on = shown_map_.load(std::memory_order_relaxed);
-  version = now;
-  return true;
+  return shown_map_.since(version, on);
 }
 
 console::ControlReply ClassControl::pathology_request(const console::ConsoleUser& user, const std::string& action,

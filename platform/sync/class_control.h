@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "config/base/result.h"
+#include "config/base/versioned_flag.h"
 #include "config/base/spsc_ring.h"
 #include "drivers/breath/source/breathing_clock.h"
 #include "drivers/classroom/classroom_station.h"
@@ -205,10 +206,9 @@ class ClassControl final : public console::ConsoleHandler,
   std::atomic<const sim::OrientationTrack*> track_{nullptr};
 
   /// Console thread: the ventilation map the console asked of every display (none yet: each station's own). The
-  /// frame reads it through the atomics, the version set last.
+  /// frame reads it through shown_map_.
   std::optional<bool> ventilation_map_;
-  std::atomic<bool> shown_map_{false};
-  std::atomic<std::uint64_t> display_version_{0};
+  VersionedFlag shown_map_;
 
   mutable std::mutex mutex_;  ///< guards events_ (breathing), lungs_ and log_lines_ against readers on other threads
   std::vector<sim::Event> breath_events_;

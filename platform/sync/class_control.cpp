@@ -380,7 +380,7 @@ console::ControlReply ClassControl::pathology_request(const console::ConsoleUser
 
 namespace {
 
-/// `a` then `b`, in time order (stable: at one time, `a`'s first).
+/// `a`, `b` and `c` together in time order (stable: at one time, `a`'s first, then `b`'s).
 template <class T, class Time>
 std::vector<T> merged(const std::vector<T>& a, const std::vector<T>& b, const std::vector<T>& c, Time time) {
   std::vector<T> out = a;

@@ -496,85 +496,99 @@ ClassSteps ClassControl::scenario_steps(double at_s, double t_s, bool running, d
 console::ControlReply ClassControl::scenario_request(const console::ConsoleUser& user, const std::string& action,
                                                      const nlohmann::json& request) {
   const double t = now_s() + kLeadS;
+  if (action == "scenario_load") return scenario_load(user, request, t);
+  if (action != "scenario_start" && action != "scenario_jump" && action != "scenario_pause" &&
+      action != "scenario_stop")
+    return refuse(400,
+                  "action: expected scenario_load, scenario_start, scenario_pause, scenario_jump or "
+                  "scenario_stop; not '" +
+                      action + "'");
+  if (!scenario_.loaded) return refuse(409, action + ": no scenario is loaded; load one first");
+  if (action == "scenario_start" || action == "scenario_jump") return scenario_go(user, action, request, t);
+  return scenario_halt(user, action, t);
+}
+
+console::ControlReply ClassControl::scenario_load(const console::ConsoleUser& user, const nlohmann::json& request,
+                                                  double t) {
   ScenarioRun& run = scenario_;
-  if (action == "scenario_load") {
-    std::string name;
-    if (Status s = required_text(request, "name", name); !s) return refuse(400, action + ": " + s.error());
-    const auto found =
-        std::find_if(scenarios.begin(), scenarios.end(), [&](const ClassScenario& c) { return c.name() == name; });
-    if (found == scenarios.end()) {
-      std::string names;
-      for (const ClassScenario& c : scenarios) names += (names.empty() ? "" : ", ") + c.name();
-      return refuse(400, action + ": name: expected one of this station's scenarios (" +
-                             (names.empty() ? std::string("none") : names) + "); not '" + name + "'");
-    }
-    if (run.phase == "running" || run.phase == "paused")
-      return refuse(409, action + ": '" + run.loaded->name() + "' is " + run.phase + "; stop it first");
-    run = ScenarioRun{*found, "ready", 0, 0, {}};
-    note({t, "scenario load", user.name, found->name()});
-    return {200, {{"t_s", t}}};
+  std::string name;
+  if (Status s = required_text(request, "name", name); !s) return refuse(400, "scenario_load: " + s.error());
+  const auto found =
+      std::find_if(scenarios.begin(), scenarios.end(), [&](const ClassScenario& c) { return c.name() == name; });
+  if (found == scenarios.end()) {
+    std::string names;
+    for (const ClassScenario& c : scenarios) names += (names.empty() ? "" : ", ") + c.name();
+    return refuse(400, "scenario_load: name: expected one of this station's scenarios (" +
+                           (names.empty() ? std::string("none") : names) + "); not '" + name + "'");
   }
-  if (!run.loaded) return refuse(409, action + ": no scenario is loaded; load one first");
+  if (run.phase == "running" || run.phase == "paused")
+    return refuse(409, "scenario_load: '" + run.loaded->name() + "' is " + run.phase + "; stop it first");
+  run = ScenarioRun{*found, "ready", 0, 0, {}};
+  note({t, "scenario load", user.name, found->name()});
+  return {200, {{"t_s", t}}};
+}
+
+console::ControlReply ClassControl::scenario_go(const console::ConsoleUser& user, const std::string& action,
+                                                const nlohmann::json& request, double t) {
+  ScenarioRun& run = scenario_;
   const std::string& name = run.loaded->name();
-  if (action == "scenario_start" || action == "scenario_jump") {
-    double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
-    if (action == "scenario_jump") {
-      if (!request.contains("cue") || !request["cue"].is_number_integer())
-        return refuse(400, action + ": cue: expected the number of one of the scenario's events, from 0");
-      const auto cue = request["cue"].get<long long>();
-      if (cue < 0 || cue >= static_cast<long long>(run.loaded->cues().size()))
-        return refuse(400, action + ": cue: expected 0 to " + std::to_string(run.loaded->cues().size() - 1) + "; not " +
-                               std::to_string(cue));
-      at_s = run.loaded->cues()[static_cast<std::size_t>(cue)].t_s;
-    } else if (run.phase == "running") {
-      return refuse(409, action + ": '" + name + "' is running already");
-    } else if (run.phase == "stopped") {
-      at_s = 0;
-    }
-    const bool running = action == "scenario_start" || run.phase == "running";
-    double offset_s = 0;
-    ClassSteps issued = begun_by(t);
-    const ClassSteps added = scenario_steps(at_s, t, running, offset_s);
-    issued.breath.insert(issued.breath.end(), added.breath.begin(), added.breath.end());
-    issued.lungs.insert(issued.lungs.end(), added.lungs.begin(), added.lungs.end());
-    issued.turns.insert(issued.turns.end(), added.turns.begin(), added.turns.end());
-    if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
-    run.issued = std::move(issued);
-    run.offset_s = offset_s;
-    run.position_s = at_s;
-    run.phase = running ? "running" : run.phase;
-    char text[200];
-    std::snprintf(text, sizeof text, "%s from %.1f s", name.c_str(), at_s);
-    // What the scenario cannot change here, said where the trainer reads it.
-    std::string left_out;
-    if (!start_.posture) left_out += "its turns (a tracker measures the patient)";
-    if (!modelled())
-      left_out +=
-          (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
-    note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name,
-          text + (left_out.empty() ? "" : "; left out: " + left_out)});
-    return {200, {{"t_s", t}, {"scenario_s", at_s}}};
+  double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
+  if (action == "scenario_jump") {
+    if (!request.contains("cue") || !request["cue"].is_number_integer())
+      return refuse(400, action + ": cue: expected the number of one of the scenario's events, from 0");
+    const auto cue = request["cue"].get<long long>();
+    if (cue < 0 || cue >= static_cast<long long>(run.loaded->cues().size()))
+      return refuse(400, action + ": cue: expected 0 to " + std::to_string(run.loaded->cues().size() - 1) + "; not " +
+                             std::to_string(cue));
+    at_s = run.loaded->cues()[static_cast<std::size_t>(cue)].t_s;
+  } else if (run.phase == "running") {
+    return refuse(409, action + ": '" + name + "' is running already");
+  } else if (run.phase == "stopped") {
+    at_s = 0;
   }
-  if (action == "scenario_pause" || action == "scenario_stop") {
-    const bool stop = action == "scenario_stop";
-    if (!stop && run.phase != "running") return refuse(409, action + ": '" + name + "' is not running");
-    if (stop && run.phase != "running" && run.phase != "paused")
-      return refuse(409, action + ": '" + name + "' is not running or paused");
-    ClassSteps issued = begun_by(t);
-    if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
-    const double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
-    run.issued = std::move(issued);
-    run.position_s = stop ? 0 : at_s;
-    run.phase = stop ? "stopped" : "paused";
-    char text[200];
-    std::snprintf(text, sizeof text, "%s at %.1f s", name.c_str(), at_s);
-    note({t, stop ? "scenario stop" : "scenario pause", user.name, text});
-    return {200, {{"t_s", t}, {"scenario_s", at_s}}};
-  }
-  return refuse(400,
-                "action: expected scenario_load, scenario_start, scenario_pause, scenario_jump or "
-                "scenario_stop; not '" +
-                    action + "'");
+  const bool running = action == "scenario_start" || run.phase == "running";
+  double offset_s = 0;
+  ClassSteps issued = begun_by(t);
+  const ClassSteps added = scenario_steps(at_s, t, running, offset_s);
+  issued.breath.insert(issued.breath.end(), added.breath.begin(), added.breath.end());
+  issued.lungs.insert(issued.lungs.end(), added.lungs.begin(), added.lungs.end());
+  issued.turns.insert(issued.turns.end(), added.turns.begin(), added.turns.end());
+  if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
+  run.issued = std::move(issued);
+  run.offset_s = offset_s;
+  run.position_s = at_s;
+  run.phase = running ? "running" : run.phase;
+  char text[200];
+  std::snprintf(text, sizeof text, "%s from %.1f s", name.c_str(), at_s);
+  // What the scenario cannot change here, said where the trainer reads it.
+  std::string left_out;
+  if (!start_.posture) left_out += "its turns (a tracker measures the patient)";
+  if (!modelled())
+    left_out +=
+        (left_out.empty() ? "" : " and ") + std::string("its breathing (followed from ") + start_.followed + ")";
+  note({t, action == "scenario_start" ? "scenario start" : "scenario jump", user.name,
+        text + (left_out.empty() ? "" : "; left out: " + left_out)});
+  return {200, {{"t_s", t}, {"scenario_s", at_s}}};
+}
+
+console::ControlReply ClassControl::scenario_halt(const console::ConsoleUser& user, const std::string& action,
+                                                  double t) {
+  ScenarioRun& run = scenario_;
+  const std::string& name = run.loaded->name();
+  const bool stop = action == "scenario_stop";
+  if (!stop && run.phase != "running") return refuse(409, action + ": '" + name + "' is not running");
+  if (stop && run.phase != "running" && run.phase != "paused")
+    return refuse(409, action + ": '" + name + "' is not running or paused");
+  ClassSteps issued = begun_by(t);
+  if (Status s = commit(manual_, issued); !s) return refuse(400, action + ": '" + name + "': " + s.error());
+  const double at_s = run.phase == "running" ? t - run.offset_s : run.position_s;
+  run.issued = std::move(issued);
+  run.position_s = stop ? 0 : at_s;
+  run.phase = stop ? "stopped" : "paused";
+  char text[200];
+  std::snprintf(text, sizeof text, "%s at %.1f s", name.c_str(), at_s);
+  note({t, stop ? "scenario stop" : "scenario pause", user.name, text});
+  return {200, {{"t_s", t}, {"scenario_s", at_s}}};
 }
 
 nlohmann::json ClassControl::scenario_json(double t_s) const {

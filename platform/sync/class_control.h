@@ -161,9 +161,16 @@ class ClassControl final : public console::ConsoleHandler,
   /// (the breath builds, the pathologies' course is one this station draws, the turns do not cross), shared as
   /// the next revision, then installed here. The error leaves the class as it was.
   Status commit(const ClassSteps& manual, const ClassSteps& scenario);
-  /// scenario_load, _start, _pause, _jump, _stop.
+  /// scenario_load, _start, _pause, _jump, _stop, each timed at breathing time t (now and the lead).
   console::ControlReply scenario_request(const console::ConsoleUser& user, const std::string& action,
                                          const nlohmann::json& request);
+  /// One of `scenarios` by name, ready at its start; not while one runs or is paused.
+  console::ControlReply scenario_load(const console::ConsoleUser& user, const nlohmann::json& request, double t);
+  /// scenario_start (from where it stands) or scenario_jump (to a cue): the class brought there, then its steps.
+  console::ControlReply scenario_go(const console::ConsoleUser& user, const std::string& action,
+                                    const nlohmann::json& request, double t);
+  /// scenario_pause or scenario_stop: its steps not yet begun dropped.
+  console::ControlReply scenario_halt(const console::ConsoleUser& user, const std::string& action, double t);
   /// Brings the class to where the scenario stands at scenario time `at_s`, from class time `t_s` (a breath
   /// change, the pathologies' differences, a turn), then its steps from `at_s` on when `running`: the steps to
   /// add, and the scenario's offset (class time = scenario time + offset).

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "config/scenario_load.h"
 #include "platform/app/scenario_adapter.h"
+#include "platform/app/shipped_data.h"
 #include "platform/console/console_server.h"
 #include "platform/record/session_recorder.h"
 #include "platform/sync/class_control.h"
@@ -49,18 +49,11 @@ Result<std::string> console_keys_dir(const Settings& s) {
 
 namespace {
 
-/// The shipped scenarios: $LUNGAR_DATA_DIR/scenarios, <exe dir>/../share/lungar/scenarios (the Debian package), the
-/// source tree's config/scenarios; empty when none is there.
+/// The shipped scenarios' folder (shipped_data.h); empty when none is there.
 std::filesystem::path shipped_scenarios() {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> places;
-  if (const char* d = std::getenv("LUNGAR_DATA_DIR"); d && *d) places.push_back(fs::path(d) / "scenarios");
   std::error_code ec;
-  if (const fs::path exe = fs::read_symlink("/proc/self/exe", ec); !ec)
-    places.push_back(exe.parent_path() / ".." / "share" / "lungar" / "scenarios");
-  places.push_back(fs::path(LUNGAR_SOURCE_DIR) / "config" / "scenarios");
-  for (const fs::path& p : places)
-    if (fs::is_directory(p, ec)) return p.lexically_normal();
+  for (const std::filesystem::path& p : shipped_data_places("scenarios", "config/scenarios"))
+    if (std::filesystem::is_directory(p, ec)) return p.lexically_normal();
   return {};
 }
 

@@ -2,6 +2,7 @@
 /// @brief Finds the demo's label map and lungar-bake, runs the bake once as a child process (the procedural pair's
 ///        too, in-process only when no lungar-bake is found), caches the asset.
 #include "platform/app/demo_asset.h"
+#include "platform/app/shipped_data.h"
 
 #include <signal.h>
 #include <spawn.h>
@@ -54,9 +55,7 @@ bool is_file(const fs::path& p) {
 fs::path find_label_map(const DemoAssetOptions& o) {
   std::vector<fs::path> places;
   if (!o.data_dir.empty()) places.push_back(fs::path(o.data_dir) / "lungs");
-  if (const char* d = std::getenv("LUNGAR_DATA_DIR"); d && *d) places.push_back(fs::path(d) / "lungs");
-  if (const fs::path exe = exe_dir(); !exe.empty()) places.push_back(exe / ".." / "share" / "lungar" / "lungs");
-  places.push_back(fs::path(LUNGAR_SOURCE_DIR) / "sim" / "data" / "lungs");
+  for (fs::path& p : shipped_data_places("lungs", "sim/data/lungs")) places.push_back(std::move(p));
   for (const fs::path& p : places)
     if (is_file(p / kDemoLabelMap)) return (p / kDemoLabelMap).lexically_normal();
   return {};

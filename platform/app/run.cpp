@@ -135,7 +135,10 @@ Status add_sources(const Settings& s, const RuntimeOptions& o, double limit_s, s
   auto made = drivers::make_tracker(s.trackers(), topts);
   if (!made) return made.with_context("tracker: ");
   parts.poses = std::make_unique<TrackerPoses>(made.take());
-  if (s.trackers().source == drivers::TrackerSource::Mock &&
+  // An instructor serving its console turns the simulated patient through its class control instead, which starts
+  // from the same script (join_classroom): one track read each frame, not one over the other.
+  const bool console_turns = s.sync.role == classroom::SyncRole::Instructor && !s.console.listen.empty();
+  if (s.trackers().source == drivers::TrackerSource::Mock && !console_turns &&
       (!s.breathing.scenario.empty() || !shared_script->orientation.turns().empty())) {
     parts.poses =
         std::make_unique<ScenarioPatient>(std::move(parts.poses), std::make_shared<ScriptTrack>(shared_script), t0);

@@ -117,7 +117,7 @@ class Trainee {
   mutable std::mutex lungs_mutex_;  ///< guards lungs_ (the sync thread writes, the lungs' course reads)
   sim::PathologyTimeline lungs_;
   std::atomic<std::uint64_t> lungs_version_{0};
-  VersionedFlag ventilation_map_;  ///< the console's display request, once per change
+  VersionedFlag ventilation_map_;        ///< the console's display request, once per change
   std::optional<bool> display_applied_;  ///< sync thread: the request last taken
 
   // Sync thread only.

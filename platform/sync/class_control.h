@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "config/base/result.h"
-#include "config/base/versioned_flag.h"
 #include "config/base/spsc_ring.h"
+#include "config/base/versioned_flag.h"
 #include "drivers/breath/source/breathing_clock.h"
 #include "drivers/classroom/classroom_station.h"
 #include "platform/console/console_handler.h"
